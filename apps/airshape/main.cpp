@@ -1,0 +1,87 @@
+// The airshape command: one word per task (info, query, validate, save, plugins).
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "airshape/error.h"
+#include "airshape/plugin/plugin_host.h"
+#include "commands.h"
+
+namespace airshape::cli {
+namespace {
+
+struct Command {
+  int (*run)(const Arguments&, plugin::PluginHost&);
+  const char* usage;
+  const char* help;
+};
+
+const std::map<std::string, Command>& commands() {
+  static const std::map<std::string, Command> table = {
+      {"info", {runInfo, "airshape info FILE", "Prints the CPACS version and the component tree in build order:\n"
+                                               "each component's type, uID, parent and the plugin that builds it."}},
+      {"query", {runQuery, "airshape query FILE", "Answers JSON queries, one per line on stdin, one answer per line on\n"
+                                                  "stdout: {\"ok\": result} or {\"error\": message}. See docs/query.md."}},
+      {"validate", {runValidate, "airshape validate FILE",
+                    "Checks the document against the CPACS schema model and its uIDs, and lists every\n"
+                    "problem with its XPath. Exit status 1 if there is any."}},
+      {"save", {runSave, "airshape save IN -o OUT [--force] | airshape save IN --in-place",
+                "Loads IN into the model and writes it back, every node preserved. OUT is written\n"
+                "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
+      {"plugins", {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
+  };
+  return table;
+}
+
+void printUsage(std::ostream& out) {
+  out << "airshape: CPACS aircraft descriptions to exact B-spline geometry\n\nusage:\n";
+  for (const auto& [name, command] : commands()) out << "  " << command.usage << '\n';
+  out << "  airshape help [COMMAND]\n\nPlugins are loaded from the core library's folder and AIRSHAPE_PLUGIN_PATH.\n"
+         "Exit status: 0 success, 1 problems found (validate), 2 error.\n";
+}
+
+int runHelp(const Arguments& arguments) {
+  if (arguments.empty()) {
+    printUsage(std::cout);
+    return kSuccess;
+  }
+  const auto command = commands().find(arguments[0]);
+  if (command == commands().end()) throw Error(ErrorCode::InvalidArgument, "no command '" + arguments[0] + "'");
+  std::cout << "usage: " << command->second.usage << "\n\n" << command->second.help << '\n';
+  return kSuccess;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 2) {
+    printUsage(std::cerr);
+    return kFailure;
+  }
+  const std::string word = argv[1];
+  const Arguments arguments(argv + 2, argv + argc);
+  if (word == "help" || word == "--help" || word == "-h") return runHelp(arguments);
+  if (word == "--version") {
+    std::cout << "airshape " << AIRSHAPE_VERSION << '\n';
+    return kSuccess;
+  }
+  const auto command = commands().find(word);
+  if (command == commands().end())
+    throw Error(ErrorCode::InvalidArgument, "unknown command '" + word + "' (see airshape help)");
+  plugin::PluginHost host;
+  host.loadDefaultPlugins();
+  for (const std::string& message : host.messages()) std::cerr << "airshape: plugin: " << message << '\n';
+  return command->second.run(arguments, host);
+}
+
+}  // namespace
+}  // namespace airshape::cli
+
+int main(int argc, char** argv) {
+  try {
+    return airshape::cli::run(argc, argv);
+  } catch (const airshape::Error& error) {
+    std::cerr << "airshape: " << error.what() << '\n';
+  } catch (const std::exception& error) {
+    std::cerr << "airshape: internal error: " << error.what() << '\n';
+  }
+  return airshape::cli::kFailure;
+}

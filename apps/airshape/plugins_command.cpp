@@ -1,0 +1,29 @@
+#include <iostream>
+
+#include "airshape/error.h"
+#include "airshape/plugin/plugin_host.h"
+#include "commands.h"
+
+namespace airshape::cli {
+
+int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
+  if (!arguments.empty()) throw Error(ErrorCode::InvalidArgument, "usage: airshape plugins");
+  std::cout << "plugin ABI version " << AIRSHAPE_PLUGIN_ABI_VERSION << "; core plugins from "
+            << plugin::PluginHost::coreLibraryFolder() << '\n';
+  for (const auto& loaded : host.plugins()) {
+    std::cout << '\n' << loaded.plugin->name() << ' ' << loaded.plugin->version() << " - " << loaded.plugin->description()
+              << "\n  file:       " << loaded.file << "\n  node types:";
+    for (const auto& type : loaded.nodeTypes) std::cout << ' ' << type.name;
+    std::cout << "\n  query ops: ";
+    for (const query::Op* op : host.queries().ops())
+      if (op->owner == loaded.plugin->name()) std::cout << ' ' << op->name;
+    std::cout << '\n';
+  }
+  std::cout << "\ncore query ops:";
+  for (const query::Op* op : host.queries().ops())
+    if (op->owner == "core") std::cout << ' ' << op->name;
+  std::cout << '\n';
+  return kSuccess;
+}
+
+}  // namespace airshape::cli

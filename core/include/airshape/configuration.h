@@ -1,0 +1,67 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "airshape/graph/component_graph.h"
+#include "airshape/problem.h"
+#include "airshape/uid/uid_registry.h"
+#include "airshape/xml/document.h"
+
+namespace airshape::schema {
+class CpacsType;
+}
+
+namespace airshape {
+
+/// A CPACS 3 document opened for geometry: the kept XML document, the typed model
+/// bound to it, the uID registry and the component graph.
+class Configuration {
+ public:
+  /// Opens a file. Throws Error naming the file when it is missing, not XML, not CPACS,
+  /// CPACS 2 (or older), or when its components form a parentUID cycle. Flaws the geometry
+  /// can live with (schema violations, duplicate uIDs, dangling uIDrefs) are recorded in
+  /// problems() and warnings() instead.
+  static Configuration open(const std::string& path,
+                            const std::vector<graph::ComponentLocation>& locations = graph::standardComponentLocations());
+  /// Opens a document held in a string; `name` stands for it in messages.
+  static Configuration fromString(const std::string& xml, const std::string& name = "<string>",
+                                  const std::vector<graph::ComponentLocation>& locations =
+                                      graph::standardComponentLocations());
+
+  Configuration(Configuration&&) noexcept;
+  Configuration& operator=(Configuration&&) noexcept;
+  ~Configuration();
+
+  const std::string& source() const { return document_.source(); }
+  /// The CPACS version the header declares, e.g. "3.5".
+  const std::string& cpacsVersion() const { return cpacsVersion_; }
+
+  schema::CpacsType& cpacs() const { return *cpacs_; }
+  const xml::Document& document() const { return document_; }
+  const uid::UidRegistry& uids() const { return uids_; }
+  const graph::ComponentGraph& components() const { return components_; }
+
+  /// Every schema violation found while reading (for `validate`).
+  const Problems& schemaProblems() const { return schemaProblems_; }
+  /// What loading ignored or worked around: duplicate uIDs, dangling references, parents that
+  /// are no components. Printed on stderr by the CLI when a file is opened.
+  const Problems& warnings() const { return warnings_; }
+
+  /// Writes the model into the document and saves it atomically to `path`.
+  void save(const std::string& path);
+
+ private:
+  Configuration(xml::Document document, const std::vector<graph::ComponentLocation>& locations);
+
+  xml::Document document_;
+  std::unique_ptr<schema::CpacsType> cpacs_;
+  std::string cpacsVersion_;
+  uid::UidRegistry uids_;
+  graph::ComponentGraph components_;
+  Problems schemaProblems_;
+  Problems warnings_;
+};
+
+}  // namespace airshape

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape::model {
+
+/// The wings and fuselages of the model that queries address: the first aircraft model,
+/// else the first rotorcraft model (as the established CPACS tools choose it). Empty when
+/// the document has neither.
+struct PrimaryModel {
+  std::vector<schema::WingType*> wings;
+  std::vector<schema::FuselageType*> fuselages;
+};
+
+PrimaryModel primaryModel(const schema::CpacsType& cpacs);
+
+/// The uIDs of a list of nodes, for selection by index or uID.
+template <class T>
+std::vector<std::string> uidsOf(const std::vector<T*>& nodes) {
+  std::vector<std::string> uids;
+  for (const T* node : nodes) uids.push_back(node->uID);
+  return uids;
+}
+
+}  // namespace airshape::model

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "airshape/plugin/plugin.h"
+
+namespace airshape::plugin {
+
+/// A Plugin whose name, version, description and node types are fixed at construction.
+/// Plugins derive from it and override registerQueries() when they add ops.
+class BasicPlugin : public Plugin {
+ public:
+  BasicPlugin(std::string name, std::string version, std::string description, std::vector<NodeType> nodeTypes)
+      : name_(std::move(name)),
+        version_(std::move(version)),
+        description_(std::move(description)),
+        nodeTypes_(std::move(nodeTypes)) {}
+
+  std::string name() const override { return name_; }
+  std::string version() const override { return version_; }
+  std::string description() const override { return description_; }
+  std::vector<NodeType> nodeTypes() const override { return nodeTypes_; }
+  void registerQueries(query::QueryRegistry&) const override {}
+
+ private:
+  std::string name_;
+  std::string version_;
+  std::string description_;
+  std::vector<NodeType> nodeTypes_;
+};
+
+/// An op a plugin names but cannot answer yet, with its one-line summary.
+struct PendingOp {
+  const char* name;
+  const char* summary;
+};
+
+/// Registers ops that answer "no builder yet for <nodeType>": a plugin that builds nothing
+/// yet says so instead of pretending.
+void registerPendingOps(query::QueryRegistry& registry, const std::string& nodeType, const std::vector<PendingOp>& ops);
+
+}  // namespace airshape::plugin

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <boost/dll/alias.hpp>
+
+#include "airshape/graph/component_graph.h"
+#include "airshape/query/query_registry.h"
+
+/// The plugin ABI of this core. A plugin records the value of the headers it was built
+/// against; the host refuses plugins whose value differs from its own. Raise it whenever
+/// a change to Plugin, QueryRegistry, Configuration or the generated model breaks plugins.
+#ifndef AIRSHAPE_PLUGIN_ABI_VERSION
+#define AIRSHAPE_PLUGIN_ABI_VERSION 1
+#endif
+
+namespace airshape::plugin {
+
+/// A CPACS node type a plugin builds, and where its nodes live in a model.
+struct NodeType {
+  std::string name;         ///< e.g. "wing"
+  std::string pathInModel;  ///< e.g. "wings/wing", relative to /cpacs/vehicles/aircraft/model
+};
+
+/// What every plugin implements. See docs/plugins.md for the contract.
+class Plugin {
+ public:
+  virtual ~Plugin() = default;
+  virtual std::string name() const = 0;
+  virtual std::string version() const = 0;
+  /// One line on what the plugin builds.
+  virtual std::string description() const = 0;
+  /// The CPACS node types this plugin builds.
+  virtual std::vector<NodeType> nodeTypes() const = 0;
+  /// Adds this plugin's query ops (their owner is this plugin's name).
+  virtual void registerQueries(query::QueryRegistry& registry) const = 0;
+};
+
+/// The plugin ABI version a plugin was compiled with (exported by AIRSHAPE_PLUGIN).
+inline int compiledAbiVersion() { return AIRSHAPE_PLUGIN_ABI_VERSION; }
+
+}  // namespace airshape::plugin
+
+/// Exports a plugin class from a shared library: a factory and the ABI version, under the
+/// names the host looks for (airshape_create_plugin, airshape_plugin_abi_version).
+#define AIRSHAPE_PLUGIN(PluginClass)                                                           \
+  namespace airshape_plugin_export {                                                           \
+  inline std::shared_ptr<airshape::plugin::Plugin> create() {                                  \
+    return std::make_shared<PluginClass>();                                                    \
+  }                                                                                            \
+  inline int abiVersion() { return airshape::plugin::compiledAbiVersion(); }                   \
+  }                                                                                            \
+  BOOST_DLL_ALIAS(airshape_plugin_export::create, airshape_create_plugin)                      \
+  BOOST_DLL_ALIAS(airshape_plugin_export::abiVersion, airshape_plugin_abi_version)

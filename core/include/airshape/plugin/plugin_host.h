@@ -1,0 +1,54 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "airshape/graph/component_graph.h"
+#include "airshape/plugin/plugin.h"
+#include "airshape/query/query_registry.h"
+
+namespace airshape::plugin {
+
+/// A plugin the host loaded, with the file it came from.
+struct LoadedPlugin {
+  std::string file;
+  std::shared_ptr<Plugin> plugin;  ///< keeps its shared library loaded
+  std::vector<NodeType> nodeTypes;  ///< those it was granted (a type claimed earlier stays with its first owner)
+};
+
+/// Finds, loads and registers plugins. A plugin that cannot be used (not a shared library,
+/// no factory, another ABI version, a node type or op that another plugin has) yields one
+/// message in messages() and the rest keeps working.
+class PluginHost {
+ public:
+  /// Registers the ops the core itself provides.
+  PluginHost();
+
+  /// Loads the plugins next to the core library, then those on AIRSHAPE_PLUGIN_PATH
+  /// (a colon-separated list of folders or files).
+  void loadDefaultPlugins();
+  /// Loads every plugin in a folder (files libairshape_plugin_*.so, or any .so with `anyName`).
+  void loadFolder(const std::string& folder, bool anyName);
+  /// Loads one plugin file; on failure adds a message and returns false.
+  bool loadFile(const std::string& file);
+
+  const std::vector<LoadedPlugin>& plugins() const { return plugins_; }
+  const std::vector<std::string>& messages() const { return messages_; }
+  const query::QueryRegistry& queries() const { return queries_; }
+
+  /// Where components live: the standard CPACS locations plus those plugins add.
+  std::vector<graph::ComponentLocation> componentLocations() const;
+  /// The name of the plugin that builds a node type, or "" if none does.
+  std::string pluginFor(const std::string& nodeType) const;
+
+  /// The folder holding the core library (where the built-in plugins are installed).
+  static std::string coreLibraryFolder();
+
+ private:
+  std::vector<LoadedPlugin> plugins_;
+  std::vector<std::string> messages_;
+  query::QueryRegistry queries_;
+};
+
+}  // namespace airshape::plugin

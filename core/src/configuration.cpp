@@ -1,0 +1,52 @@
+#include "airshape/configuration.h"
+
+#include <xercesc/dom/DOM.hpp>
+
+#include "airshape/cpacs_version.h"
+#include "airshape/error.h"
+#include "airshape/schema/dom_reader.h"
+#include "airshape/schema/dom_writer.h"
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape {
+
+Configuration::Configuration(xml::Document document, const std::vector<graph::ComponentLocation>& locations)
+    : document_(std::move(document)), cpacs_(std::make_unique<schema::CpacsType>()) {
+  xercesc::DOMElement& root = *document_.root();
+  requireCpacs3(root, document_.source());
+  cpacsVersion_ = declaredCpacsVersion(root);
+
+  schema::ReadReport report;
+  schema::readNode(root, *cpacs_, "/cpacs", report);
+  schemaProblems_ = std::move(report.problems);
+
+  uids_.build(root, report.references);
+  for (const Problem& problem : uids_.problems())
+    warnings_.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
+
+  try {
+    components_ = graph::ComponentGraph::build(root, locations, warnings_);
+  } catch (const Error& error) {
+    throw error.inFile(document_.source());
+  }
+}
+
+Configuration Configuration::open(const std::string& path, const std::vector<graph::ComponentLocation>& locations) {
+  return Configuration(xml::Document::fromFile(path), locations);
+}
+
+Configuration Configuration::fromString(const std::string& text, const std::string& name,
+                                        const std::vector<graph::ComponentLocation>& locations) {
+  return Configuration(xml::Document::fromString(text, name), locations);
+}
+
+Configuration::Configuration(Configuration&&) noexcept = default;
+Configuration& Configuration::operator=(Configuration&&) noexcept = default;
+Configuration::~Configuration() = default;
+
+void Configuration::save(const std::string& path) {
+  schema::writeNode(*cpacs_, *document_.root());
+  document_.save(path);
+}
+
+}  // namespace airshape

@@ -1,0 +1,68 @@
+// The wing plugin: CPACS wings. It answers the wing ops that need no geometry; the
+// geometry ops are registered as pending until the wing builder exists.
+#include "airshape/configuration.h"
+#include "airshape/model/primary_model.h"
+#include "airshape/model/symmetry.h"
+#include "airshape/plugin/basic_plugin.h"
+#include "airshape/query/arguments.h"
+
+namespace airshape::wing {
+
+using query::Json;
+
+namespace {
+
+schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
+  const auto wings = model::primaryModel(configuration.cpacs()).wings;
+  return *wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(wings), "wing")];
+}
+
+std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? wing.segments->segment.size() : 0; }
+std::size_t sectionCount(const schema::WingType& wing) { return wing.sections ? wing.sections->section.size() : 0; }
+std::size_t componentSegmentCount(const schema::WingType& wing) {
+  return wing.componentSegments ? wing.componentSegments->componentSegment.size() : 0;
+}
+
+class WingPlugin final : public plugin::BasicPlugin {
+ public:
+  WingPlugin() : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
+                             {{"wing", "wings/wing"}}) {}
+
+  void registerQueries(query::QueryRegistry& registry) const override {
+    registry.add({"wing_count", "", "-> number of wings of the model",
+                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c.cpacs()).wings.size(); }});
+    registry.add({"wing_uid", "", "wing -> uID",
+                  [](Configuration& c, const Json& q) -> Json { return selectWing(c, q).uID; }});
+    registry.add({"wing_segment_count", "", "wing -> number of segments",
+                  [](Configuration& c, const Json& q) -> Json { return segmentCount(selectWing(c, q)); }});
+    registry.add({"wing_section_count", "", "wing -> number of sections",
+                  [](Configuration& c, const Json& q) -> Json { return sectionCount(selectWing(c, q)); }});
+    registry.add({"wing_component_segment_count", "", "wing -> number of component segments",
+                  [](Configuration& c, const Json& q) -> Json { return componentSegmentCount(selectWing(c, q)); }});
+    registry.add({"wing_symmetry", "", "wing -> \"none\", \"x-y\", \"x-z\" or \"y-z\" (inherited through parentUID)",
+                  [](Configuration& c, const Json& q) -> Json {
+                    return model::resolvedSymmetry(c, selectWing(c, q).uID);
+                  }});
+    plugin::registerPendingOps(
+        registry, "wing",
+        {{"wing_upper_point", "wing, segment, eta, xsi -> point on the upper skin"},
+         {"wing_lower_point", "wing, segment, eta, xsi -> point on the lower skin"},
+         {"wing_chord_point", "wing, segment, eta, xsi -> point on the chord surface"},
+         {"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
+         {"wing_volume", "wing -> volume"},
+         {"wing_surface_area", "wing -> area of the whole loft"},
+         {"wing_segment_volume", "wing, segment -> volume"},
+         {"wing_segment_surface_area", "wing, segment -> upper and lower skin area"},
+         {"wing_reference_area", "wing, plane -> projected area"},
+         {"wing_wetted_area", "wing -> loft area outside the parent fuselage"},
+         {"wing_span", "wing -> span"},
+         {"wing_mac", "wing -> {mac, point}"},
+         {"component_segment_to_segment", "wing, component_segment, eta, xsi -> {segment, eta, xsi}"},
+         {"segment_to_component_segment", "wing, segment, component_segment, eta, xsi -> {eta, xsi}"}});
+  }
+};
+
+}  // namespace
+}  // namespace airshape::wing
+
+AIRSHAPE_PLUGIN(airshape::wing::WingPlugin)
