@@ -7,6 +7,7 @@
 #include "airshape/schema/dom_reader.h"
 #include "airshape/schema/dom_writer.h"
 #include "airshape/schema/generated/cpacs_model.h"
+#include "airshape/uid/repeated_uids.h"
 
 namespace airshape {
 
@@ -21,6 +22,7 @@ Configuration::Configuration(xml::Document document, const std::vector<graph::Co
   schemaProblems_ = std::move(report.problems);
 
   uids_.build(root, report.references);
+  uid::setAsideRepeatedUids(*cpacs_, uids_);
   for (const Problem& problem : uids_.problems())
     warnings_.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
 

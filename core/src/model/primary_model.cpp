@@ -20,7 +20,14 @@ PrimaryModel primaryModel(const schema::CpacsType& cpacs) {
   if (!cpacs.vehicles) return {};
   const schema::VehiclesType& vehicles = *cpacs.vehicles;
   if (vehicles.aircraft && !vehicles.aircraft->model.empty()) return collect(vehicles.aircraft->model[0]);
-  if (vehicles.rotorcraft && !vehicles.rotorcraft->model.empty()) return collect(vehicles.rotorcraft->model[0]);
+  if (vehicles.rotorcraft && !vehicles.rotorcraft->model.empty()) {
+    // Rotor blades are wings (schema type wingType) and are addressed as wings after the model's own.
+    const schema::RotorcraftModelType& rotorcraft = vehicles.rotorcraft->model[0];
+    PrimaryModel result = collect(rotorcraft);
+    if (rotorcraft.rotorBlades)
+      for (auto& blade : rotorcraft.rotorBlades->rotorBlade) result.wings.push_back(&blade);
+    return result;
+  }
   return {};
 }
 

@@ -60,7 +60,10 @@ class WritingVisitor final : public Visitor {
       existing.erase(std::remove(existing.begin(), existing.end(), child.binding), existing.end());
       writeNode(child, *child.binding);
     }
-    for (DOMElement* orphan : existing) element_.removeChild(orphan)->release();  // removed from the model
+    for (DOMElement* orphan : existing) {
+      const bool keep = std::find(node_.setAside.begin(), node_.setAside.end(), orphan) != node_.setAside.end();
+      if (!keep) element_.removeChild(orphan)->release();  // removed from the model
+    }
   }
 
  private:

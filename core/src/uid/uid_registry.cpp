@@ -11,15 +11,15 @@ using namespace xercesc;
 
 namespace {
 
-void collect(const DOMElement& element, const XMLCh* uidName, std::unordered_map<std::string, std::string>& definitions,
+void collect(const DOMElement& element, const XMLCh* uidName, std::unordered_map<std::string, UidRegistry::Definition>& definitions,
              Problems& problems) {
   if (const DOMAttr* attribute = element.getAttributeNode(uidName)) {
     const std::string uid = xml::toUtf8(attribute->getValue());
     const std::string xpath = xml::pathOf(element);
-    const auto [entry, inserted] = definitions.emplace(uid, xpath);
+    const auto [entry, inserted] = definitions.emplace(uid, UidRegistry::Definition{xpath, &element});
     if (!inserted) {
       problems.push_back({Problem::Severity::Error, xpath,
-                          "duplicate uID '" + uid + "' (first defined at " + entry->second +
+                          "duplicate uID '" + uid + "' (first defined at " + entry->second.xpath +
                               "; this definition is ignored)"});
     }
   }
@@ -43,7 +43,12 @@ void UidRegistry::build(const DOMElement& root, const std::vector<schema::UidRef
 
 const std::string* UidRegistry::find(const std::string& uid) const {
   const auto entry = definitions_.find(uid);
-  return entry == definitions_.end() ? nullptr : &entry->second;
+  return entry == definitions_.end() ? nullptr : &entry->second.xpath;
+}
+
+const DOMElement* UidRegistry::definition(const std::string& uid) const {
+  const auto entry = definitions_.find(uid);
+  return entry == definitions_.end() ? nullptr : entry->second.element;
 }
 
 }  // namespace airshape::uid

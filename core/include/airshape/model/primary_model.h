@@ -9,7 +9,7 @@ namespace airshape::model {
 
 /// The wings and fuselages of the model that queries address: the first aircraft model,
 /// else the first rotorcraft model (as the established CPACS tools choose it). Empty when
-/// the document has neither.
+/// the document has neither. In a rotorcraft model the rotor blades follow the wings.
 struct PrimaryModel {
   std::vector<schema::WingType*> wings;
   std::vector<schema::FuselageType*> fuselages;

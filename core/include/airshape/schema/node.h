@@ -40,6 +40,10 @@ class Node {
   /// Field indices of required values that the document did not contain. The writer leaves
   /// them out again unless they were set since, so a flawed file is saved as it was.
   std::vector<unsigned short> absentOnRead;
+
+  /// Child elements the model leaves out although the schema has a place for them (such as a
+  /// repeated uID's later definitions). The writer keeps them in the document as they are.
+  std::vector<xercesc::DOMElement*> setAside;
 };
 
 }  // namespace airshape::schema

@@ -65,6 +65,7 @@ class ChildSlot {
   virtual Node& at(std::size_t index) = 0;
   /// Adds a new, empty child (appending to a list, else replacing) and returns it.
   virtual Node& add() = 0;
+  virtual void remove(std::size_t index) = 0;
 };
 
 /// Walks the fields of generated nodes. Readers, writers and validators implement it.
@@ -171,6 +172,7 @@ class ChildSlotFor<Child<T>> final : public ChildSlot {
   std::size_t count() const override { return child_ ? 1 : 0; }
   Node& at(std::size_t) override { return *child_; }
   Node& add() override { return child_.emplace(); }
+  void remove(std::size_t) override { child_.reset(); }
 
  private:
   Child<T>& child_;
@@ -183,6 +185,7 @@ class ChildSlotFor<List<T>> final : public ChildSlot {
   std::size_t count() const override { return list_.size(); }
   Node& at(std::size_t index) override { return list_[index]; }
   Node& add() override { return list_.append(); }
+  void remove(std::size_t index) override { list_.erase(index); }
 
  private:
   List<T>& list_;
