@@ -18,17 +18,24 @@ struct Command {
 
 const std::map<std::string, Command>& commands() {
   static const std::map<std::string, Command> table = {
-      {"info", {runInfo, "airshape info FILE", "Prints the CPACS version and the component tree in build order:\n"
-                                               "each component's type, uID, parent and the plugin that builds it."}},
-      {"query", {runQuery, "airshape query FILE", "Answers JSON queries, one per line on stdin, one answer per line on\n"
-                                                  "stdout: {\"ok\": result} or {\"error\": message}. See docs/query.md."}},
-      {"validate", {runValidate, "airshape validate FILE",
-                    "Checks the document against the CPACS schema model and its uIDs, and lists every\n"
-                    "problem with its XPath. Exit status 1 if there is any."}},
-      {"save", {runSave, "airshape save IN -o OUT [--force] | airshape save IN --in-place",
-                "Loads IN into the model and writes it back, every node preserved. OUT is written\n"
-                "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
-      {"plugins", {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
+      {"info",
+       {runInfo, "airshape info FILE",
+        "Prints the CPACS version and the component tree in build order:\n"
+        "each component's type, uID, parent and the plugin that builds it."}},
+      {"query",
+       {runQuery, "airshape query FILE",
+        "Answers JSON queries, one per line on stdin, one answer per line on\n"
+        "stdout: {\"ok\": result} or {\"error\": message}. See docs/query.md."}},
+      {"validate",
+       {runValidate, "airshape validate FILE",
+        "Checks the document against the CPACS schema model and its uIDs, and lists every\n"
+        "problem with its XPath. Exit status 1 if there is any."}},
+      {"save",
+       {runSave, "airshape save IN -o OUT [--force] | airshape save IN --in-place",
+        "Loads IN into the model and writes it back, every node preserved. OUT is written\n"
+        "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
+      {"plugins",
+       {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
   };
   return table;
 }

@@ -11,7 +11,8 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
   std::cout << "plugin ABI version " << AIRSHAPE_PLUGIN_ABI_VERSION << "; core plugins from "
             << plugin::PluginHost::coreLibraryFolder() << '\n';
   for (const auto& loaded : host.plugins()) {
-    std::cout << '\n' << loaded.plugin->name() << ' ' << loaded.plugin->version() << " - " << loaded.plugin->description()
+    std::cout << '\n'
+              << loaded.plugin->name() << ' ' << loaded.plugin->version() << " - " << loaded.plugin->description()
               << "\n  file:       " << loaded.file << "\n  node types:";
     for (const auto& type : loaded.nodeTypes) std::cout << ' ' << type.name;
     std::cout << "\n  query ops: ";

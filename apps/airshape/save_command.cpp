@@ -33,7 +33,8 @@ SaveOptions parseSaveOptions(const Arguments& arguments) {
       throw Error(ErrorCode::InvalidArgument, "save: unexpected argument '" + argument + "' (see airshape help save)");
     }
   }
-  if (options.input.empty() || (options.output.empty() && !options.inPlace) || (!options.output.empty() && options.inPlace))
+  if (options.input.empty() || (options.output.empty() && !options.inPlace) ||
+      (!options.output.empty() && options.inPlace))
     throw Error(ErrorCode::InvalidArgument, "usage: airshape save IN -o OUT | airshape save IN --in-place");
   return options;
 }

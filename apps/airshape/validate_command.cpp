@@ -14,8 +14,8 @@ int runValidate(const Arguments& arguments, plugin::PluginHost& host) {
   for (const Problem& warning : configuration.warnings())
     if (warning.message.find("parentUID") != std::string::npos) problems.push_back(warning);
   for (const Problem& problem : problems) std::cout << path << ": " << problem.describe() << '\n';
-  std::cout << path << ": " << problems.size() << (problems.size() == 1 ? " problem" : " problems")
-            << " (CPACS " << configuration.cpacsVersion() << ")\n";
+  std::cout << path << ": " << problems.size() << (problems.size() == 1 ? " problem" : " problems") << " (CPACS "
+            << configuration.cpacsVersion() << ")\n";
   return problems.empty() ? kSuccess : kProblemsFound;
 }
 

@@ -46,8 +46,10 @@ Configuration::Configuration(Configuration&&) noexcept = default;
 Configuration& Configuration::operator=(Configuration&&) noexcept = default;
 Configuration::~Configuration() = default;
 
+void Configuration::writeModel() { schema::writeNode(*cpacs_, *document_.root()); }
+
 void Configuration::save(const std::string& path) {
-  schema::writeNode(*cpacs_, *document_.root());
+  writeModel();
   document_.save(path);
 }
 

@@ -40,7 +40,8 @@ std::string declaredCpacsVersion(const DOMElement& root) {
 void requireCpacs3(const DOMElement& root, const std::string& file) {
   const std::string rootName = xml::name(root);
   if (rootName != "cpacs")
-    throw Error(ErrorCode::NotCpacs, "not a CPACS document (the root element is <" + rootName + ">, not <cpacs>)", file);
+    throw Error(ErrorCode::NotCpacs, "not a CPACS document (the root element is <" + rootName + ">, not <cpacs>)",
+                file);
   const std::string version = declaredCpacsVersion(root);
   if (version.empty()) {
     throw Error(ErrorCode::UnsupportedVersion,

@@ -23,12 +23,12 @@ class Configuration {
   /// CPACS 2 (or older), or when its components form a parentUID cycle. Flaws the geometry
   /// can live with (schema violations, duplicate uIDs, dangling uIDrefs) are recorded in
   /// problems() and warnings() instead.
-  static Configuration open(const std::string& path,
-                            const std::vector<graph::ComponentLocation>& locations = graph::standardComponentLocations());
+  static Configuration open(const std::string& path, const std::vector<graph::ComponentLocation>& locations =
+                                                         graph::standardComponentLocations());
   /// Opens a document held in a string; `name` stands for it in messages.
-  static Configuration fromString(const std::string& xml, const std::string& name = "<string>",
-                                  const std::vector<graph::ComponentLocation>& locations =
-                                      graph::standardComponentLocations());
+  static Configuration fromString(
+      const std::string& xml, const std::string& name = "<string>",
+      const std::vector<graph::ComponentLocation>& locations = graph::standardComponentLocations());
 
   Configuration(Configuration&&) noexcept;
   Configuration& operator=(Configuration&&) noexcept;
@@ -49,6 +49,8 @@ class Configuration {
   /// are no components. Printed on stderr by the CLI when a file is opened.
   const Problems& warnings() const { return warnings_; }
 
+  /// Writes the model's values into the document (only what differs from it).
+  void writeModel();
   /// Writes the model into the document and saves it atomically to `path`.
   void save(const std::string& path);
 

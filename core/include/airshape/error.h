@@ -7,15 +7,15 @@ namespace airshape {
 
 /// What kind of failure an Error reports; the C API and the CLI map these to status codes.
 enum class ErrorCode {
-  FileNotFound,    ///< the input file does not exist or cannot be read
-  NotXml,          ///< the input is not well-formed XML
-  NotCpacs,        ///< well-formed XML, but not a CPACS document
+  FileNotFound,        ///< the input file does not exist or cannot be read
+  NotXml,              ///< the input is not well-formed XML
+  NotCpacs,            ///< well-formed XML, but not a CPACS document
   UnsupportedVersion,  ///< a CPACS document of a version other than 3.x
-  InvalidModel,    ///< the document breaks a rule the geometry needs (dangling uIDref, cycle, ...)
-  InvalidArgument, ///< a caller's argument is out of range or names nothing
-  WriteFailed,     ///< an output file could not be written
-  PluginFailed,    ///< a plugin could not be loaded or registered
-  NotImplemented,  ///< the request needs a builder that does not exist yet
+  InvalidModel,        ///< the document breaks a rule the geometry needs (dangling uIDref, cycle, ...)
+  InvalidArgument,     ///< a caller's argument is out of range or names nothing
+  WriteFailed,         ///< an output file could not be written
+  PluginFailed,        ///< a plugin could not be loaded or registered
+  NotImplemented,      ///< the request needs a builder that does not exist yet
 };
 
 /// The one exception type of Airshape: a code, a message, and where it happened

@@ -88,6 +88,7 @@ ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vec
       for (const DOMElement* element : found) {
         Component component;
         component.uid = xml::attribute(*element, "uID");
+        if (result.find(component.uid) >= 0) continue;  // a repeated uID: the first definition wins
         component.nodeType = location.nodeType;
         if (const DOMElement* parent = xml::firstChild(*element, "parentUID")) component.parentUid = xml::text(*parent);
         component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
@@ -128,8 +129,9 @@ ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vec
     if (cycle.size() > 1 || selfLoop) {
       std::string names;
       for (const auto& uid : cycle) names += (names.empty() ? "" : " -> ") + uid;
-      throw Error(ErrorCode::InvalidModel, "parentUID cycle between components " + names + (selfLoop ? " (its own parent)" : ""),
-                  {}, result.components_[i].xpath);
+      throw Error(ErrorCode::InvalidModel,
+                  "parentUID cycle between components " + names + (selfLoop ? " (its own parent)" : ""), {},
+                  result.components_[i].xpath);
     }
   }
   (void)strongCount;

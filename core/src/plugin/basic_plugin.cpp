@@ -4,7 +4,8 @@
 
 namespace airshape::plugin {
 
-void registerPendingOps(query::QueryRegistry& registry, const std::string& nodeType, const std::vector<PendingOp>& ops) {
+void registerPendingOps(query::QueryRegistry& registry, const std::string& nodeType,
+                        const std::vector<PendingOp>& ops) {
   for (const PendingOp& op : ops) {
     const std::string name = op.name;
     registry.add({name, "", std::string(op.summary) + " (no builder yet)",

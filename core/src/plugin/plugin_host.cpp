@@ -77,7 +77,8 @@ bool PluginHost::loadFile(const std::string& file) {
     const int abi = library.get_alias<int()>("airshape_plugin_abi_version")();
     if (abi != AIRSHAPE_PLUGIN_ABI_VERSION) {
       messages_.push_back(canonical + ": built for plugin ABI version " + std::to_string(abi) + ", this core has " +
-                          std::to_string(AIRSHAPE_PLUGIN_ABI_VERSION) + "; rebuild the plugin against this core; skipped");
+                          std::to_string(AIRSHAPE_PLUGIN_ABI_VERSION) +
+                          "; rebuild the plugin against this core; skipped");
       return false;
     }
     // import_alias keeps the library loaded for as long as the returned function exists;

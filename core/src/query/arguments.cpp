@@ -18,9 +18,11 @@ const Json& required(const Json& query, const char* name) {
 
 double numberArgument(const Json& query, const char* name) {
   const Json& value = required(query, name);
-  if (!value.is_number()) throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be a number");
+  if (!value.is_number())
+    throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be a number");
   const double number = value.get<double>();
-  if (!std::isfinite(number)) throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be finite");
+  if (!std::isfinite(number))
+    throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be finite");
   return number;
 }
 
@@ -33,7 +35,8 @@ double fractionArgument(const Json& query, const char* name) {
 
 std::string stringArgument(const Json& query, const char* name) {
   const Json& value = required(query, name);
-  if (!value.is_string()) throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be a string");
+  if (!value.is_string())
+    throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be a string");
   return value.get<std::string>();
 }
 
@@ -49,13 +52,15 @@ std::size_t selectByIndexOrUid(const Json& query, const char* name, const std::v
   if (value.is_number_integer()) {
     const long long index = value.get<long long>();
     if (index < 1 || index > static_cast<long long>(uids.size())) {
-      throw Error(ErrorCode::InvalidArgument, what + " index " + std::to_string(index) + " is out of range (there " +
-                                                  (uids.size() == 1 ? "is 1 " : "are " + std::to_string(uids.size()) + " ") +
-                                                  what + (uids.size() == 1 ? ")" : "s)"));
+      throw Error(ErrorCode::InvalidArgument,
+                  what + " index " + std::to_string(index) + " is out of range (there " +
+                      (uids.size() == 1 ? "is 1 " : "are " + std::to_string(uids.size()) + " ") + what +
+                      (uids.size() == 1 ? ")" : "s)"));
     }
     return static_cast<std::size_t>(index - 1);
   }
-  throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be a 1-based index or a uID string");
+  throw Error(ErrorCode::InvalidArgument,
+              std::string("argument '") + name + "' must be a 1-based index or a uID string");
 }
 
 }  // namespace airshape::query

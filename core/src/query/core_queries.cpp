@@ -12,7 +12,8 @@ void registerCoreQueries(QueryRegistry& registry) {
                   if (query.contains("uid")) {
                     const std::string uid = query.at("uid").is_string() ? query.at("uid").get<std::string>() : "";
                     const long index = graph.find(uid);
-                    if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
+                    if (index < 0)
+                      throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
                     throw Error(ErrorCode::NotImplemented,
                                 "no builder yet for " + graph.components()[static_cast<std::size_t>(index)].nodeType);
                   }

@@ -20,10 +20,14 @@ std::string occursText(int count) { return count == 1 ? "once" : std::to_string(
 std::string rangeViolation(const NumericRange& range, const std::string& text) {
   double value = 0.0;
   if (DoubleCodec::parse(text, value)) return {};  // reported as "not a number" already
-  if (range.minInclusive && value < *range.minInclusive) return "must be at least " + DoubleCodec::format(*range.minInclusive);
-  if (range.maxInclusive && value > *range.maxInclusive) return "must be at most " + DoubleCodec::format(*range.maxInclusive);
-  if (range.minExclusive && value <= *range.minExclusive) return "must be greater than " + DoubleCodec::format(*range.minExclusive);
-  if (range.maxExclusive && value >= *range.maxExclusive) return "must be less than " + DoubleCodec::format(*range.maxExclusive);
+  if (range.minInclusive && value < *range.minInclusive)
+    return "must be at least " + DoubleCodec::format(*range.minInclusive);
+  if (range.maxInclusive && value > *range.maxInclusive)
+    return "must be at most " + DoubleCodec::format(*range.maxInclusive);
+  if (range.minExclusive && value <= *range.minExclusive)
+    return "must be greater than " + DoubleCodec::format(*range.minExclusive);
+  if (range.maxExclusive && value >= *range.maxExclusive)
+    return "must be less than " + DoubleCodec::format(*range.maxExclusive);
   return {};
 }
 
@@ -84,7 +88,8 @@ class ReadingVisitor final : public Visitor {
       if (isPresent) present.push_back(label);
     }
     if (present.size() > 1) {
-      problem(node_.xpath, "elements " + present[0] + " and " + present[1] + " exclude each other (choose one of " + all + ")");
+      problem(node_.xpath,
+              "elements " + present[0] + " and " + present[1] + " exclude each other (choose one of " + all + ")");
     } else if (present.empty() && choice.minOccurs > 0) {
       problem(node_.xpath, "needs one of " + all);
     }
@@ -94,8 +99,9 @@ class ReadingVisitor final : public Visitor {
   void reportUnexpected() {
     for (const auto& entry : children_) {
       if (!entry.claimed) {
-        problem(xml::pathOf(*entry.element), "element '" + xml::name(*entry.element) + "' is not allowed in " +
-                                                 node_.schemaType() + " (kept as is)");
+        problem(
+            node_.xpath + "/" + xml::name(*entry.element),
+            "element '" + xml::name(*entry.element) + "' is not allowed in " + node_.schemaType() + " (kept as is)");
       }
     }
   }
@@ -125,9 +131,10 @@ class ReadingVisitor final : public Visitor {
     }
     const int count = static_cast<int>(found.size());
     if (count < field.minOccurs) {
-      problem(node_.xpath, field.minOccurs == 1 ? "missing required element '" + std::string(field.name) + "'"
-                                                : "element '" + std::string(field.name) + "' occurs " + occursText(count) +
-                                                      ", at least " + std::to_string(field.minOccurs) + " needed");
+      problem(node_.xpath, field.minOccurs == 1
+                               ? "missing required element '" + std::string(field.name) + "'"
+                               : "element '" + std::string(field.name) + "' occurs " + occursText(count) +
+                                     ", at least " + std::to_string(field.minOccurs) + " needed");
     }
     if (field.maxOccurs >= 0 && count > field.maxOccurs) {
       problem(node_.xpath + "/" + field.name, "element '" + std::string(field.name) + "' occurs " + occursText(count) +
@@ -152,7 +159,8 @@ class ReadingVisitor final : public Visitor {
       }
       return;
     }
-    if (!assign(field, slot, xml::toUtf8(attribute->getValue()), node_.xpath + "/@" + field.name) && field.minOccurs > 0)
+    if (!assign(field, slot, xml::toUtf8(attribute->getValue()), node_.xpath + "/@" + field.name) &&
+        field.minOccurs > 0)
       node_.absentOnRead.push_back(field.index);
   }
 

@@ -85,9 +85,9 @@ class WritingVisitor final : public Visitor {
 
   void writeValues(const FieldInfo& field, ValueSlot& slot) {
     std::vector<DOMElement*> existing = children(field.name);
-    existing.erase(std::remove_if(existing.begin(), existing.end(),
-                                  [&](DOMElement* e) { return !slot.accepts(xml::text(*e)); }),
-                   existing.end());  // invalid text stays as written
+    existing.erase(
+        std::remove_if(existing.begin(), existing.end(), [&](DOMElement* e) { return !slot.accepts(xml::text(*e)); }),
+        existing.end());  // invalid text stays as written
     std::size_t count = slot.count();
     if (existing.empty() && wasAbsent(field) && slot.isDefault()) count = 0;  // keep a flawed file as it was
     for (std::size_t i = 0; i < count; ++i) {

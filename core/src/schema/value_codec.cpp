@@ -95,8 +95,7 @@ ParseError DoubleVectorCodec::parse(const std::string& text, Value& out) {
     if (end == all.size() && start == end && start > 0) break;  // a trailing ';'
     double value = 0.0;
     if (parseDouble(all.substr(start, end - start), value)) {
-      return "'" + std::string(trimmed(all.substr(start, end - start))) + "' in vector '" + text +
-             "' is not a number";
+      return "'" + std::string(trimmed(all.substr(start, end - start))) + "' in vector '" + text + "' is not a number";
     }
     values.push_back(value);
     start = end + 1;

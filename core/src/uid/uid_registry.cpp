@@ -11,19 +11,20 @@ using namespace xercesc;
 
 namespace {
 
-void collect(const DOMElement& element, const XMLCh* uidName, std::unordered_map<std::string, UidRegistry::Definition>& definitions,
-             Problems& problems) {
+void collect(const DOMElement& element, const XMLCh* uidName,
+             std::unordered_map<std::string, UidRegistry::Definition>& definitions, Problems& problems) {
   if (const DOMAttr* attribute = element.getAttributeNode(uidName)) {
     const std::string uid = xml::toUtf8(attribute->getValue());
     const std::string xpath = xml::pathOf(element);
     const auto [entry, inserted] = definitions.emplace(uid, UidRegistry::Definition{xpath, &element});
     if (!inserted) {
-      problems.push_back({Problem::Severity::Error, xpath,
-                          "duplicate uID '" + uid + "' (first defined at " + entry->second.xpath +
-                              "; this definition is ignored)"});
+      problems.push_back(
+          {Problem::Severity::Error, xpath,
+           "duplicate uID '" + uid + "' (first defined at " + entry->second.xpath + "; this definition is ignored)"});
     }
   }
-  for (const DOMElement* child = element.getFirstElementChild(); child != nullptr; child = child->getNextElementSibling())
+  for (const DOMElement* child = element.getFirstElementChild(); child != nullptr;
+       child = child->getNextElementSibling())
     collect(*child, uidName, definitions, problems);
 }
 

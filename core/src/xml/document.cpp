@@ -79,7 +79,8 @@ struct Document::Impl {
   std::unique_ptr<XercesDOMParser> parser;  // owns the DOM
 };
 
-Document::Document(std::unique_ptr<Impl> impl, std::string source) : impl_(std::move(impl)), source_(std::move(source)) {}
+Document::Document(std::unique_ptr<Impl> impl, std::string source)
+    : impl_(std::move(impl)), source_(std::move(source)) {}
 Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 Document::~Document() = default;
@@ -145,7 +146,8 @@ void Document::save(const std::string& path) const {
   if (fd < 0) throw Error(ErrorCode::WriteFailed, std::string("cannot write: ") + std::strerror(errno), path);
   try {
     writeAll(fd, content.data(), content.size(), path);
-    if (::fsync(fd) != 0) throw Error(ErrorCode::WriteFailed, std::string("cannot write: ") + std::strerror(errno), path);
+    if (::fsync(fd) != 0)
+      throw Error(ErrorCode::WriteFailed, std::string("cannot write: ") + std::strerror(errno), path);
     ::fchmod(fd, 0644);
     ::close(fd);
   } catch (...) {

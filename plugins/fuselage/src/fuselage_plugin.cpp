@@ -23,14 +23,16 @@ class FuselagePlugin final : public plugin::BasicPlugin {
                     {{"fuselage", "fuselages/fuselage"}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
-    registry.add({"fuselage_count", "", "-> number of fuselages of the model",
-                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c.cpacs()).fuselages.size(); }});
+    registry.add(
+        {"fuselage_count", "", "-> number of fuselages of the model",
+         [](Configuration& c, const Json&) -> Json { return model::primaryModel(c.cpacs()).fuselages.size(); }});
     registry.add({"fuselage_uid", "", "fuselage -> uID",
                   [](Configuration& c, const Json& q) -> Json { return selectFuselage(c, q).uID; }});
-    registry.add({"fuselage_segment_count", "", "fuselage -> number of segments", [](Configuration& c, const Json& q) -> Json {
-                    const schema::FuselageType& fuselage = selectFuselage(c, q);
-                    return fuselage.segments ? fuselage.segments->segment.size() : 0;
-                  }});
+    registry.add(
+        {"fuselage_segment_count", "", "fuselage -> number of segments", [](Configuration& c, const Json& q) -> Json {
+           const schema::FuselageType& fuselage = selectFuselage(c, q);
+           return fuselage.segments ? fuselage.segments->segment.size() : 0;
+         }});
     plugin::registerPendingOps(registry, "fuselage",
                                {{"fuselage_point", "fuselage, segment, eta, zeta -> point on the surface"},
                                 {"fuselage_volume", "fuselage -> volume"},

@@ -8,7 +8,8 @@ namespace {
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
-      : BasicPlugin("structure", "0.1.0", "wing and fuselage structure: spars, ribs, cells, frames, stringers (no builder yet)",
+      : BasicPlugin("structure", "0.1.0",
+                    "wing and fuselage structure: spars, ribs, cells, frames, stringers (no builder yet)",
                     {{"sparSegment", ""}, {"ribsDefinition", ""}, {"cell", ""}, {"frame", ""}, {"stringer", ""}}) {}
 };
 

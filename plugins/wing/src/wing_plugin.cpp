@@ -25,24 +25,24 @@ std::size_t componentSegmentCount(const schema::WingType& wing) {
 
 class WingPlugin final : public plugin::BasicPlugin {
  public:
-  WingPlugin() : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
-                             {{"wing", "wings/wing"}}) {}
+  WingPlugin()
+      : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
+                    {{"wing", "wings/wing"}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"wing_count", "", "-> number of wings of the model",
                   [](Configuration& c, const Json&) -> Json { return model::primaryModel(c.cpacs()).wings.size(); }});
-    registry.add({"wing_uid", "", "wing -> uID",
-                  [](Configuration& c, const Json& q) -> Json { return selectWing(c, q).uID; }});
+    registry.add(
+        {"wing_uid", "", "wing -> uID", [](Configuration& c, const Json& q) -> Json { return selectWing(c, q).uID; }});
     registry.add({"wing_segment_count", "", "wing -> number of segments",
                   [](Configuration& c, const Json& q) -> Json { return segmentCount(selectWing(c, q)); }});
     registry.add({"wing_section_count", "", "wing -> number of sections",
                   [](Configuration& c, const Json& q) -> Json { return sectionCount(selectWing(c, q)); }});
     registry.add({"wing_component_segment_count", "", "wing -> number of component segments",
                   [](Configuration& c, const Json& q) -> Json { return componentSegmentCount(selectWing(c, q)); }});
-    registry.add({"wing_symmetry", "", "wing -> \"none\", \"x-y\", \"x-z\" or \"y-z\" (inherited through parentUID)",
-                  [](Configuration& c, const Json& q) -> Json {
-                    return model::resolvedSymmetry(c, selectWing(c, q).uID);
-                  }});
+    registry.add(
+        {"wing_symmetry", "", "wing -> \"none\", \"x-y\", \"x-z\" or \"y-z\" (inherited through parentUID)",
+         [](Configuration& c, const Json& q) -> Json { return model::resolvedSymmetry(c, selectWing(c, q).uID); }});
     plugin::registerPendingOps(
         registry, "wing",
         {{"wing_upper_point", "wing, segment, eta, xsi -> point on the upper skin"},

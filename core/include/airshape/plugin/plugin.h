@@ -45,12 +45,10 @@ inline int compiledAbiVersion() { return AIRSHAPE_PLUGIN_ABI_VERSION; }
 
 /// Exports a plugin class from a shared library: a factory and the ABI version, under the
 /// names the host looks for (airshape_create_plugin, airshape_plugin_abi_version).
-#define AIRSHAPE_PLUGIN(PluginClass)                                                           \
-  namespace airshape_plugin_export {                                                           \
-  inline std::shared_ptr<airshape::plugin::Plugin> create() {                                  \
-    return std::make_shared<PluginClass>();                                                    \
-  }                                                                                            \
-  inline int abiVersion() { return airshape::plugin::compiledAbiVersion(); }                   \
-  }                                                                                            \
-  BOOST_DLL_ALIAS(airshape_plugin_export::create, airshape_create_plugin)                      \
+#define AIRSHAPE_PLUGIN(PluginClass)                                                                    \
+  namespace airshape_plugin_export {                                                                    \
+  inline std::shared_ptr<airshape::plugin::Plugin> create() { return std::make_shared<PluginClass>(); } \
+  inline int abiVersion() { return airshape::plugin::compiledAbiVersion(); }                            \
+  }                                                                                                     \
+  BOOST_DLL_ALIAS(airshape_plugin_export::create, airshape_create_plugin)                               \
   BOOST_DLL_ALIAS(airshape_plugin_export::abiVersion, airshape_plugin_abi_version)

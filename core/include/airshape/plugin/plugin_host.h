@@ -13,7 +13,7 @@ namespace airshape::plugin {
 /// A plugin the host loaded, with the file it came from.
 struct LoadedPlugin {
   std::string file;
-  std::shared_ptr<Plugin> plugin;  ///< keeps its shared library loaded
+  std::shared_ptr<Plugin> plugin;   ///< keeps its shared library loaded
   std::vector<NodeType> nodeTypes;  ///< those it was granted (a type claimed earlier stays with its first owner)
 };
 

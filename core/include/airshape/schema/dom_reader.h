@@ -16,8 +16,8 @@ struct UidReference {
 
 /// What reading a document into the model found besides the values themselves.
 struct ReadReport {
-  Problems problems;                    ///< every schema violation, with its XPath
-  std::vector<UidReference> references; ///< every uIDref of the modelled part
+  Problems problems;                     ///< every schema violation, with its XPath
+  std::vector<UidReference> references;  ///< every uIDref of the modelled part
 };
 
 /// Fills `node` (and, recursively, its children) from `element`, binding each node to

@@ -24,8 +24,8 @@ struct FieldInfo {
   const char* name;  ///< attribute or element name; "" for Text
   FieldRole role;
   int minOccurs;
-  int maxOccurs;  ///< -1: unbounded
-  unsigned short index;  ///< position among the fields of the generated class
+  int maxOccurs;              ///< -1: unbounded
+  unsigned short index;       ///< position among the fields of the generated class
   const NumericRange* range;  ///< nullptr: no numeric limits
 };
 

@@ -1,0 +1,72 @@
+"""The plugin host: built-in plugins, a third-party plugin built outside the tree, and bad plugins."""
+import json
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from conftest import BUILD, EXAMPLE, SOURCE, airshape
+
+
+def test_built_in_plugins_are_listed():
+    result = airshape("plugins")
+    assert result.returncode == 0, result.stderr
+    for name in ("wing", "fuselage", "controlsurfaces", "structure", "nacelle"):
+        assert f"\n{name} 0.1.0" in result.stdout
+    assert "wing_count" in result.stdout and "bounding_box" in result.stdout
+
+
+@pytest.fixture(scope="module")
+def third_party(tmp_path_factory):
+    """Builds tests/third_party_plugin against this build tree, without touching the core."""
+    if shutil.which("cmake") is None:
+        pytest.skip("cmake is absent")
+    build = tmp_path_factory.mktemp("third_party_build")
+    configure = subprocess.run(["cmake", "-S", os.path.join(SOURCE, "tests", "third_party_plugin"), "-B", str(build),
+                                f"-Dairshape_DIR={BUILD}", "-DCMAKE_BUILD_TYPE=Release"], capture_output=True, text=True)
+    assert configure.returncode == 0, configure.stdout + configure.stderr
+    compile_ = subprocess.run(["cmake", "--build", str(build), "-j", "2"], capture_output=True, text=True)
+    assert compile_.returncode == 0, compile_.stdout + compile_.stderr
+    return build
+
+
+def plugin_folder(tmp_path, build, *names):
+    folder = tmp_path / "plugins"
+    folder.mkdir()
+    for name in names:
+        shutil.copy(build / f"lib{name}.so", folder)
+    return folder
+
+
+def test_third_party_node_type_and_op_appear(tmp_path, third_party):
+    folder = plugin_folder(tmp_path, third_party, "landing_gear")
+    env = {"AIRSHAPE_PLUGIN_PATH": str(folder)}
+    listing = airshape("plugins", env=env)
+    assert listing.returncode == 0 and listing.stderr == "", listing.stderr
+    assert "landinggear 1.2.3" in listing.stdout and "landingGear" in listing.stdout
+    assert "landing_gear_count" in listing.stdout
+    gear = ('<landingGears><landingGear uID="NoseGear"><name>n</name><parentUID>Fuselage</parentUID>'
+            '</landingGear></landingGears>')
+    aircraft = tmp_path / "with-gear.xml"
+    aircraft.write_text(open(EXAMPLE).read().replace("</wings>", "</wings>" + gear))
+    info = airshape("info", str(aircraft), env=env)
+    assert "landingGear NoseGear  parent: Fuselage  plugin: landinggear" in info.stdout, info.stdout
+    answer = airshape("query", str(aircraft), stdin='{"op":"landing_gear_count"}\n', env=env)
+    assert json.loads(answer.stdout) == {"ok": 1}
+
+
+def test_bad_plugins_get_one_message_each_and_the_rest_works(tmp_path, third_party):
+    folder = plugin_folder(tmp_path, third_party, "landing_gear_old_abi", "wing_claimer")
+    (folder / "libbroken.so").write_bytes(b"\x7fELF this is not a shared object")
+    (folder / "libnotaplugin.so").write_bytes(open("/lib/x86_64-linux-gnu/libm.so.6", "rb").read()
+                                              if os.path.exists("/lib/x86_64-linux-gnu/libm.so.6") else b"")
+    result = airshape("plugins", env={"AIRSHAPE_PLUGIN_PATH": str(folder)})
+    assert result.returncode == 0
+    messages = result.stderr.strip().splitlines()
+    assert any("libbroken.so: cannot be loaded as a plugin" in m for m in messages), messages
+    assert any("built for plugin ABI version 999, this core has 1" in m for m in messages), messages
+    assert any("claims node type 'wing', which plugin wing builds already" in m for m in messages), messages
+    assert "wing 0.1.0" in result.stdout and "wing_count" in result.stdout
+    query = airshape("query", EXAMPLE, stdin='{"op":"wing_count"}\n', env={"AIRSHAPE_PLUGIN_PATH": str(folder)})
+    assert query.stdout.strip() == '{"ok":1}'

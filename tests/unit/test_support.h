@@ -1,0 +1,47 @@
+#pragma once
+
+#include <string>
+
+namespace airshape::test {
+
+/// A minimal CPACS 3.5 document whose aircraft model holds `modelBody` (fuselages, wings...).
+inline std::string cpacsDocument(const std::string& modelBody, const std::string& vehiclesExtra = "") {
+  return R"(<?xml version="1.0" encoding="UTF-8"?>
+<cpacs>
+  <header>
+    <name>test</name>
+    <version>1</version>
+    <versionInfos><versionInfo version="1"><creator>test</creator><timestamp>2026-01-01T00:00:00</timestamp>
+      <description>test</description><cpacsVersion>3.5</cpacsVersion></versionInfo></versionInfos>
+  </header>
+  <vehicles>
+    <aircraft>
+      <model uID="M">
+        <name>model</name>
+)" + modelBody +
+         R"(
+      </model>
+    </aircraft>)" +
+         vehiclesExtra + R"(
+  </vehicles>
+</cpacs>
+)";
+}
+
+/// A wing with two sections and one segment; `extra` goes inside <wing>.
+inline std::string wingXml(const std::string& uid, const std::string& parent = "", const std::string& attributes = "") {
+  const std::string parentElement = parent.empty() ? "" : "<parentUID>" + parent + "</parentUID>";
+  return "<wing uID=\"" + uid + "\"" + attributes + "><name>" + uid + "</name>" + parentElement +
+         "<transformation><scaling><x>1</x><y>1</y><z>1</z></scaling></transformation>"
+         "<sections><section uID=\"" +
+         uid + "_S1\"><name>s1</name><transformation/><elements><element uID=\"" + uid +
+         "_S1E\"><name>e</name><airfoilUID>A</airfoilUID><transformation/></element></elements></section>"
+         "<section uID=\"" +
+         uid + "_S2\"><name>s2</name><transformation/><elements><element uID=\"" + uid +
+         "_S2E\"><name>e</name><airfoilUID>A</airfoilUID><transformation/></element></elements></section></sections>"
+         "<segments><segment uID=\"" +
+         uid + "_Seg\"><name>seg</name><fromElementUID>" + uid + "_S1E</fromElementUID><toElementUID>" + uid +
+         "_S2E</toElementUID></segment></segments></wing>";
+}
+
+}  // namespace airshape::test
