@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The main job: installs what is missing, builds, and runs airshape on the example aircraft.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/build.sh
+example=examples/example-aircraft.xml
+./build/bin/airshape info "$example"
+./build/bin/airshape validate "$example"
+printf '%s\n' '{"op":"wing_count"}' '{"op":"wing_uid","wing":1}' '{"op":"wing_symmetry","wing":"MainWing"}' \
+  '{"op":"wing_segment_count","wing":1}' '{"op":"fuselage_segment_count","fuselage":1}' |
+  ./build/bin/airshape query "$example"
