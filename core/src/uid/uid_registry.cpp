@@ -12,15 +12,14 @@ using namespace xercesc;
 namespace {
 
 void collect(const DOMElement& element, const XMLCh* uidName,
-             std::unordered_map<std::string, UidRegistry::Definition>& definitions, Problems& problems) {
+             std::unordered_map<std::string, const DOMElement*>& definitions, Problems& problems) {
   if (const DOMAttr* attribute = element.getAttributeNode(uidName)) {
     const std::string uid = xml::toUtf8(attribute->getValue());
-    const std::string xpath = xml::pathOf(element);
-    const auto [entry, inserted] = definitions.emplace(uid, UidRegistry::Definition{xpath, &element});
-    if (!inserted) {
-      problems.push_back(
-          {Problem::Severity::Error, xpath,
-           "duplicate uID '" + uid + "' (first defined at " + entry->second.xpath + "; this definition is ignored)"});
+    const auto [entry, inserted] = definitions.emplace(uid, &element);
+    if (!inserted) {  // paths are worked out only here: most documents need none
+      problems.push_back({Problem::Severity::Error, xml::pathOf(element),
+                          "duplicate uID '" + uid + "' (first defined at " + xml::pathOf(*entry->second) +
+                              "; this definition is ignored)"});
     }
   }
   for (const DOMElement* child = element.getFirstElementChild(); child != nullptr;
@@ -42,14 +41,9 @@ void UidRegistry::build(const DOMElement& root, const std::vector<schema::UidRef
   }
 }
 
-const std::string* UidRegistry::find(const std::string& uid) const {
-  const auto entry = definitions_.find(uid);
-  return entry == definitions_.end() ? nullptr : &entry->second.xpath;
-}
-
 const DOMElement* UidRegistry::definition(const std::string& uid) const {
   const auto entry = definitions_.find(uid);
-  return entry == definitions_.end() ? nullptr : entry->second.element;
+  return entry == definitions_.end() ? nullptr : entry->second;
 }
 
 }  // namespace airshape::uid

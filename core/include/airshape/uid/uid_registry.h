@@ -19,23 +19,16 @@ class UidRegistry {
   /// modelled or not) and checks the references found while reading the model.
   void build(const xercesc::DOMElement& root, const std::vector<schema::UidReference>& references);
 
-  /// The XPath of the element that defines `uid`, or nullptr if none does.
-  const std::string* find(const std::string& uid) const;
-  bool contains(const std::string& uid) const { return find(uid) != nullptr; }
   /// The element that defines `uid` (the first in document order), or nullptr.
   const xercesc::DOMElement* definition(const std::string& uid) const;
+  bool contains(const std::string& uid) const { return definition(uid) != nullptr; }
   std::size_t size() const { return definitions_.size(); }
 
   /// Duplicate uIDs and dangling uIDrefs, as errors with the XPaths involved.
   const Problems& problems() const { return problems_; }
 
-  struct Definition {
-    std::string xpath;
-    const xercesc::DOMElement* element;
-  };
-
  private:
-  std::unordered_map<std::string, Definition> definitions_;  // uid -> the first definition
+  std::unordered_map<std::string, const xercesc::DOMElement*> definitions_;  // uid -> the first definition
   Problems problems_;
 };
 
