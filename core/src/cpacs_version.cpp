@@ -28,7 +28,7 @@ std::string declaredCpacsVersion(const DOMElement& root) {
   const DOMElement* headerVersion = xml::firstChild(*header, "version");
   const std::string wanted = headerVersion ? trimmed(xml::text(*headerVersion)) : std::string();
   std::string last;
-  for (const DOMElement* info = infos->getFirstElementChild(); info != nullptr; info = info->getNextElementSibling()) {
+  for (const DOMElement* info = xml::firstElement(*infos); info != nullptr; info = xml::nextElement(*info)) {
     const DOMElement* version = xml::firstChild(*info, "cpacsVersion");
     if (version == nullptr) continue;
     last = trimmed(xml::text(*version));

@@ -35,7 +35,7 @@ void select(const DOMElement& from, const std::vector<std::string>& steps, std::
     found.push_back(&from);
     return;
   }
-  for (const DOMElement* child = from.getFirstElementChild(); child != nullptr; child = child->getNextElementSibling())
+  for (const DOMElement* child = xml::firstElement(from); child != nullptr; child = xml::nextElement(*child))
     if (xml::equalsAscii(child->getTagName(), steps[step].c_str())) select(*child, steps, step + 1, found);
 }
 

@@ -35,7 +35,7 @@ class ReadingVisitor final : public Visitor {
  public:
   ReadingVisitor(DOMElement& element, Node& node, ReadReport& report)
       : element_(element), node_(node), report_(report) {
-    for (DOMElement* child = element.getFirstElementChild(); child != nullptr; child = child->getNextElementSibling())
+    for (DOMElement* child = xml::firstElement(element); child != nullptr; child = xml::nextElement(*child))
       children_.push_back({child, false});
   }
 

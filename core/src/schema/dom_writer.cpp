@@ -99,7 +99,7 @@ class WritingVisitor final : public Visitor {
 
   std::vector<DOMElement*> children(const char* name) const {
     std::vector<DOMElement*> found;
-    for (DOMElement* c = element_.getFirstElementChild(); c != nullptr; c = c->getNextElementSibling())
+    for (DOMElement* c = xml::firstElement(element_); c != nullptr; c = xml::nextElement(*c))
       if (xml::equalsAscii(c->getTagName(), name)) found.push_back(c);
     return found;
   }
@@ -115,7 +115,7 @@ class WritingVisitor final : public Visitor {
     DOMElement* created = element_.getOwnerDocument()->createElement(xml::toXml(name).c_str());
     const std::size_t myRank = rank(created->getTagName());
     DOMElement* before = nullptr;
-    for (DOMElement* c = element_.getFirstElementChild(); c != nullptr; c = c->getNextElementSibling()) {
+    for (DOMElement* c = xml::firstElement(element_); c != nullptr; c = xml::nextElement(*c)) {
       if (rank(c->getTagName()) > myRank) {
         before = c;
         break;

@@ -22,8 +22,7 @@ void collect(const DOMElement& element, const XMLCh* uidName,
                               "; this definition is ignored)"});
     }
   }
-  for (const DOMElement* child = element.getFirstElementChild(); child != nullptr;
-       child = child->getNextElementSibling())
+  for (const DOMElement* child = xml::firstElement(element); child != nullptr; child = xml::nextElement(*child))
     collect(*child, uidName, definitions, problems);
 }
 

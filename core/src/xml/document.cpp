@@ -61,7 +61,11 @@ std::string readWholeFile(const std::string& path) {
   if (fs::is_directory(path, error)) throw Error(ErrorCode::FileNotFound, "is a directory, not a file", path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorCode::FileNotFound, "cannot be opened for reading", path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::string content(fs::file_size(path, error), '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
+  if (error || in.gcount() != static_cast<std::streamsize>(content.size()))
+    throw Error(ErrorCode::FileNotFound, "cannot be read", path);
+  return content;
 }
 
 void writeAll(int fd, const char* data, std::size_t size, const std::string& path) {

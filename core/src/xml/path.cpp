@@ -23,8 +23,7 @@ std::string pathOf(const DOMElement& element) {
   const auto& parentElement = static_cast<const DOMElement&>(*parent);
   int index = 0;
   int count = 0;
-  for (const DOMElement* sibling = parentElement.getFirstElementChild(); sibling != nullptr;
-       sibling = sibling->getNextElementSibling()) {
+  for (const DOMElement* sibling = firstElement(parentElement); sibling != nullptr; sibling = nextElement(*sibling)) {
     if (XMLString::equals(sibling->getTagName(), element.getTagName())) {
       ++count;
       if (sibling == &element) index = count;

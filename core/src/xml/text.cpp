@@ -79,9 +79,22 @@ std::string attribute(const DOMElement& element, const std::string& attribute) {
   return toUtf8(element.getAttribute(toXml(attribute).c_str()));
 }
 
+namespace {
+
+DOMElement* elementFrom(DOMNode* node) {
+  while (node != nullptr && node->getNodeType() != DOMNode::ELEMENT_NODE) node = node->getNextSibling();
+  return static_cast<DOMElement*>(node);
+}
+
+}  // namespace
+
+DOMElement* firstElement(const DOMNode& parent) { return elementFrom(parent.getFirstChild()); }
+
+DOMElement* nextElement(const DOMNode& element) { return elementFrom(element.getNextSibling()); }
+
 DOMElement* firstChild(const DOMElement& parent, const std::string& childName) {
   const std::u16string wanted = toXml(childName);
-  for (DOMElement* child = parent.getFirstElementChild(); child != nullptr; child = child->getNextElementSibling()) {
+  for (DOMElement* child = firstElement(parent); child != nullptr; child = nextElement(*child)) {
     if (wanted == child->getTagName()) return child;
   }
   return nullptr;
