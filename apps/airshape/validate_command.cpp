@@ -9,10 +9,9 @@ namespace airshape::cli {
 int runValidate(const Arguments& arguments, plugin::PluginHost& host) {
   const std::string path = singleFileArgument(arguments, "validate");
   const Configuration configuration = Configuration::open(path, host.componentLocations());
+  // The warnings of loading (uIDs, parents) are errors of the document too.
   Problems problems = configuration.schemaProblems();
-  for (const Problem& problem : configuration.uids().problems()) problems.push_back(problem);
-  for (const Problem& warning : configuration.warnings())
-    if (warning.message.find("parentUID") != std::string::npos) problems.push_back(warning);
+  problems.insert(problems.end(), configuration.warnings().begin(), configuration.warnings().end());
   for (const Problem& problem : problems) std::cout << path << ": " << problem.describe() << '\n';
   std::cout << path << ": " << problems.size() << (problems.size() == 1 ? " problem" : " problems") << " (CPACS "
             << configuration.cpacsVersion() << ")\n";
