@@ -4,6 +4,7 @@
 
 #include "airshape/cpacs_version.h"
 #include "airshape/error.h"
+#include "airshape/model/primary_model.h"
 #include "airshape/schema/dom_reader.h"
 #include "airshape/schema/dom_writer.h"
 #include "airshape/schema/generated/cpacs_model.h"
@@ -26,6 +27,8 @@ Configuration::Configuration(xml::Document document, const std::vector<graph::Co
   for (const Problem& problem : uids_.problems())
     warnings_.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
 
+  const Problems skipped = model::primaryModel(*cpacs_).skipped;
+  warnings_.insert(warnings_.end(), skipped.begin(), skipped.end());
   try {
     components_ = graph::ComponentGraph::build(root, locations, warnings_);
   } catch (const Error& error) {

@@ -1,16 +1,35 @@
 #include "airshape/model/primary_model.h"
 
+#include "airshape/error.h"
+#include "airshape/model/segment_chain.h"
+
 namespace airshape::model {
 
 namespace {
+
+/// Adds the component unless its segments cannot be ordered, which `skipped` then records.
+template <class Component>
+void addIfChained(Component& component, std::vector<Component*>& list, Problems& skipped) {
+  std::vector<SegmentEnds> ends;
+  if (component.segments)
+    for (const auto& segment : component.segments->segment)
+      ends.push_back({segment.fromElementUID, segment.toElementUID});
+  try {
+    chainOrder(ends);
+    list.push_back(&component);
+  } catch (const Error& error) {
+    skipped.push_back({Problem::Severity::Warning, component.xpath + "/segments",
+                       error.message() + "; " + component.uID + " cannot be built and is left out"});
+  }
+}
 
 template <class Model>
 PrimaryModel collect(const Model& model) {
   PrimaryModel result;
   if (model.wings)
-    for (auto& wing : model.wings->wing) result.wings.push_back(&wing);
+    for (auto& wing : model.wings->wing) addIfChained(wing, result.wings, result.skipped);
   if (model.fuselages)
-    for (auto& fuselage : model.fuselages->fuselage) result.fuselages.push_back(&fuselage);
+    for (auto& fuselage : model.fuselages->fuselage) addIfChained(fuselage, result.fuselages, result.skipped);
   return result;
 }
 
@@ -25,7 +44,7 @@ PrimaryModel primaryModel(const schema::CpacsType& cpacs) {
     const schema::RotorcraftModelType& rotorcraft = vehicles.rotorcraft->model[0];
     PrimaryModel result = collect(rotorcraft);
     if (rotorcraft.rotorBlades)
-      for (auto& blade : rotorcraft.rotorBlades->rotorBlade) result.wings.push_back(&blade);
+      for (auto& blade : rotorcraft.rotorBlades->rotorBlade) addIfChained(blade, result.wings, result.skipped);
     return result;
   }
   return {};

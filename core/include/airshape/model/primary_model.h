@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "airshape/problem.h"
 #include "airshape/schema/generated/cpacs_model.h"
 
 namespace airshape::model {
@@ -10,9 +11,13 @@ namespace airshape::model {
 /// The wings and fuselages of the model that queries address: the first aircraft model,
 /// else the first rotorcraft model (as the established CPACS tools choose it). Empty when
 /// the document has neither. In a rotorcraft model the rotor blades follow the wings.
+///
+/// A wing or fuselage whose segments do not form one continuous chain cannot be built; it
+/// is left out (so indices count only buildable components) and `skipped` says why.
 struct PrimaryModel {
   std::vector<schema::WingType*> wings;
   std::vector<schema::FuselageType*> fuselages;
+  Problems skipped;
 };
 
 PrimaryModel primaryModel(const schema::CpacsType& cpacs);
