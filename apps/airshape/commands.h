@@ -21,5 +21,6 @@ int runQuery(const Arguments& arguments, plugin::PluginHost& host);
 int runValidate(const Arguments& arguments, plugin::PluginHost& host);
 int runSave(const Arguments& arguments, plugin::PluginHost& host);
 int runPlugins(const Arguments& arguments, plugin::PluginHost& host);
+int runGordon(const Arguments& arguments, plugin::PluginHost& host);
 
 }  // namespace airshape::cli

@@ -34,6 +34,11 @@ const std::map<std::string, Command>& commands() {
        {runSave, "airshape save IN -o OUT [--force] | airshape save IN --in-place",
         "Loads IN into the model and writes it back, every node preserved. OUT is written\n"
         "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
+      {"gordon",
+       {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep",
+        "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"
+        "surface, writes it as one face and prints a JSON report: degrees, pole counts,\n"
+        "time, and how far the input curves and crossings lie from the surface."}},
       {"plugins",
        {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
   };

@@ -1,0 +1,103 @@
+#include <chrono>
+#include <iostream>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Bnd_Box.hxx>
+#include <ShapeAnalysis_Surface.hxx>
+#include <TopoDS_Face.hxx>
+#include <nlohmann/json.hpp>
+
+#include "airshape/error.h"
+#include "airshape/geometry/brep_curves.h"
+#include "airshape/geometry/gordon_surface.h"
+#include "commands.h"
+
+namespace airshape::cli {
+
+namespace {
+
+using Curves = std::vector<Handle(Geom_BSplineCurve)>;
+
+constexpr int kSamplesPerCurve = 200;
+/// The network's curves must lie on the surface within this share of its size.
+constexpr double kRelativeTolerance = 1e-4;
+
+double boxDiagonal(const Curves& profiles, const Curves& guides) {
+  Bnd_Box box;
+  for (const Curves* family : {&profiles, &guides})
+    for (const auto& curve : *family)
+      for (int i = 0; i <= kSamplesPerCurve; ++i)
+        box.Add(curve->Value(curve->FirstParameter() +
+                             (curve->LastParameter() - curve->FirstParameter()) * i / kSamplesPerCurve));
+  return std::sqrt(box.SquareExtent());
+}
+
+/// Largest distance from sample points of the curves to the surface.
+double maxDistance(const Curves& curves, const Handle(Geom_BSplineSurface) & surface) {
+  ShapeAnalysis_Surface projector(surface);
+  double worst = 0.0;
+  for (const auto& curve : curves) {
+    gp_Pnt2d uv = projector.ValueOfUV(curve->Value(curve->FirstParameter()), 1e-9);
+    for (int i = 0; i <= kSamplesPerCurve; ++i) {
+      const gp_Pnt point = curve->Value(curve->FirstParameter() +
+                                        (curve->LastParameter() - curve->FirstParameter()) * i / kSamplesPerCurve);
+      uv = projector.NextValueOfUV(uv, point, 1e-9);
+      worst = std::max(worst, projector.Gap());
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+int runGordon(const Arguments& arguments, plugin::PluginHost&) {
+  std::string profilesPath, guidesPath, output;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    if ((arguments[i] == "-o" || arguments[i] == "--output") && i + 1 < arguments.size()) {
+      output = arguments[++i];
+    } else if (profilesPath.empty()) {
+      profilesPath = arguments[i];
+    } else if (guidesPath.empty()) {
+      guidesPath = arguments[i];
+    } else {
+      throw Error(ErrorCode::InvalidArgument, "gordon: unexpected argument '" + arguments[i] + "'");
+    }
+  }
+  if (profilesPath.empty() || guidesPath.empty() || output.empty())
+    throw Error(ErrorCode::InvalidArgument, "usage: airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep");
+
+  const Curves profiles = geometry::readBrepCurves(profilesPath);
+  const Curves guides = geometry::readBrepCurves(guidesPath);
+  const double diagonal = boxDiagonal(profiles, guides);
+  if (!(diagonal > 0.0)) throw Error(ErrorCode::InvalidArgument, "the curve network has no extent", profilesPath);
+
+  const auto start = std::chrono::steady_clock::now();
+  geometry::GordonSurface gordon;
+  try {
+    gordon = geometry::buildGordonSurface(profiles, guides, kRelativeTolerance * diagonal);
+  } catch (const Error& error) {
+    throw error.inFile(profilesPath + " + " + guidesPath);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  geometry::writeBrep(BRepBuilderAPI_MakeFace(gordon.surface, 1e-7).Face(), output);
+
+  const auto& surface = gordon.surface;
+  nlohmann::json report = {{"degree_u", surface->UDegree()},
+                           {"degree_v", surface->VDegree()},
+                           {"poles_u", surface->NbUPoles()},
+                           {"poles_v", surface->NbVPoles()},
+                           {"seconds", seconds},
+                           {"bbox_diagonal", diagonal},
+                           {"max_profile_distance", maxDistance(profiles, surface)},
+                           {"max_guide_distance", maxDistance(guides, surface)},
+                           {"max_intersection_distance", gordon.maxIntersectionGap},
+                           {"timings",
+                            {{"intersection", gordon.timings.intersection},
+                             {"reparametrisation", gordon.timings.reparametrisation},
+                             {"skinning", gordon.timings.skinning},
+                             {"combination", gordon.timings.combination}}}};
+  std::cout << report.dump() << '\n';
+  return kSuccess;
+}
+
+}  // namespace airshape::cli

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <vector>
+
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+
+namespace airshape::geometry {
+
+/// Raises every curve to the highest degree among them and inserts knots until all share
+/// one knot vector. The geometry does not change. All curves must span the same parameter
+/// range and be all periodic or all not.
+void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves);
+
+/// The same for surfaces, in both parameter directions.
+void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces);
+
+}  // namespace airshape::geometry

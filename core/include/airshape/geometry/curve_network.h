@@ -1,0 +1,44 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Geom_BSplineCurve.hxx>
+
+namespace airshape::geometry {
+
+/// Profiles and guides that cross each other once per pair, sorted: guide l meets profile k
+/// at profile parameter profileParameters(k, l) and guide parameter guideParameters(k, l),
+/// both ascending along their curve, with profile 0 and guide 0 at the network's corner.
+struct CurveNetwork {
+  std::vector<Handle(Geom_BSplineCurve)> profiles;
+  std::vector<Handle(Geom_BSplineCurve)> guides;
+  Eigen::MatrixXd profileParameters;  ///< K x L
+  Eigen::MatrixXd guideParameters;    ///< K x L
+  /// All profiles are closed and smooth across their seam: the surface is periodic in u.
+  /// (Closed profiles with a corner at the seam, such as sharp trailing edges, are treated
+  /// as open curves that start and end there.)
+  bool profilesClosed = false;
+  bool guidesClosed = false;  ///< the same for the guides and v
+};
+
+/// Intersects every profile with every guide and sorts the network: drops a curve that
+/// repeats another (the seam curve of a closed network, given twice), reverses the curves
+/// that run against the others and orders profiles along the guides and guides along the
+/// profiles. `tolerance` is the largest gap (in model units) a crossing may have. Throws
+/// Error naming both curves and the gap when a guide misses a profile, and when the
+/// network cannot be ordered.
+CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
+                               std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance);
+
+/// Where two curves come closest: parameters and distance.
+struct CurveCrossing {
+  double first;
+  double second;
+  double distance;
+};
+
+/// The closest approach of two curves (sampled, then refined by Newton's method).
+CurveCrossing closestApproach(const Geom_BSplineCurve& a, const Geom_BSplineCurve& b);
+
+}  // namespace airshape::geometry

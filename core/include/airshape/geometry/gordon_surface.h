@@ -1,0 +1,34 @@
+#pragma once
+
+#include <vector>
+
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+
+namespace airshape::geometry {
+
+/// Seconds spent in each stage of building a Gordon surface.
+struct GordonTimings {
+  double intersection = 0.0;
+  double reparametrisation = 0.0;
+  double skinning = 0.0;
+  double combination = 0.0;
+};
+
+struct GordonSurface {
+  Handle(Geom_BSplineSurface) surface;
+  GordonTimings timings;
+  /// Largest distance between a profile/guide crossing point and the other curve.
+  double maxIntersectionGap = 0.0;
+};
+
+/// The Gordon surface interpolating a curve network: S = S_f + S_g − T, where S_f skins the
+/// (reparametrised) profiles, S_g skins the guides and T interpolates their crossing points,
+/// all made compatible and combined into one B-spline surface (u along the profiles, v
+/// along the guides). Closed profiles or guides give a periodic direction, smooth across
+/// its seam. `tolerance` (model units) bounds the crossing gaps and the reparametrisation
+/// error. Throws Error for a network that cannot be interpolated.
+GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
+                                 const std::vector<Handle(Geom_BSplineCurve)>& guides, double tolerance);
+
+}  // namespace airshape::geometry

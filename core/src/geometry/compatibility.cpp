@@ -1,0 +1,93 @@
+#include "airshape/geometry/compatibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "airshape/error.h"
+
+namespace airshape::geometry {
+
+namespace {
+
+constexpr double kKnotTolerance = 1e-10;
+
+/// Highest multiplicity of each knot value over several knot vectors (values merged
+/// within kKnotTolerance).
+class KnotUnion {
+ public:
+  void add(double knot, int multiplicity) {
+    for (auto& [value, count] : knots_) {
+      if (std::abs(value - knot) <= kKnotTolerance) {
+        count = std::max(count, multiplicity);
+        return;
+      }
+    }
+    knots_.emplace_back(knot, multiplicity);
+  }
+  const std::vector<std::pair<double, int>>& knots() const { return knots_; }
+
+ private:
+  std::vector<std::pair<double, int>> knots_;
+};
+
+int multiplicityAt(const TColStd_Array1OfReal& knots, const TColStd_Array1OfInteger& multiplicities, double value) {
+  for (int i = knots.Lower(); i <= knots.Upper(); ++i)
+    if (std::abs(knots(i) - value) <= kKnotTolerance) return multiplicities(i);
+  return 0;
+}
+
+void requireSameRange(double first, double last, double otherFirst, double otherLast) {
+  if (std::abs(first - otherFirst) > 1e-9 || std::abs(last - otherLast) > 1e-9)
+    throw Error(ErrorCode::InvalidArgument, "curves to be made compatible must share their parameter range");
+}
+
+}  // namespace
+
+void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
+  if (curves.empty()) return;
+  int degree = 0;
+  for (const auto& curve : curves) {
+    degree = std::max(degree, curve->Degree());
+    requireSameRange(curves.front()->FirstParameter(), curves.front()->LastParameter(), curve->FirstParameter(),
+                     curve->LastParameter());
+  }
+  KnotUnion all;
+  for (auto& curve : curves) {
+    if (curve->Degree() < degree) curve->IncreaseDegree(degree);
+    for (int i = 1; i <= curve->NbKnots(); ++i) all.add(curve->Knot(i), curve->Multiplicity(i));
+  }
+  for (auto& curve : curves) {
+    for (const auto& [value, multiplicity] : all.knots()) {
+      const int present = multiplicityAt(curve->Knots(), curve->Multiplicities(), value);
+      if (present < multiplicity) curve->InsertKnot(value, multiplicity - present, kKnotTolerance, true);
+    }
+  }
+}
+
+void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces) {
+  if (surfaces.empty()) return;
+  int uDegree = 0, vDegree = 0;
+  for (const auto& surface : surfaces) {
+    uDegree = std::max(uDegree, surface->UDegree());
+    vDegree = std::max(vDegree, surface->VDegree());
+  }
+  KnotUnion uKnots, vKnots;
+  for (auto& surface : surfaces) {
+    surface->IncreaseDegree(uDegree, vDegree);
+    for (int i = 1; i <= surface->NbUKnots(); ++i) uKnots.add(surface->UKnot(i), surface->UMultiplicity(i));
+    for (int i = 1; i <= surface->NbVKnots(); ++i) vKnots.add(surface->VKnot(i), surface->VMultiplicity(i));
+  }
+  for (auto& surface : surfaces) {
+    for (const auto& [value, multiplicity] : uKnots.knots()) {
+      const int present = multiplicityAt(surface->UKnots(), surface->UMultiplicities(), value);
+      if (present < multiplicity) surface->InsertUKnot(value, multiplicity - present, kKnotTolerance, true);
+    }
+    for (const auto& [value, multiplicity] : vKnots.knots()) {
+      const int present = multiplicityAt(surface->VKnots(), surface->VMultiplicities(), value);
+      if (present < multiplicity) surface->InsertVKnot(value, multiplicity - present, kKnotTolerance, true);
+    }
+  }
+}
+
+}  // namespace airshape::geometry

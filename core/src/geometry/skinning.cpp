@@ -1,0 +1,112 @@
+#include "airshape/geometry/skinning.h"
+
+#include <algorithm>
+
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+#include "airshape/error.h"
+#include "airshape/geometry/bspline_curve.h"
+#include "airshape/geometry/compatibility.h"
+#include "airshape/geometry/curve_interpolation.h"
+
+namespace airshape::geometry {
+
+namespace {
+
+std::vector<double> withoutClosingParameter(const std::vector<double>& parameters, const KnotVector& space) {
+  return space.periodic ? std::vector<double>(parameters.begin(), parameters.end() - 1) : parameters;
+}
+
+void fill(TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& multiplicities, const KnotVector& space) {
+  for (std::size_t i = 0; i < space.knots.size(); ++i) {
+    knots(static_cast<int>(i) + 1) = space.knots[i];
+    multiplicities(static_cast<int>(i) + 1) = space.multiplicities[i];
+  }
+}
+
+/// Interpolates a grid of points (rows: data sites, columns: other-direction index, as
+/// x,y,z triples) along the rows, returning the pole rows.
+Eigen::MatrixXd interpolateRows(const KnotVector& space, const std::vector<double>& parameters,
+                                const Eigen::MatrixXd& values) {
+  return interpolateColumns(space, withoutClosingParameter(parameters, space), values);
+}
+
+}  // namespace
+
+KnotVector skinningSpace(const std::vector<double>& parameters, int degree, bool closed) {
+  const int sites = static_cast<int>(parameters.size()) - (closed ? 1 : 0);
+  if (sites < 2) throw Error(ErrorCode::InvalidArgument, "skinning needs at least two curves");
+  if (closed) return periodicInterpolationKnots(parameters, std::min(degree, sites - 1));
+  return averagedKnots(parameters, std::min(degree, sites - 1));
+}
+
+Handle(Geom_BSplineSurface)
+    makeSurface(const std::vector<std::vector<gp_Pnt>>& poles, const KnotVector& uSpace, const KnotVector& vSpace) {
+  const int nu = static_cast<int>(poles.size()), nv = static_cast<int>(poles.front().size());
+  TColgp_Array2OfPnt grid(1, nu, 1, nv);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) grid(i + 1, j + 1) = poles[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+  TColStd_Array1OfReal uKnots(1, static_cast<int>(uSpace.knots.size())),
+      vKnots(1, static_cast<int>(vSpace.knots.size()));
+  TColStd_Array1OfInteger uMults(1, static_cast<int>(uSpace.knots.size())),
+      vMults(1, static_cast<int>(vSpace.knots.size()));
+  fill(uKnots, uMults, uSpace);
+  fill(vKnots, vMults, vSpace);
+  return new Geom_BSplineSurface(grid, uKnots, vKnots, uMults, vMults, uSpace.degree, vSpace.degree, uSpace.periodic,
+                                 vSpace.periodic);
+}
+
+Handle(Geom_BSplineSurface) skinCurves(std::vector<Handle(Geom_BSplineCurve)> curves,
+                                       const std::vector<double>& parameters, const KnotVector& space) {
+  makeCompatible(curves);
+  const int sites = static_cast<int>(curves.size());
+  const int nu = curves.front()->NbPoles();
+  Eigen::MatrixXd values(sites, 3 * nu);
+  for (int k = 0; k < sites; ++k)
+    for (int i = 0; i < nu; ++i) {
+      const gp_Pnt& p = curves[static_cast<std::size_t>(k)]->Pole(i + 1);
+      values.block(k, 3 * i, 1, 3) << p.X(), p.Y(), p.Z();
+    }
+  const Eigen::MatrixXd vPoles = interpolateRows(space, parameters, values);
+  std::vector<std::vector<gp_Pnt>> poles(static_cast<std::size_t>(nu));
+  for (int i = 0; i < nu; ++i)
+    for (Eigen::Index j = 0; j < vPoles.rows(); ++j)
+      poles[static_cast<std::size_t>(i)].emplace_back(vPoles(j, 3 * i), vPoles(j, 3 * i + 1), vPoles(j, 3 * i + 2));
+  return makeSurface(poles, knotVectorOf(*curves.front()), space);
+}
+
+Handle(Geom_BSplineSurface)
+    interpolateGrid(const std::vector<std::vector<gp_Pnt>>& points, const std::vector<double>& uParameters,
+                    const KnotVector& uSpace, const std::vector<double>& vParameters, const KnotVector& vSpace) {
+  const int rows = static_cast<int>(points.size());             // v sites
+  const int columns = static_cast<int>(points.front().size());  // u sites
+  // First along u: every grid row becomes a row of u-poles.
+  Eigen::MatrixXd uValues(columns, 3 * rows);
+  for (int k = 0; k < rows; ++k)
+    for (int l = 0; l < columns; ++l) {
+      const gp_Pnt& p = points[static_cast<std::size_t>(k)][static_cast<std::size_t>(l)];
+      uValues.block(l, 3 * k, 1, 3) << p.X(), p.Y(), p.Z();
+    }
+  const Eigen::MatrixXd uPoles = interpolateRows(uSpace, uParameters, uValues);  // nu x 3*rows
+  // Then along v, for every u-pole.
+  const Eigen::Index nu = uPoles.rows();
+  Eigen::MatrixXd vValues(rows, 3 * nu);
+  for (int k = 0; k < rows; ++k)
+    for (Eigen::Index i = 0; i < nu; ++i) vValues.block(k, 3 * i, 1, 3) = uPoles.block(i, 3 * k, 1, 3);
+  const Eigen::MatrixXd poles = interpolateRows(vSpace, vParameters, vValues);  // nv x 3*nu
+  std::vector<std::vector<gp_Pnt>> grid(static_cast<std::size_t>(nu));
+  for (Eigen::Index i = 0; i < nu; ++i)
+    for (Eigen::Index j = 0; j < poles.rows(); ++j)
+      grid[static_cast<std::size_t>(i)].emplace_back(poles(j, 3 * i), poles(j, 3 * i + 1), poles(j, 3 * i + 2));
+  return makeSurface(grid, uSpace, vSpace);
+}
+
+Handle(Geom_BSplineSurface) swapDirections(const Geom_BSplineSurface& surface) {
+  Handle(Geom_BSplineSurface) swapped = Handle(Geom_BSplineSurface)::DownCast(surface.Copy());
+  swapped->ExchangeUV();
+  return swapped;
+}
+
+}  // namespace airshape::geometry
