@@ -3,13 +3,13 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Bnd_Box.hxx>
-#include <ShapeAnalysis_Surface.hxx>
 #include <TopoDS_Face.hxx>
 #include <nlohmann/json.hpp>
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_curves.h"
 #include "airshape/geometry/gordon_surface.h"
+#include "airshape/geometry/surface_projection.h"
 #include "commands.h"
 
 namespace airshape::cli {
@@ -19,8 +19,10 @@ namespace {
 using Curves = std::vector<Handle(Geom_BSplineCurve)>;
 
 constexpr int kSamplesPerCurve = 200;
-/// The network's curves must lie on the surface within this share of its size.
-constexpr double kRelativeTolerance = 1e-4;
+/// Relative to the network's size: the largest gap where two curves still cross, and how
+/// closely the reparametrised curves follow the input (a tenth of the 1e-4 promised).
+constexpr double kRelativeCrossingTolerance = 1e-3;
+constexpr double kRelativeApproximationTolerance = 1e-5;
 
 double boxDiagonal(const Curves& profiles, const Curves& guides) {
   Bnd_Box box;
@@ -34,17 +36,13 @@ double boxDiagonal(const Curves& profiles, const Curves& guides) {
 
 /// Largest distance from sample points of the curves to the surface.
 double maxDistance(const Curves& curves, const Handle(Geom_BSplineSurface) & surface) {
-  ShapeAnalysis_Surface projector(surface);
+  const geometry::SurfaceProjector projector(surface);
   double worst = 0.0;
-  for (const auto& curve : curves) {
-    gp_Pnt2d uv = projector.ValueOfUV(curve->Value(curve->FirstParameter()), 1e-9);
-    for (int i = 0; i <= kSamplesPerCurve; ++i) {
-      const gp_Pnt point = curve->Value(curve->FirstParameter() +
-                                        (curve->LastParameter() - curve->FirstParameter()) * i / kSamplesPerCurve);
-      uv = projector.NextValueOfUV(uv, point, 1e-9);
-      worst = std::max(worst, projector.Gap());
-    }
-  }
+  for (const auto& curve : curves)
+    for (int i = 0; i <= kSamplesPerCurve; ++i)
+      worst = std::max(worst, projector.distance(curve->Value(curve->FirstParameter() +
+                                                              (curve->LastParameter() - curve->FirstParameter()) * i /
+                                                                  kSamplesPerCurve)));
   return worst;
 }
 
@@ -74,7 +72,8 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
   const auto start = std::chrono::steady_clock::now();
   geometry::GordonSurface gordon;
   try {
-    gordon = geometry::buildGordonSurface(profiles, guides, kRelativeTolerance * diagonal);
+    gordon = geometry::buildGordonSurface(
+        profiles, guides, {kRelativeCrossingTolerance * diagonal, kRelativeApproximationTolerance * diagonal});
   } catch (const Error& error) {
     throw error.inFile(profilesPath + " + " + guidesPath);
   }

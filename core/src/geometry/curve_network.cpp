@@ -4,10 +4,12 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <tuple>
 
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
+#include "airshape/geometry/periodic_curve.h"
 
 namespace airshape::geometry {
 
@@ -62,9 +64,9 @@ bool isSmoothlyClosed(const Geom_BSplineCurve& curve, double tolerance) {
   return start.Magnitude() > 0 && end.Magnitude() > 0 && start.Angle(end) < 0.0175;
 }
 
-bool atSeam(const Geom_BSplineCurve& curve, double t) {
-  const double span = curve.LastParameter() - curve.FirstParameter();
-  return t < curve.FirstParameter() + 1e-7 * span || t > curve.LastParameter() - 1e-7 * span;
+/// Whether the point at t is the seam point of a closed curve (within the crossing tolerance).
+bool atSeam(const Geom_BSplineCurve& curve, double t, double tolerance) {
+  return curve.Value(t).Distance(curve.StartPoint()) <= tolerance;
 }
 
 /// One family of the network (profiles or guides) with its crossing parameters:
@@ -74,6 +76,7 @@ struct Family {
   Eigen::MatrixXd own;
   bool periodic = false;
   bool closedWithCorner = false;
+  double tolerance = 0.0;
 };
 
 /// Reverses a curve (keeping its parameter range) and maps its crossing parameters along.
@@ -85,10 +88,25 @@ void reverseCurve(Family& family, Eigen::Index c) {
 
 /// For periodic curves a crossing at the end of the period is the one at its start.
 void wrapSeams(Family& family) {
-  for (Eigen::Index c = 0; c < family.own.rows(); ++c)
+  for (Eigen::Index c = 0; c < family.own.rows(); ++c) {
+    const Geom_BSplineCurve& curve = *family.curves[static_cast<std::size_t>(c)];
+    const double last = curve.LastParameter(), span = last - curve.FirstParameter();
     for (Eigen::Index j = 0; j < family.own.cols(); ++j)
-      if (atSeam(*family.curves[static_cast<std::size_t>(c)], family.own(c, j)))
-        family.own(c, j) = family.curves[static_cast<std::size_t>(c)]->FirstParameter();
+      if (family.own(c, j) > last - 1e-9 * span) family.own(c, j) = curve.FirstParameter();
+  }
+}
+
+/// Periodic copies of smoothly closed curves, so that the seam is no special place.
+void makePeriodic(Family& family) {
+  for (Eigen::Index c = 0; c < family.own.rows(); ++c) {
+    Handle(Geom_BSplineCurve)& curve = family.curves[static_cast<std::size_t>(c)];
+    if (curve->IsPeriodic()) continue;
+    std::vector<double> parameters(family.own.row(c).data(), family.own.row(c).data() + 0);
+    for (Eigen::Index j = 0; j < family.own.cols(); ++j) parameters.push_back(family.own(c, j));
+    curve = periodicCopy(*curve, parameters);
+    for (Eigen::Index j = 0; j < family.own.cols(); ++j) family.own(c, j) = parameters[static_cast<std::size_t>(j)];
+  }
+  wrapSeams(family);
 }
 
 /// Crossing curves that meet every curve of the family where an earlier one does: repeats.
@@ -121,16 +139,17 @@ void dropRow(Eigen::MatrixXd& m, Eigen::Index j) {
   m = kept;
 }
 
-/// Which way a curve runs through its crossings, against the reference order: +1, -1, or
-/// 0 when it meets them in another order. Seam crossings of curves with a corner at the
+/// Which way a curve runs through its crossings, against the reference order: +1, -1,
+/// 0 when it meets them in another order, 2 when too few crossings tell. Seam crossings of curves with a corner at the
 /// seam are left out (they sit at both ends).
 int direction(const Family& family, Eigen::Index c, const std::vector<Eigen::Index>& reference) {
   std::vector<double> values;
   for (Eigen::Index j : reference) {
     const double t = family.own(c, j);
-    if (family.closedWithCorner && atSeam(*family.curves[static_cast<std::size_t>(c)], t)) continue;
+    if (family.closedWithCorner && atSeam(*family.curves[static_cast<std::size_t>(c)], t, family.tolerance)) continue;
     values.push_back(t);
   }
+  if (values.size() < 2) return 2;  // too few crossings away from the seam to tell
   int rising = 0, falling = 0;
   for (std::size_t i = 1; i < values.size(); ++i) (values[i] > values[i - 1] ? rising : falling)++;
   if (family.periodic && values.size() > 1) (values.front() > values.back() ? rising : falling)++;
@@ -138,6 +157,17 @@ int direction(const Family& family, Eigen::Index c, const std::vector<Eigen::Ind
   if (falling <= allowed) return 1;
   if (rising <= allowed) return -1;
   return 0;
+}
+
+/// Whether curve c runs against the (already oriented) curve r: compares the points at a
+/// quarter and three quarters of both. For curves whose crossings cannot tell, such as
+/// sharp-edged wing profiles crossed only at the trailing and leading edge.
+bool runsAgainst(const Geom_BSplineCurve& c, const Geom_BSplineCurve& r) {
+  auto at = [](const Geom_BSplineCurve& curve, double share) {
+    return curve.Value(curve.FirstParameter() + share * (curve.LastParameter() - curve.FirstParameter()));
+  };
+  const gp_Pnt a = at(c, 0.25), b = at(c, 0.75), ra = at(r, 0.25), rb = at(r, 0.75);
+  return a.Distance(rb) + b.Distance(ra) < a.Distance(ra) + b.Distance(rb);
 }
 
 /// Seam crossings of curves closed with a corner: the first crossing curve in file order
@@ -148,7 +178,7 @@ void assignSeamEnds(Family& family) {
     const auto& curve = *family.curves[static_cast<std::size_t>(c)];
     bool startTaken = false;
     for (Eigen::Index j = 0; j < family.own.cols(); ++j) {
-      if (!atSeam(curve, family.own(c, j))) continue;
+      if (!atSeam(curve, family.own(c, j), family.tolerance)) continue;
       family.own(c, j) = startTaken ? curve.LastParameter() : curve.FirstParameter();
       startTaken = true;
     }
@@ -206,15 +236,18 @@ CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
       network.guideParameters(k, l) = crossing.second;
     }
 
-  Family profileFamily{profiles, network.profileParameters};
-  Family guideFamily{guides, network.guideParameters.transpose()};
+  // A crossing counts as at the seam of a curve closed with a corner when it lies much closer
+  // to the seam point than crossing curves lie to each other.
+  const double seamTolerance = 0.01 * tolerance;
+  Family profileFamily{profiles, network.profileParameters, false, false, seamTolerance};
+  Family guideFamily{guides, network.guideParameters.transpose(), false, false, seamTolerance};
   for (Family* family : {&profileFamily, &guideFamily}) {
     const bool closed = std::all_of(family->curves.begin(), family->curves.end(),
                                     [&](const auto& c) { return isClosed(*c, tolerance); });
     family->periodic = closed && std::all_of(family->curves.begin(), family->curves.end(),
                                              [&](const auto& c) { return isSmoothlyClosed(*c, tolerance); });
     family->closedWithCorner = closed && !family->periodic;
-    if (family->periodic) wrapSeams(*family);
+    if (family->periodic) makePeriodic(*family);
   }
   // A closed network often repeats its seam curve at the end; the repeat adds nothing.
   for (auto [family, crossers] : {std::pair{&profileFamily, &guideFamily}, std::pair{&guideFamily, &profileFamily}}) {
@@ -230,10 +263,19 @@ CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
     throw Error(ErrorCode::InvalidArgument, "the network has fewer than two distinct profiles or guides");
 
   // Orientation: every curve must meet the crossing curves in the order the first one does.
-  for (auto [family, name] : {std::pair{&profileFamily, "profile"}, std::pair{&guideFamily, "guide"}}) {
+  for (auto [family, crossers, name] :
+       {std::tuple{&profileFamily, &guideFamily, "profile"}, std::tuple{&guideFamily, &profileFamily, "guide"}}) {
     const std::vector<Eigen::Index> reference = orderOf(family->own.row(0).transpose());
-    for (Eigen::Index c = 0; c < family->own.rows(); ++c) {
-      const int sense = direction(*family, c, reference);
+    const std::vector<Eigen::Index> alongCrosser = orderOf(crossers->own.row(0).transpose());
+    for (std::size_t position = 0; position < alongCrosser.size(); ++position) {
+      const Eigen::Index c = alongCrosser[position];
+      int sense = direction(*family, c, reference);
+      if (sense == 2) {  // decided by the neighbour along the first crossing curve
+        const bool against =
+            position > 0 && runsAgainst(*family->curves[static_cast<std::size_t>(c)],
+                                        *family->curves[static_cast<std::size_t>(alongCrosser[position - 1])]);
+        sense = against ? -1 : 1;
+      }
       if (sense == 0)
         throw Error(ErrorCode::InvalidArgument, std::string(name) + " " + std::to_string(c + 1) + " meets the " +
                                                     (family == &profileFamily ? "guides" : "profiles") +

@@ -43,15 +43,16 @@ std::vector<double> sites(std::vector<double> targets, bool closed) {
 }  // namespace
 
 GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
-                                 const std::vector<Handle(Geom_BSplineCurve)>& guides, double tolerance) {
+                                 const std::vector<Handle(Geom_BSplineCurve)>& guides,
+                                 const GordonTolerances& tolerances) {
   GordonSurface result;
   auto start = Clock::now();
-  const CurveNetwork network = buildCurveNetwork(profiles, guides, tolerance);
+  const CurveNetwork network = buildCurveNetwork(profiles, guides, tolerances.crossing);
   result.timings.intersection = secondsSince(start);
 
   start = Clock::now();
-  const ReparametrisedFamily f = reparametrise(profileFamily(network), 0.1 * tolerance);
-  const ReparametrisedFamily g = reparametrise(guideFamily(network), 0.1 * tolerance);
+  const ReparametrisedFamily f = reparametrise(profileFamily(network), tolerances.approximation);
+  const ReparametrisedFamily g = reparametrise(guideFamily(network), tolerances.approximation);
   result.timings.reparametrisation = secondsSince(start);
 
   start = Clock::now();

@@ -15,29 +15,33 @@ namespace {
 
 constexpr int kMaxPoles = 1500;
 
-/// σ: a scalar B-spline from target parameters to a curve's own parameters.
+/// σ: a scalar B-spline from target parameters to a curve's own parameters. For a closed
+/// curve of the given period it is σ(s) = values[0] + period·s + δ(s) with δ periodic, so
+/// that f∘σ is as smooth across the seam as f is.
 class ParameterMap {
  public:
-  ParameterMap(const std::vector<double>& targets, const std::vector<double>& values, int curveIndex) {
+  ParameterMap(const std::vector<double>& targets, const std::vector<double>& values, int curveIndex, double period)
+      : start_(values.front()), period_(period) {
     for (std::size_t i = 1; i < values.size(); ++i)
       if (!(values[i] > values[i - 1]))
         throw Error(ErrorCode::InvalidArgument, "curve " + std::to_string(curveIndex + 1) +
                                                     ": its crossings are not in increasing order, so no "
                                                     "reparametrisation maps onto them");
     std::vector<gp_Pnt> points;
-    for (double v : values) points.emplace_back(v, 0.0, 0.0);
-    map_ = interpolateCurve(points, targets, 3);
-    if (!isIncreasing()) map_ = interpolateCurve(points, targets, 1);  // piecewise linear is monotone
+    for (std::size_t i = 0; i < values.size(); ++i) points.emplace_back(values[i] - linear(targets[i]), 0.0, 0.0);
+    const bool closed = period_ > 0.0;
+    map_ = interpolateCurve(points, targets, 3, closed);
+    if (!isIncreasing()) map_ = interpolateCurve(points, targets, 1, closed);  // piecewise linear is monotone
     if (!isIncreasing())
       throw Error(ErrorCode::InvalidArgument,
                   "curve " + std::to_string(curveIndex + 1) + ": the reparametrisation is not strictly increasing");
   }
 
-  double operator()(double s) const { return map_->Value(s).X(); }
+  double operator()(double s) const { return linear(s) + map_->Value(s).X(); }
 
   /// The target parameter that maps onto `value` (bisection; σ is increasing).
   double inverse(double value) const {
-    double low = map_->FirstParameter(), high = map_->LastParameter();
+    double low = 0.0, high = 1.0;
     for (int i = 0; i < 80; ++i) {
       const double middle = 0.5 * (low + high);
       ((*this)(middle) < value ? low : high) = middle;
@@ -48,9 +52,9 @@ class ParameterMap {
  private:
   bool isIncreasing() const {
     constexpr int kChecks = 400;
-    double previous = (*this)(map_->FirstParameter());
+    double previous = (*this)(0.0);
     for (int i = 1; i <= kChecks; ++i) {
-      const double s = map_->FirstParameter() + (map_->LastParameter() - map_->FirstParameter()) * i / kChecks;
+      const double s = static_cast<double>(i) / kChecks;
       const double value = (*this)(s);
       if (!(value > previous)) return false;
       previous = value;
@@ -58,7 +62,11 @@ class ParameterMap {
     return true;
   }
 
+  double linear(double s) const { return period_ > 0.0 ? start_ + period_ * s : 0.0; }
+
   Handle(Geom_BSplineCurve) map_;
+  double start_;
+  double period_;
 };
 
 /// One curve's crossings, unwrapped for closed curves so that they ascend from the first.
@@ -132,15 +140,17 @@ std::pair<Handle(Geom_BSplineCurve), double> approximate(const Geom_BSplineCurve
                                                          const std::vector<double>& targets,
                                                          const std::vector<double>& crossings, const KnotVector& space,
                                                          bool closed) {
-  const int poles = space.poleCount();
-  const int sampleCount = std::max(4 * poles, 200);
+  // Samples in every knot span, so that no control point goes without data.
+  constexpr int kSamplesPerSpan = 6;
   std::vector<double> parameters;
-  PoleMatrix points(sampleCount + (closed ? 0 : 1), 3);
-  for (int i = 0; i < sampleCount + (closed ? 0 : 1); ++i) {
-    const double s = static_cast<double>(i) / sampleCount;
-    parameters.push_back(s);
-    const gp_Pnt p = curve.Value(valueAt(curve, map(s), closed));
-    points.row(i) << p.X(), p.Y(), p.Z();
+  for (std::size_t i = 0; i + 1 < space.knots.size(); ++i)
+    for (int j = 0; j < kSamplesPerSpan; ++j)
+      parameters.push_back(space.knots[i] + (space.knots[i + 1] - space.knots[i]) * j / kSamplesPerSpan);
+  if (!closed) parameters.push_back(1.0);
+  PoleMatrix points(static_cast<Eigen::Index>(parameters.size()), 3);
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const gp_Pnt p = curve.Value(valueAt(curve, map(parameters[i]), closed));
+    points.row(static_cast<Eigen::Index>(i)) << p.X(), p.Y(), p.Z();
   }
   InterpolationConstraints constraints;
   constraints.parameters = targets;
@@ -151,8 +161,9 @@ std::pair<Handle(Geom_BSplineCurve), double> approximate(const Geom_BSplineCurve
   }
   Handle(Geom_BSplineCurve) result = makeCurve(space, approximatePoles(space, parameters, points, constraints));
   double deviation = 0.0;
-  for (int i = 0; i < 2 * sampleCount; ++i) {  // checked between the fitted samples too
-    const double s = (i + 0.5) / (2.0 * sampleCount);
+  const int checks = 2 * static_cast<int>(parameters.size());
+  for (int i = 0; i < checks; ++i) {  // checked between the fitted samples too
+    const double s = (i + 0.5) / checks;
     deviation = std::max(deviation, result->Value(s).Distance(curve.Value(valueAt(curve, map(s), closed))));
   }
   return {result, deviation};
@@ -165,19 +176,23 @@ ReparametrisedFamily reparametrise(const CurveFamily& family, double tolerance) 
   for (std::size_t c = 0; c < family.curves.size(); ++c)
     prepared.crossings.push_back(unwrapped(*family.curves[c], family.crossings[c], family.closed));
   prepared.targets = commonTargets(family, prepared.crossings);
-  int poles = static_cast<int>(prepared.targets.size()) + 4;
+  int poles = static_cast<int>(prepared.targets.size()) + 4;  // grown below until accurate enough
   for (std::size_t c = 0; c < family.curves.size(); ++c) {
     std::vector<double> targets = prepared.targets, values = prepared.crossings[c];
     if (family.closed) {  // σ also covers the rest of the period, back to the first crossing
       targets.push_back(1.0);
       values.push_back(values.front() + family.curves[c]->LastParameter() - family.curves[c]->FirstParameter());
     }
-    prepared.maps.emplace_back(targets, values, static_cast<int>(c));
+    const double period = family.closed ? family.curves[c]->LastParameter() - family.curves[c]->FirstParameter() : 0.0;
+    prepared.maps.emplace_back(targets, values, static_cast<int>(c), period);
     for (double corner : cornersOf(*family.curves[c], values.front(), values.back()))
       prepared.cornerTargets.push_back(prepared.maps.back().inverse(corner));
-    poles = std::max(poles, family.curves[c]->NbPoles());
   }
+  // Corners of different curves at one place (a section line) become one knot.
   std::sort(prepared.cornerTargets.begin(), prepared.cornerTargets.end());
+  prepared.cornerTargets.erase(std::unique(prepared.cornerTargets.begin(), prepared.cornerTargets.end(),
+                                           [](double a, double b) { return b - a < 1e-6; }),
+                               prepared.cornerTargets.end());
 
   ReparametrisedFamily result;
   result.targets = prepared.targets;

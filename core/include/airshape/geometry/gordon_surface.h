@@ -15,6 +15,12 @@ struct GordonTimings {
   double combination = 0.0;
 };
 
+/// How closely the network must fit together and the surface follow it (model units).
+struct GordonTolerances {
+  double crossing = 1e-3;       ///< largest gap where a profile and a guide cross
+  double approximation = 1e-5;  ///< largest deviation of a reparametrised curve from its input
+};
+
 struct GordonSurface {
   Handle(Geom_BSplineSurface) surface;
   GordonTimings timings;
@@ -26,9 +32,9 @@ struct GordonSurface {
 /// (reparametrised) profiles, S_g skins the guides and T interpolates their crossing points,
 /// all made compatible and combined into one B-spline surface (u along the profiles, v
 /// along the guides). Closed profiles or guides give a periodic direction, smooth across
-/// its seam. `tolerance` (model units) bounds the crossing gaps and the reparametrisation
-/// error. Throws Error for a network that cannot be interpolated.
+/// its seam. Throws Error for a network that cannot be interpolated.
 GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
-                                 const std::vector<Handle(Geom_BSplineCurve)>& guides, double tolerance);
+                                 const std::vector<Handle(Geom_BSplineCurve)>& guides,
+                                 const GordonTolerances& tolerances);
 
 }  // namespace airshape::geometry
