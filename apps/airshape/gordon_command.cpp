@@ -3,6 +3,7 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Bnd_Box.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <TopoDS_Face.hxx>
 #include <nlohmann/json.hpp>
 
@@ -34,15 +35,28 @@ double boxDiagonal(const Curves& profiles, const Curves& guides) {
   return std::sqrt(box.SquareExtent());
 }
 
-/// Largest distance from sample points of the curves to the surface.
-double maxDistance(const Curves& curves, const Handle(Geom_BSplineSurface) & surface) {
-  const geometry::SurfaceProjector projector(surface);
+/// Largest distance from sample points of the curves to the surface. The fast projector
+/// (grid + Newton) gives an upper bound; where that bound exceeds `exactAbove`, OCCT's
+/// global projection decides, so a point near a tight fold is never measured against the
+/// wrong side of it.
+double maxDistance(const Curves& curves, const Handle(Geom_BSplineSurface) & surface, double exactAbove) {
+  const geometry::SurfaceProjector fast(surface);
+  double u1 = 0, u2 = 0, v1 = 0, v2 = 0;
+  surface->Bounds(u1, u2, v1, v2);
+  GeomAPI_ProjectPointOnSurf exact;
+  exact.Init(surface, u1, u2, v1, v2);
   double worst = 0.0;
   for (const auto& curve : curves)
-    for (int i = 0; i <= kSamplesPerCurve; ++i)
-      worst = std::max(worst, projector.distance(curve->Value(curve->FirstParameter() +
-                                                              (curve->LastParameter() - curve->FirstParameter()) * i /
-                                                                  kSamplesPerCurve)));
+    for (int i = 0; i <= kSamplesPerCurve; ++i) {
+      const gp_Pnt point = curve->Value(curve->FirstParameter() +
+                                        (curve->LastParameter() - curve->FirstParameter()) * i / kSamplesPerCurve);
+      double distance = fast.distance(point);
+      if (distance > exactAbove) {
+        exact.Perform(point);
+        if (exact.NbPoints() > 0) distance = std::min(distance, exact.LowerDistance());
+      }
+      worst = std::max(worst, distance);
+    }
   return worst;
 }
 
@@ -87,8 +101,8 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
                            {"poles_v", surface->NbVPoles()},
                            {"seconds", seconds},
                            {"bbox_diagonal", diagonal},
-                           {"max_profile_distance", maxDistance(profiles, surface)},
-                           {"max_guide_distance", maxDistance(guides, surface)},
+                           {"max_profile_distance", maxDistance(profiles, surface, 1e-5 * diagonal)},
+                           {"max_guide_distance", maxDistance(guides, surface, 1e-5 * diagonal)},
                            {"max_intersection_distance", gordon.maxIntersectionGap},
                            {"timings",
                             {{"intersection", gordon.timings.intersection},

@@ -118,28 +118,42 @@ struct Prepared {
   std::vector<std::vector<double>> crossings;
   std::vector<double> targets;
   std::vector<double> cornerTargets;
+  std::vector<double> featureKnots;  ///< knots added where curves needed them
 };
 
-KnotVector spaceFor(int poles, const std::vector<double>& corners, bool closed) {
-  KnotVector space = closed ? periodicUniformKnots(0.0, 1.0, poles, 3) : uniformKnots(0.0, 1.0, poles, 3);
-  for (double corner : corners) {
-    auto position = std::lower_bound(space.knots.begin(), space.knots.end(), corner);
-    const auto index = position - space.knots.begin();
-    if (position != space.knots.end() && std::abs(*position - corner) < 1e-9) {
-      space.multiplicities[static_cast<std::size_t>(index)] = 3;
-    } else {
-      space.knots.insert(position, corner);
-      space.multiplicities.insert(space.multiplicities.begin() + index, 3);
-    }
+/// Adds a knot of at least the given multiplicity (an existing knot within 1e-9 is raised).
+void addKnot(KnotVector& space, double knot, int multiplicity) {
+  auto position = std::lower_bound(space.knots.begin(), space.knots.end(), knot - 1e-9);
+  const auto index = static_cast<std::size_t>(position - space.knots.begin());
+  if (position != space.knots.end() && std::abs(*position - knot) < 1e-9) {
+    space.multiplicities[index] = std::max(space.multiplicities[index], multiplicity);
+  } else {
+    space.knots.insert(position, knot);
+    space.multiplicities.insert(space.multiplicities.begin() + static_cast<long>(index), multiplicity);
   }
+}
+
+/// Uniform knots for `poles` control points, plus the corners (triple knots) and features.
+KnotVector spaceFor(int poles, const Prepared& prepared, bool closed) {
+  KnotVector space = closed ? periodicUniformKnots(0.0, 1.0, poles, 3) : uniformKnots(0.0, 1.0, poles, 3);
+  for (double feature : prepared.featureKnots)
+    if (feature > space.first() + 1e-9 && feature < space.last() - 1e-9) addKnot(space, feature, 1);
+  for (double corner : prepared.cornerTargets) addKnot(space, corner, 3);
   return space;
 }
 
-/// Approximates f∘σ for one curve in `space`; returns the curve and its sampled deviation.
-std::pair<Handle(Geom_BSplineCurve), double> approximate(const Geom_BSplineCurve& curve, const ParameterMap& map,
-                                                         const std::vector<double>& targets,
-                                                         const std::vector<double>& crossings, const KnotVector& space,
-                                                         bool closed) {
+/// One curve approximated in a space: the curve, its largest sampled deviation from f∘σ,
+/// and the parameters where it deviates more than the tolerance.
+struct Approximation {
+  Handle(Geom_BSplineCurve) curve;
+  double deviation = 0.0;
+  std::vector<double> misses;
+};
+
+/// Approximates f∘σ for one curve in `space`.
+Approximation approximate(const Geom_BSplineCurve& curve, const ParameterMap& map, const std::vector<double>& targets,
+                          const std::vector<double>& crossings, const KnotVector& space, bool closed,
+                          double tolerance) {
   // Samples in every knot span, so that no control point goes without data.
   constexpr int kSamplesPerSpan = 6;
   std::vector<double> parameters;
@@ -159,14 +173,16 @@ std::pair<Handle(Geom_BSplineCurve), double> approximate(const Geom_BSplineCurve
     const gp_Pnt p = curve.Value(valueAt(curve, crossings[i], closed));
     constraints.points.row(static_cast<Eigen::Index>(i)) << p.X(), p.Y(), p.Z();
   }
-  Handle(Geom_BSplineCurve) result = makeCurve(space, approximatePoles(space, parameters, points, constraints));
-  double deviation = 0.0;
-  const int checks = 2 * static_cast<int>(parameters.size());
-  for (int i = 0; i < checks; ++i) {  // checked between the fitted samples too
-    const double s = (i + 0.5) / checks;
-    deviation = std::max(deviation, result->Value(s).Distance(curve.Value(valueAt(curve, map(s), closed))));
+  Approximation result;
+  result.curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+  // Checked halfway between the fitted samples, where an approximation strays most.
+  for (std::size_t i = 0; i + 1 < parameters.size(); ++i) {
+    const double s = 0.5 * (parameters[i] + parameters[i + 1]);
+    const double d = result.curve->Value(s).Distance(curve.Value(valueAt(curve, map(s), closed)));
+    result.deviation = std::max(result.deviation, d);
+    if (d > tolerance) result.misses.push_back(s);
   }
-  return {result, deviation};
+  return result;
 }
 
 }  // namespace
@@ -176,7 +192,6 @@ ReparametrisedFamily reparametrise(const CurveFamily& family, double tolerance) 
   for (std::size_t c = 0; c < family.curves.size(); ++c)
     prepared.crossings.push_back(unwrapped(*family.curves[c], family.crossings[c], family.closed));
   prepared.targets = commonTargets(family, prepared.crossings);
-  int poles = static_cast<int>(prepared.targets.size()) + 4;  // grown below until accurate enough
   for (std::size_t c = 0; c < family.curves.size(); ++c) {
     std::vector<double> targets = prepared.targets, values = prepared.crossings[c];
     if (family.closed) {  // σ also covers the rest of the period, back to the first crossing
@@ -196,18 +211,31 @@ ReparametrisedFamily reparametrise(const CurveFamily& family, double tolerance) 
 
   ReparametrisedFamily result;
   result.targets = prepared.targets;
-  for (;;) {
-    const KnotVector space = spaceFor(poles, prepared.cornerTargets, family.closed);
+  // Start with evenly spread knots, then halve every knot span where some curve still misses
+  // f∘σ: knots go where the curves need them (clustered knots, tight bends), nowhere else.
+  const int poles = static_cast<int>(prepared.targets.size()) + 12;
+  for (int round = 0;; ++round) {
+    const KnotVector space = spaceFor(poles, prepared, family.closed);
     result.curves.clear();
     result.maxDeviation = 0.0;
+    std::vector<double> splits;
     for (std::size_t c = 0; c < family.curves.size(); ++c) {
-      auto [curve, deviation] =
-          approximate(*family.curves[c], prepared.maps[c], prepared.targets, family.crossings[c], space, family.closed);
-      result.curves.push_back(curve);
-      result.maxDeviation = std::max(result.maxDeviation, deviation);
+      Approximation a = approximate(*family.curves[c], prepared.maps[c], prepared.targets, family.crossings[c], space,
+                                    family.closed, tolerance);
+      result.curves.push_back(a.curve);
+      result.maxDeviation = std::max(result.maxDeviation, a.deviation);
+      for (double s : a.misses) {
+        const auto upper = std::upper_bound(space.knots.begin(), space.knots.end(), s);
+        if (upper == space.knots.begin() || upper == space.knots.end()) continue;
+        splits.push_back(0.5 * (*(upper - 1) + *upper));
+      }
     }
-    if (result.maxDeviation <= tolerance || poles >= kMaxPoles) break;
-    poles = std::min(kMaxPoles, poles * 3 / 2 + 1);
+    if (splits.empty() || space.poleCount() >= kMaxPoles) break;
+    prepared.featureKnots.insert(prepared.featureKnots.end(), splits.begin(), splits.end());
+    std::sort(prepared.featureKnots.begin(), prepared.featureKnots.end());
+    prepared.featureKnots.erase(std::unique(prepared.featureKnots.begin(), prepared.featureKnots.end(),
+                                            [](double x, double y) { return y - x < 1e-12; }),
+                                prepared.featureKnots.end());
   }
   return result;
 }
