@@ -35,30 +35,43 @@ double boxDiagonal(const Curves& profiles, const Curves& guides) {
   return std::sqrt(box.SquareExtent());
 }
 
-/// Largest distance from sample points of the curves to the surface. The fast projector
-/// (grid + Newton) gives an upper bound; where that bound exceeds `exactAbove`, OCCT's
-/// global projection decides, so a point near a tight fold is never measured against the
-/// wrong side of it.
-double maxDistance(const Curves& curves, const Handle(Geom_BSplineSurface) & surface, double exactAbove) {
-  const geometry::SurfaceProjector fast(surface);
-  double u1 = 0, u2 = 0, v1 = 0, v2 = 0;
-  surface->Bounds(u1, u2, v1, v2);
-  GeomAPI_ProjectPointOnSurf exact;
-  exact.Init(surface, u1, u2, v1, v2);
-  double worst = 0.0;
-  for (const auto& curve : curves)
-    for (int i = 0; i <= kSamplesPerCurve; ++i) {
-      const gp_Pnt point = curve->Value(curve->FirstParameter() +
-                                        (curve->LastParameter() - curve->FirstParameter()) * i / kSamplesPerCurve);
-      double distance = fast.distance(point);
-      if (distance > exactAbove) {
-        exact.Perform(point);
-        if (exact.NbPoints() > 0) distance = std::min(distance, exact.LowerDistance());
-      }
-      worst = std::max(worst, distance);
+/// Distances from points to a surface. A fast projector (grid + Newton) gives an upper
+/// bound; where that exceeds `exactAbove`, OCCT's global projection decides, so that a
+/// point near a tight fold is never measured against the wrong side of it.
+class DistanceToSurface {
+ public:
+  DistanceToSurface(const Handle(Geom_BSplineSurface) & surface, double exactAbove)
+      : fast_(surface), exactAbove_(exactAbove) {
+    double u1 = 0, u2 = 0, v1 = 0, v2 = 0;
+    surface->Bounds(u1, u2, v1, v2);
+    exact_.Init(surface, u1, u2, v1, v2);
+  }
+
+  double operator()(const gp_Pnt& point) {
+    double distance = fast_.distance(point);
+    if (distance > exactAbove_) {
+      exact_.Perform(point);
+      if (exact_.NbPoints() > 0) distance = std::min(distance, exact_.LowerDistance());
     }
-  return worst;
-}
+    return distance;
+  }
+
+  /// The largest distance of sample points of the curves.
+  double maxOver(const Curves& curves) {
+    double worst = 0.0;
+    for (const auto& curve : curves)
+      for (int i = 0; i <= kSamplesPerCurve; ++i)
+        worst = std::max(
+            worst, (*this)(curve->Value(curve->FirstParameter() +
+                                        (curve->LastParameter() - curve->FirstParameter()) * i / kSamplesPerCurve)));
+    return worst;
+  }
+
+ private:
+  geometry::SurfaceProjector fast_;
+  GeomAPI_ProjectPointOnSurf exact_;
+  double exactAbove_;
+};
 
 }  // namespace
 
@@ -95,15 +108,21 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
   geometry::writeBrep(BRepBuilderAPI_MakeFace(gordon.surface, 1e-7).Face(), output);
 
   const auto& surface = gordon.surface;
+  DistanceToSurface distance(surface, 1e-5 * diagonal);
+  double crossingDistance = 0.0;
+  for (const gp_Pnt& crossing : gordon.crossings) crossingDistance = std::max(crossingDistance, distance(crossing));
   nlohmann::json report = {{"degree_u", surface->UDegree()},
                            {"degree_v", surface->VDegree()},
                            {"poles_u", surface->NbUPoles()},
                            {"poles_v", surface->NbVPoles()},
+                           {"periodic_u", surface->IsUPeriodic()},
+                           {"periodic_v", surface->IsVPeriodic()},
                            {"seconds", seconds},
                            {"bbox_diagonal", diagonal},
-                           {"max_profile_distance", maxDistance(profiles, surface, 1e-5 * diagonal)},
-                           {"max_guide_distance", maxDistance(guides, surface, 1e-5 * diagonal)},
-                           {"max_intersection_distance", gordon.maxIntersectionGap},
+                           {"max_profile_distance", distance.maxOver(profiles)},
+                           {"max_guide_distance", distance.maxOver(guides)},
+                           {"max_intersection_distance", crossingDistance},
+                           {"max_crossing_gap", gordon.maxCrossingGap},
                            {"timings",
                             {{"intersection", gordon.timings.intersection},
                              {"reparametrisation", gordon.timings.reparametrisation},

@@ -48,6 +48,13 @@ GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& p
   GordonSurface result;
   auto start = Clock::now();
   const CurveNetwork network = buildCurveNetwork(profiles, guides, tolerances.crossing);
+  for (Eigen::Index k = 0; k < network.profileParameters.rows(); ++k)
+    for (Eigen::Index l = 0; l < network.profileParameters.cols(); ++l) {
+      const gp_Pnt onProfile = network.profiles[static_cast<std::size_t>(k)]->Value(network.profileParameters(k, l));
+      const gp_Pnt onGuide = network.guides[static_cast<std::size_t>(l)]->Value(network.guideParameters(k, l));
+      result.crossings.emplace_back(0.5 * (onProfile.XYZ() + onGuide.XYZ()));
+      result.maxCrossingGap = std::max(result.maxCrossingGap, onProfile.Distance(onGuide));
+    }
   result.timings.intersection = secondsSince(start);
 
   start = Clock::now();
@@ -67,7 +74,6 @@ GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& p
     for (std::size_t l = 0; l < g.curves.size(); ++l) {
       const gp_Pnt onProfile = f.curves[k]->Value(f.targets[l]);
       const gp_Pnt onGuide = g.curves[l]->Value(g.targets[k]);
-      result.maxIntersectionGap = std::max(result.maxIntersectionGap, onProfile.Distance(onGuide));
       crossings[k].push_back(gp_Pnt(0.5 * (onProfile.XYZ() + onGuide.XYZ())));
     }
   Handle(Geom_BSplineSurface) tensor = interpolateGrid(crossings, uSites, uSpace, vSites, vSpace);

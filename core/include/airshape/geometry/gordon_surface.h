@@ -4,6 +4,7 @@
 
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <gp_Pnt.hxx>
 
 namespace airshape::geometry {
 
@@ -24,8 +25,10 @@ struct GordonTolerances {
 struct GordonSurface {
   Handle(Geom_BSplineSurface) surface;
   GordonTimings timings;
-  /// Largest distance between a profile/guide crossing point and the other curve.
-  double maxIntersectionGap = 0.0;
+  /// Where each profile crosses each guide: the midpoint of the two curves' closest points.
+  std::vector<gp_Pnt> crossings;
+  /// The largest distance between a profile and a guide where they cross (the input's own gap).
+  double maxCrossingGap = 0.0;
 };
 
 /// The Gordon surface interpolating a curve network: S = S_f + S_g − T, where S_f skins the

@@ -1,0 +1,42 @@
+"""`airshape gordon` on every curve network of ../shared/data/curve-networks."""
+import glob
+import json
+import os
+
+import pytest
+
+from conftest import SHARED, airshape, shared_path
+
+NETWORKS = sorted(os.path.dirname(p) for p in glob.glob(os.path.join(SHARED, "data", "curve-networks", "*", "profiles.brep")))
+CLOSED = {"fuselage1", "fuselage2", "full_nacelle", "helibody"}  # profiles all round: no seam kink allowed
+
+
+@pytest.mark.parametrize("network", NETWORKS or ["absent"], ids=lambda p: os.path.basename(p))
+def test_network_lies_on_its_gordon_surface(tmp_path, network):
+    shared_path("data", "curve-networks")
+    out = tmp_path / "surface.brep"
+    result = airshape("gordon", os.path.join(network, "profiles.brep"), os.path.join(network, "guides.brep"), "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    report = json.loads(result.stdout)
+    diagonal = report["bbox_diagonal"]
+    assert report["max_profile_distance"] <= 1e-4 * diagonal, report
+    assert report["max_guide_distance"] <= 1e-4 * diagonal, report
+    assert report["max_intersection_distance"] <= 1e-6 * diagonal, report
+    assert report["degree_u"] >= 1 and report["poles_u"] > report["degree_u"]
+    assert out.exists() and out.stat().st_size > 0
+    if os.path.basename(network) in CLOSED:
+        assert report["periodic_u"] or report["periodic_v"], "a closed network gives a periodic, seamless surface"
+
+
+def test_bad_input_is_one_line_and_exit_2(tmp_path):
+    not_brep = tmp_path / "text.brep"
+    not_brep.write_text("hello")
+    for arguments in (["missing.brep", "missing.brep", "-o", str(tmp_path / "o.brep")],
+                      [str(not_brep), str(not_brep), "-o", str(tmp_path / "o.brep")],
+                      ["only-one.brep"]):
+        result = airshape("gordon", *arguments)
+        assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    profiles = shared_path("data", "curve-networks", "wing2", "profiles.brep")
+    result = airshape("gordon", profiles, profiles, "-o", str(tmp_path / "o.brep"))
+    assert result.returncode == 2 and "misses" in result.stderr, result.stderr
+    assert not (tmp_path / "o.brep").exists()

@@ -1,0 +1,134 @@
+// Curve interpolation, approximation and compatibility meet their constraints.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "airshape/error.h"
+#include "airshape/geometry/compatibility.h"
+#include "airshape/geometry/curve_approximation.h"
+#include "airshape/geometry/curve_interpolation.h"
+
+namespace airshape::geometry {
+namespace {
+
+std::vector<gp_Pnt> wavyPoints(int count, bool closed) {
+  std::vector<gp_Pnt> points;
+  for (int i = 0; i < count; ++i) {
+    const double a = 2.0 * M_PI * i / (closed ? count - 1 : count);
+    points.emplace_back(std::cos(a) * (1.0 + 0.2 * (i % 3)), std::sin(a), 0.3 * std::sin(3 * a));
+  }
+  if (closed) points.back() = points.front();
+  return points;
+}
+
+double maxMiss(const Geom_BSplineCurve& curve, const std::vector<gp_Pnt>& points,
+               const std::vector<double>& parameters) {
+  double miss = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) miss = std::max(miss, curve.Value(parameters[i]).Distance(points[i]));
+  return miss;
+}
+
+TEST(Interpolation, OpenCurvesPassThroughTheirPoints) {
+  const auto points = wavyPoints(12, false);
+  for (double exponent : {1.0, 0.5}) {
+    const auto parameters = chordParameters(points, exponent);
+    for (int degree : {1, 2, 3, 5}) {
+      const auto curve = interpolateCurve(points, parameters, degree);
+      EXPECT_EQ(curve->Degree(), degree);
+      EXPECT_LT(maxMiss(*curve, points, parameters), 1e-10);
+    }
+  }
+  // Two points allow degree 1 only.
+  const std::vector<gp_Pnt> two = {gp_Pnt(0, 0, 0), gp_Pnt(1, 2, 3)};
+  EXPECT_EQ(interpolateCurve(two, {0.0, 1.0}, 3)->Degree(), 1);
+}
+
+TEST(Interpolation, ClosedCurvesArePeriodicAndSmoothAcrossTheSeam) {
+  const auto points = wavyPoints(15, true);
+  const auto parameters = chordParameters(points, 0.5);
+  for (int degree : {2, 3, 4}) {  // even degrees use the shifting method
+    const auto curve = interpolateCurve(points, parameters, degree, true);
+    EXPECT_TRUE(curve->IsPeriodic());
+    EXPECT_LT(maxMiss(*curve, points, parameters), 1e-10) << "degree " << degree;
+    const double seam = curve->FirstParameter(), end = curve->LastParameter();
+    for (int order = 1; order < degree; ++order)
+      EXPECT_LT((curve->DN(seam, order) - curve->DN(end, order)).Magnitude(),
+                1e-8 * (1 + curve->DN(seam, order).Magnitude()));
+  }
+}
+
+TEST(Interpolation, KinksBecomeCorners) {
+  std::vector<gp_Pnt> points = {gp_Pnt(0, 0, 0),   gp_Pnt(1, 0.2, 0), gp_Pnt(2, 0, 0),
+                                gp_Pnt(2.2, 1, 0), gp_Pnt(2, 2, 0),   gp_Pnt(1.5, 3, 0)};
+  const auto parameters = chordParameters(points);
+  const auto curve = interpolateCurve(points, parameters, 3, false, {2});
+  EXPECT_LT(maxMiss(*curve, points, parameters), 1e-10);
+  const double corner = parameters[2];
+  const gp_Vec before = curve->DN(corner - 1e-9, 1), after = curve->DN(corner + 1e-9, 1);
+  EXPECT_GT(before.Angle(after), 0.5) << "the curve turns sharply at the kink";
+}
+
+TEST(Interpolation, BadInputIsAnError) {
+  EXPECT_THROW(interpolateCurve({gp_Pnt(0, 0, 0)}, {0.0}), Error);
+  EXPECT_THROW(interpolateCurve({gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)}, {0.0, 0.0}), Error);
+  EXPECT_THROW(chordParameters({gp_Pnt(1, 1, 1), gp_Pnt(1, 1, 1)}), Error);
+  EXPECT_THROW(interpolateCurve({gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(2, 1, 0)}, {0.0, 0.5, 1.0}, 3, true), Error);
+}
+
+TEST(Approximation, LeastSquaresMeetsItsInterpolationConstraints) {
+  std::vector<double> parameters;
+  PoleMatrix points(200, 3);
+  for (int i = 0; i < 200; ++i) {
+    const double t = i / 199.0;
+    parameters.push_back(t);
+    points.row(i) << t, std::sin(6 * t) + 0.01 * std::sin(90 * t), std::cos(4 * t);
+  }
+  InterpolationConstraints constraints;
+  constraints.parameters = {0.0, 0.37, 1.0};
+  constraints.points.resize(3, 3);
+  constraints.points << 0, 0.5, 1, 0.37, 2.0, 0, 1, -1, 0.5;  // deliberately off the data
+  for (bool periodic : {false, true}) {
+    const KnotVector space = periodic ? periodicUniformKnots(0, 1, 15, 3) : uniformKnots(0, 1, 15, 3);
+    InterpolationConstraints used = constraints;
+    if (periodic) {  // a periodic curve has one point at 0 and 1
+      used.parameters = {0.0, 0.37};
+      used.points = constraints.points.topRows(2);
+    }
+    const auto curve = makeCurve(space, approximatePoles(space, parameters, points, used));
+    for (std::size_t i = 0; i < used.parameters.size(); ++i) {
+      const gp_Pnt wanted(used.points(static_cast<Eigen::Index>(i), 0), used.points(static_cast<Eigen::Index>(i), 1),
+                          used.points(static_cast<Eigen::Index>(i), 2));
+      EXPECT_LT(curve->Value(used.parameters[i]).Distance(wanted), 1e-10);
+    }
+  }
+}
+
+TEST(Approximation, TooFewSamplesIsAnError) {
+  const KnotVector space = uniformKnots(0, 1, 10, 3);
+  PoleMatrix points(3, 3);
+  points.setZero();
+  EXPECT_THROW(approximatePoles(space, {0.0, 0.5, 1.0}, points), Error);
+}
+
+TEST(Compatibility, DegreeElevationAndKnotInsertionKeepTheGeometry) {
+  const auto points = wavyPoints(9, false);
+  const auto a = interpolateCurve(points, chordParameters(points), 2);
+  const auto b = interpolateCurve(points, chordParameters(points, 0.5), 3);
+  std::vector<Handle(Geom_BSplineCurve)> curves = {Handle(Geom_BSplineCurve)::DownCast(a->Copy()),
+                                                   Handle(Geom_BSplineCurve)::DownCast(b->Copy())};
+  makeCompatible(curves);
+  ASSERT_EQ(curves[0]->Degree(), curves[1]->Degree());
+  ASSERT_EQ(curves[0]->NbKnots(), curves[1]->NbKnots());
+  for (int i = 1; i <= curves[0]->NbKnots(); ++i) {
+    EXPECT_NEAR(curves[0]->Knot(i), curves[1]->Knot(i), 1e-14);
+    EXPECT_EQ(curves[0]->Multiplicity(i), curves[1]->Multiplicity(i));
+  }
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i / 100.0;
+    EXPECT_LT(curves[0]->Value(t).Distance(a->Value(t)), 1e-12);
+    EXPECT_LT(curves[1]->Value(t).Distance(b->Value(t)), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace airshape::geometry
