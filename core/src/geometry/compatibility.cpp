@@ -42,6 +42,30 @@ void requireSameRange(double first, double last, double otherFirst, double other
     throw Error(ErrorCode::InvalidArgument, "curves to be made compatible must share their parameter range");
 }
 
+/// Inserts into one direction of a surface every knot of `all` it lacks (or has too few
+/// times), in one call: one pass over the poles rather than one per knot.
+void insertMissing(Geom_BSplineSurface& surface, const KnotUnion& all, bool uDirection) {
+  std::vector<std::pair<double, int>> missing;
+  for (const auto& [value, multiplicity] : all.knots()) {
+    const int present = uDirection ? multiplicityAt(surface.UKnots(), surface.UMultiplicities(), value)
+                                   : multiplicityAt(surface.VKnots(), surface.VMultiplicities(), value);
+    if (present < multiplicity) missing.emplace_back(value, multiplicity - present);
+  }
+  if (missing.empty()) return;
+  std::sort(missing.begin(), missing.end());
+  TColStd_Array1OfReal knots(1, static_cast<int>(missing.size()));
+  TColStd_Array1OfInteger multiplicities(1, static_cast<int>(missing.size()));
+  for (std::size_t i = 0; i < missing.size(); ++i) {
+    knots(static_cast<int>(i) + 1) = missing[i].first;
+    multiplicities(static_cast<int>(i) + 1) = missing[i].second;
+  }
+  if (uDirection) {
+    surface.InsertUKnots(knots, multiplicities, kKnotTolerance, true);
+  } else {
+    surface.InsertVKnots(knots, multiplicities, kKnotTolerance, true);
+  }
+}
+
 }  // namespace
 
 void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
@@ -79,14 +103,8 @@ void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces) {
     for (int i = 1; i <= surface->NbVKnots(); ++i) vKnots.add(surface->VKnot(i), surface->VMultiplicity(i));
   }
   for (auto& surface : surfaces) {
-    for (const auto& [value, multiplicity] : uKnots.knots()) {
-      const int present = multiplicityAt(surface->UKnots(), surface->UMultiplicities(), value);
-      if (present < multiplicity) surface->InsertUKnot(value, multiplicity - present, kKnotTolerance, true);
-    }
-    for (const auto& [value, multiplicity] : vKnots.knots()) {
-      const int present = multiplicityAt(surface->VKnots(), surface->VMultiplicities(), value);
-      if (present < multiplicity) surface->InsertVKnot(value, multiplicity - present, kKnotTolerance, true);
-    }
+    insertMissing(*surface, uKnots, true);
+    insertMissing(*surface, vKnots, false);
   }
 }
 

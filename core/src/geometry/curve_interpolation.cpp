@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include <Eigen/LU>
+#include <Eigen/SparseLU>
 
 #include "airshape/error.h"
 
@@ -68,13 +68,18 @@ Handle(Geom_BSplineCurve) interpolateWithKinks(const std::vector<gp_Pnt>& points
 
 Eigen::MatrixXd interpolateColumns(const KnotVector& space, const std::vector<double>& parameters,
                                    const Eigen::MatrixXd& values) {
-  const Eigen::MatrixXd basis = basisMatrix(space, parameters);
+  // Banded (each row has degree + 1 non-zeros, wrapped for periodic spaces): solved sparse.
+  const Eigen::SparseMatrix<double> basis = sparseBasisMatrix(space, parameters);
   if (basis.rows() != basis.cols())
     throw Error(ErrorCode::InvalidArgument, std::to_string(basis.rows()) + " points cannot determine " +
                                                 std::to_string(basis.cols()) + " control points");
-  Eigen::FullPivLU<Eigen::MatrixXd> solver(basis);
-  if (!solver.isInvertible()) throw Error(ErrorCode::InvalidArgument, "the interpolation system is singular");
-  return solver.solve(values);
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+  solver.compute(basis);
+  if (solver.info() != Eigen::Success) throw Error(ErrorCode::InvalidArgument, "the interpolation system is singular");
+  Eigen::MatrixXd solution = solver.solve(values);
+  if (solver.info() != Eigen::Success || !solution.allFinite())
+    throw Error(ErrorCode::InvalidArgument, "the interpolation system is singular");
+  return solution;
 }
 
 PoleMatrix interpolatePoles(const KnotVector& space, const std::vector<double>& parameters, const PoleMatrix& points) {
