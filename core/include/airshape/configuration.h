@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "airshape/component_cache.h"
 #include "airshape/graph/component_graph.h"
 #include "airshape/problem.h"
 #include "airshape/uid/uid_registry.h"
@@ -49,6 +50,9 @@ class Configuration {
   /// are no components. Printed on stderr by the CLI when a file is opened.
   const Problems& warnings() const { return warnings_; }
 
+  /// Geometry built from this configuration, kept until the model changes.
+  ComponentCache& cache() const { return *cache_; }
+
   /// Writes the model's values into the document (only what differs from it).
   void writeModel();
   /// Writes the model into the document and saves it atomically to `path`.
@@ -64,6 +68,7 @@ class Configuration {
   graph::ComponentGraph components_;
   Problems schemaProblems_;
   Problems warnings_;
+  std::unique_ptr<ComponentCache> cache_ = std::make_unique<ComponentCache>();
 };
 
 }  // namespace airshape

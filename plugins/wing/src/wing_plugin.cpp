@@ -5,6 +5,7 @@
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
+#include "wing_geometry.h"
 
 namespace airshape::wing {
 
@@ -21,6 +22,20 @@ std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? 
 std::size_t sectionCount(const schema::WingType& wing) { return wing.sections ? wing.sections->section.size() : 0; }
 std::size_t componentSegmentCount(const schema::WingType& wing) {
   return wing.componentSegments ? wing.componentSegments->componentSegment.size() : 0;
+}
+
+Json asJson(const gp_Pnt& p) { return Json::array({p.X(), p.Y(), p.Z()}); }
+
+/// A point query: wing, segment (index or uID, in chain order), eta and xsi in [0, 1].
+template <class Point>
+query::Handler pointQuery(Point point) {
+  return [point](Configuration& c, const Json& q) -> Json {
+    const auto geometry = WingGeometry::of(c, selectWing(c, q));
+    std::vector<std::string> uids;
+    for (const auto& segment : geometry->segments()) uids.push_back(segment.uid);
+    const std::size_t segment = query::selectByIndexOrUid(q, "segment", uids, "segment");
+    return asJson(point(*geometry, segment, query::fractionArgument(q, "eta"), query::fractionArgument(q, "xsi")));
+  };
 }
 
 class WingPlugin final : public plugin::BasicPlugin {
@@ -43,12 +58,18 @@ class WingPlugin final : public plugin::BasicPlugin {
     registry.add(
         {"wing_symmetry", "", "wing -> \"none\", \"x-y\", \"x-z\" or \"y-z\" (inherited through parentUID)",
          [](Configuration& c, const Json& q) -> Json { return model::resolvedSymmetry(c, selectWing(c, q).uID); }});
+    registry.add(
+        {"wing_upper_point", "", "wing, segment, eta, xsi -> point on the upper skin",
+         pointQuery([](const WingGeometry& g, std::size_t s, double e, double x) { return g.upperPoint(s, e, x); })});
+    registry.add(
+        {"wing_lower_point", "", "wing, segment, eta, xsi -> point on the lower skin",
+         pointQuery([](const WingGeometry& g, std::size_t s, double e, double x) { return g.lowerPoint(s, e, x); })});
+    registry.add(
+        {"wing_chord_point", "", "wing, segment, eta, xsi -> point on the chord surface",
+         pointQuery([](const WingGeometry& g, std::size_t s, double e, double x) { return g.chordPoint(s, e, x); })});
     plugin::registerPendingOps(
         registry, "wing",
-        {{"wing_upper_point", "wing, segment, eta, xsi -> point on the upper skin"},
-         {"wing_lower_point", "wing, segment, eta, xsi -> point on the lower skin"},
-         {"wing_chord_point", "wing, segment, eta, xsi -> point on the chord surface"},
-         {"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
+        {{"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
          {"wing_volume", "wing -> volume"},
          {"wing_surface_area", "wing -> area of the whole loft"},
          {"wing_segment_volume", "wing, segment -> volume"},

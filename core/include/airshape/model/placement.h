@@ -1,0 +1,38 @@
+#pragma once
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::model {
+
+/// An affine map of 3-D points (CPACS transformations scale non-uniformly).
+using Transform = Eigen::Affine3d;
+
+/// The matrix of one <transformation>: T · Rx(a) · Ry(b) · Rz(c) · S, angles in degrees;
+/// a missing element is the identity, a missing coordinate of a present one is 0 (the
+/// convention the reference applies, even to scaling). Null gives the identity.
+Transform transformationMatrix(const schema::TransformationType* transformation);
+
+/// The component matrix C of a wing or fuselage: its own transformation, translated by its
+/// parent's origin (through the whole parentUID chain) unless its translation's refType is
+/// absGlobal. Rotation and scaling of the parent are not inherited.
+Transform componentTransform(const Configuration& configuration, const std::string& uid);
+
+/// The translation of each section (by uID) that positionings give: the toPoint of the
+/// first positioning that targets it, chained through fromSectionUID. Throws Error when a
+/// fromSectionUID names a section no positioning reaches, or when positionings loop.
+std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const schema::PositioningsType* positionings);
+
+/// Numbers of a CPACS vector text ("1;2.5;3"). Throws Error(InvalidModel) naming `xpath`.
+std::vector<double> parseVector(const std::string& text, const std::string& xpath);
+
+}  // namespace airshape::model

@@ -1,0 +1,132 @@
+#include "airshape/model/placement.h"
+
+#include <cmath>
+#include <functional>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/model/primary_model.h"
+
+namespace airshape::model {
+
+namespace {
+
+double degrees(double value) { return value * M_PI / 180.0; }
+
+double coordinate(const std::optional<double>& value) { return value.value_or(0.0); }
+
+/// The own transformation and parentUID of a wing or fuselage of any model.
+struct Placed {
+  const schema::TransformationType* transformation = nullptr;
+  std::string parentUid;
+};
+
+template <class Model>
+bool findIn(const Model& model, const std::string& uid, Placed& found) {
+  auto visit = [&](const auto& component) {
+    if (component.uID != uid) return false;
+    found.transformation = component.transformation.get();
+    found.parentUid = component.parentUID.value_or("");
+    return true;
+  };
+  if (model.wings)
+    for (const auto& wing : model.wings->wing)
+      if (visit(wing)) return true;
+  if (model.fuselages)
+    for (const auto& fuselage : model.fuselages->fuselage)
+      if (visit(fuselage)) return true;
+  return false;
+}
+
+bool findPlaced(const schema::CpacsType& cpacs, const std::string& uid, Placed& found) {
+  if (!cpacs.vehicles) return false;
+  if (cpacs.vehicles->aircraft)
+    for (const auto& model : cpacs.vehicles->aircraft->model)
+      if (findIn(model, uid, found)) return true;
+  if (cpacs.vehicles->rotorcraft)
+    for (const auto& model : cpacs.vehicles->rotorcraft->model)
+      if (findIn(model, uid, found)) return true;
+  return false;
+}
+
+}  // namespace
+
+Transform transformationMatrix(const schema::TransformationType* transformation) {
+  Transform result = Transform::Identity();
+  if (transformation == nullptr) return result;
+  if (const auto& t = transformation->translation)
+    result.translate(Eigen::Vector3d(coordinate(t->x), coordinate(t->y), coordinate(t->z)));
+  if (const auto& r = transformation->rotation) {
+    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->x)), Eigen::Vector3d::UnitX()));
+    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->y)), Eigen::Vector3d::UnitY()));
+    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->z)), Eigen::Vector3d::UnitZ()));
+  }
+  if (const auto& s = transformation->scaling)
+    result.scale(Eigen::Vector3d(coordinate(s->x), coordinate(s->y), coordinate(s->z)));
+  return result;
+}
+
+Transform componentTransform(const Configuration& configuration, const std::string& uid) {
+  Transform result = Transform::Identity();
+  std::string current = uid;
+  bool first = true;
+  // Walks up the parent chain: the component's own matrix, then its parents' translations.
+  for (std::size_t depth = 0; !current.empty() && depth < 64; ++depth) {
+    Placed placed;
+    if (!findPlaced(configuration.cpacs(), current, placed)) break;
+    const Transform own = transformationMatrix(placed.transformation);
+    if (first) {
+      result = own;
+      first = false;
+    } else {
+      result.pretranslate(own.translation());
+    }
+    const bool absGlobal = placed.transformation && placed.transformation->translation &&
+                           placed.transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
+    if (absGlobal) break;
+    current = placed.parentUid;
+  }
+  return result;
+}
+
+std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const schema::PositioningsType* positionings) {
+  std::unordered_map<std::string, Eigen::Vector3d> result;
+  if (positionings == nullptr) return result;
+  std::unordered_map<std::string, const schema::PositioningType*> byTarget;  // the first one wins
+  for (const auto& positioning : positionings->positioning) byTarget.emplace(positioning.toSectionUID, &positioning);
+
+  std::unordered_map<std::string, int> visiting;
+  std::function<Eigen::Vector3d(const std::string&)> toPoint = [&](const std::string& section) -> Eigen::Vector3d {
+    if (const auto done = result.find(section); done != result.end()) return done->second;
+    const auto entry = byTarget.find(section);
+    if (entry == byTarget.end())
+      throw Error(ErrorCode::InvalidModel, "fromSectionUID '" + section + "' names a section no positioning reaches");
+    if (visiting[section]++ > 0)
+      throw Error(ErrorCode::InvalidModel, "positionings loop through section '" + section + "'", {},
+                  entry->second->xpath);
+    const schema::PositioningType& p = *entry->second;
+    const std::string from = p.fromSectionUID.value_or("");
+    const Eigen::Vector3d origin = from.empty() ? Eigen::Vector3d::Zero() : toPoint(from);
+    const double sweep = degrees(p.sweepAngle), dihedral = degrees(p.dihedralAngle);
+    const Eigen::Vector3d step = p.length * Eigen::Vector3d(std::sin(sweep), std::cos(sweep) * std::cos(dihedral),
+                                                            std::cos(sweep) * std::sin(dihedral));
+    return result[section] = origin + step;
+  };
+  for (const auto& [section, positioning] : byTarget) {
+    try {
+      toPoint(section);
+    } catch (const Error& error) {
+      throw Error(error.code(), error.message(), {}, positioning->xpath);
+    }
+  }
+  return result;
+}
+
+std::vector<double> parseVector(const std::string& text, const std::string& xpath) {
+  std::vector<double> values;
+  if (schema::ParseError error = schema::DoubleVectorCodec::parse(text, values))
+    throw Error(ErrorCode::InvalidModel, *error, {}, xpath);
+  return values;
+}
+
+}  // namespace airshape::model

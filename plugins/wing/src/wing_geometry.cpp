@@ -1,0 +1,107 @@
+#include "wing_geometry.h"
+
+#include <unordered_map>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/model/segment_chain.h"
+
+namespace airshape::wing {
+
+namespace {
+
+gp_Pnt apply(const model::Transform& transform, const gp_Pnt& point) {
+  const Eigen::Vector3d p = transform * Eigen::Vector3d(point.X(), point.Y(), point.Z());
+  return gp_Pnt(p.x(), p.y(), p.z());
+}
+
+gp_Pnt lerp(const gp_Pnt& a, const gp_Pnt& b, double share) {
+  return gp_Pnt((1.0 - share) * a.XYZ() + share * b.XYZ());
+}
+
+/// The wing airfoils of the document by uID, built on demand.
+class AirfoilLibrary {
+ public:
+  explicit AirfoilLibrary(const schema::CpacsType& cpacs) {
+    if (cpacs.vehicles && cpacs.vehicles->profiles && cpacs.vehicles->profiles->wingAirfoils)
+      for (const auto& airfoil : cpacs.vehicles->profiles->wingAirfoils->wingAirfoil)
+        definitions_.emplace(airfoil.uID, &airfoil);
+  }
+
+  std::shared_ptr<const WingProfile> get(const std::string& uid, const std::string& xpath) {
+    if (const auto built = built_.find(uid); built != built_.end()) return built->second;
+    const auto definition = definitions_.find(uid);
+    if (definition == definitions_.end())
+      throw Error(ErrorCode::InvalidModel, "airfoilUID '" + uid + "' names no wing airfoil", {}, xpath);
+    return built_[uid] = std::make_shared<const WingProfile>(WingProfile::fromDefinition(*definition->second));
+  }
+
+ private:
+  std::unordered_map<std::string, const schema::ProfileGeometryType*> definitions_;
+  std::unordered_map<std::string, std::shared_ptr<const WingProfile>> built_;
+};
+
+}  // namespace
+
+gp_Pnt SegmentEnd::upper(double xsi) const { return apply(transform, profile->upper(xsi)); }
+gp_Pnt SegmentEnd::lower(double xsi) const { return apply(transform, profile->lower(xsi)); }
+gp_Pnt SegmentEnd::leadingEdge() const { return apply(transform, profile->leadingEdge()); }
+gp_Pnt SegmentEnd::trailingEdge() const { return apply(transform, profile->trailingEdge()); }
+
+std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& configuration, const schema::WingType& wing) {
+  return configuration.cache().obtain<WingGeometry>("wing-geometry:" + wing.uID, [&] {
+    auto geometry = std::make_shared<WingGeometry>();
+    AirfoilLibrary airfoils(configuration.cpacs());
+    const model::Transform component = model::componentTransform(configuration, wing.uID);
+    const auto positioning = model::positioningTranslations(wing.positionings.get());
+
+    std::unordered_map<std::string, SegmentEnd> ends;  // by element uID
+    if (wing.sections) {
+      for (const auto& section : wing.sections->section) {
+        model::Transform placed = component;
+        if (const auto shift = positioning.find(section.uID); shift != positioning.end())
+          placed.translate(shift->second);
+        placed = placed * model::transformationMatrix(section.transformation.get());
+        if (!section.elements) continue;
+        for (const auto& element : section.elements->element)
+          ends.emplace(element.uID,
+                       SegmentEnd{element.uID, airfoils.get(element.airfoilUID, element.xpath + "/airfoilUID"),
+                                  placed * model::transformationMatrix(element.transformation.get())});
+      }
+    }
+    if (!wing.segments) return std::shared_ptr<const WingGeometry>(geometry);
+    std::vector<model::SegmentEnds> chain;
+    for (const auto& segment : wing.segments->segment) chain.push_back({segment.fromElementUID, segment.toElementUID});
+    for (std::size_t index : model::chainOrder(chain)) {
+      const schema::WingSegmentType& segment = wing.segments->segment[index];
+      auto end = [&](const std::string& uid, const char* which) {
+        const auto found = ends.find(uid);
+        if (found == ends.end())
+          throw Error(ErrorCode::InvalidModel, std::string(which) + " '" + uid + "' names no element of this wing", {},
+                      segment.xpath + "/" + which);
+        return found->second;
+      };
+      geometry->segments_.push_back(
+          {segment.uID, end(segment.fromElementUID, "fromElementUID"), end(segment.toElementUID, "toElementUID")});
+    }
+    return std::shared_ptr<const WingGeometry>(geometry);
+  });
+}
+
+gp_Pnt WingGeometry::upperPoint(std::size_t segment, double eta, double xsi) const {
+  const WingSegment& s = segments_[segment];
+  return lerp(s.inner.upper(xsi), s.outer.upper(xsi), eta);
+}
+
+gp_Pnt WingGeometry::lowerPoint(std::size_t segment, double eta, double xsi) const {
+  const WingSegment& s = segments_[segment];
+  return lerp(s.inner.lower(xsi), s.outer.lower(xsi), eta);
+}
+
+gp_Pnt WingGeometry::chordPoint(std::size_t segment, double eta, double xsi) const {
+  const WingSegment& s = segments_[segment];
+  return lerp(lerp(s.inner.leadingEdge(), s.inner.trailingEdge(), xsi),
+              lerp(s.outer.leadingEdge(), s.outer.trailingEdge(), xsi), eta);
+}
+
+}  // namespace airshape::wing

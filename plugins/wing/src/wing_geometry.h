@@ -1,0 +1,54 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gp_Pnt.hxx>
+
+#include "airshape/model/placement.h"
+#include "wing_profile.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::wing {
+
+/// One end of a segment: its airfoil and the full transformation C · Pos · Sec · Elem that
+/// takes the airfoil to global coordinates.
+struct SegmentEnd {
+  std::string elementUid;
+  std::shared_ptr<const WingProfile> profile;
+  model::Transform transform;
+
+  gp_Pnt upper(double xsi) const;
+  gp_Pnt lower(double xsi) const;
+  gp_Pnt leadingEdge() const;
+  gp_Pnt trailingEdge() const;
+};
+
+struct WingSegment {
+  std::string uid;
+  SegmentEnd inner, outer;
+};
+
+/// The geometry of one wing that the point queries need: its segments in chain order,
+/// each with its two placed airfoils. The skins are ruled between them (docs/wing.md).
+class WingGeometry {
+ public:
+  /// Builds (or takes from the configuration's cache) the geometry of a wing. Throws Error
+  /// naming the CPACS path of what is missing or inconsistent.
+  static std::shared_ptr<const WingGeometry> of(const Configuration& configuration, const schema::WingType& wing);
+
+  const std::vector<WingSegment>& segments() const { return segments_; }
+
+  gp_Pnt upperPoint(std::size_t segment, double eta, double xsi) const;
+  gp_Pnt lowerPoint(std::size_t segment, double eta, double xsi) const;
+  gp_Pnt chordPoint(std::size_t segment, double eta, double xsi) const;
+
+ private:
+  std::vector<WingSegment> segments_;
+};
+
+}  // namespace airshape::wing

@@ -1,0 +1,173 @@
+#include "wing_profile.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gp_Vec.hxx>
+
+#include "airshape/error.h"
+#include "airshape/geometry/bspline_curve.h"
+#include "airshape/geometry/curve_interpolation.h"
+#include "airshape/model/placement.h"
+
+namespace airshape::wing {
+
+namespace {
+
+constexpr double kSamePoint = 1e-7;
+
+/// Where, between parameters a and b, the curve crosses the plane through `origin` with
+/// `normal`; nullopt when it does not cross strictly inside.
+std::optional<double> planeCrossing(const Geom_BSplineCurve& curve, double a, double b, const gp_Pnt& origin,
+                                    const gp_Vec& normal) {
+  auto side = [&](double t) { return gp_Vec(origin, curve.Value(t)).Dot(normal); };
+  double fa = side(a), fb = side(b);
+  if (!(fa * fb < 0.0)) return std::nullopt;
+  for (int i = 0; i < 200; ++i) {
+    const double m = 0.5 * (a + b), fm = side(m);
+    if ((fm < 0.0) == (fa < 0.0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+}  // namespace
+
+WingProfile WingProfile::fromDefinition(const schema::ProfileGeometryType& definition) {
+  if (definition.pointList) return fromPointList(*definition.pointList, definition.xpath + "/pointList");
+  if (definition.cst2D) return fromCst(*definition.cst2D, definition.xpath + "/cst2D");
+  throw Error(ErrorCode::InvalidModel, "wing airfoil '" + definition.uID + "' has neither pointList nor cst2D", {},
+              definition.xpath);
+}
+
+WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list, const std::string& xpath) {
+  const std::vector<double> x = model::parseVector(list.x, xpath + "/x"), y = model::parseVector(list.y, xpath + "/y"),
+                            z = model::parseVector(list.z, xpath + "/z");
+  if (x.size() != y.size() || x.size() != z.size())
+    throw Error(ErrorCode::InvalidModel, "x, y and z have different lengths", {}, xpath);
+  std::vector<gp_Pnt> points;
+  for (std::size_t i = 0; i < x.size(); ++i) points.emplace_back(x[i], y[i], z[i]);
+  if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
+
+  // Orientation: TE → lower side → LE → upper side → TE.
+  const auto byZ = [](const gp_Pnt& a, const gp_Pnt& b) { return a.Z() < b.Z(); };
+  const auto lowest = std::min_element(points.begin(), points.end(), byZ) - points.begin();
+  const auto highest = std::max_element(points.begin(), points.end(), byZ) - points.begin();
+  if (lowest > highest) std::reverse(points.begin(), points.end());
+
+  WingProfile profile;
+  const gp_Pnt first = points.front(), last = points.back();
+  profile.blunt_ = first.Distance(last) >= kSamePoint;
+
+  // The chord: the leading edge is the point farthest from the trailing-edge midpoint.
+  gp_Pnt middle((first.XYZ() + last.XYZ()) / 2.0);
+  std::size_t leIndex = 0;
+  double farthest = -1.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double d = points[i].Distance(middle);
+    if (d > farthest) {
+      farthest = d;
+      leIndex = i;
+    }
+  }
+  gp_Pnt le = points[leIndex];
+  le.SetY(0.0);
+  middle.SetY(0.0);
+  if (profile.blunt_) {
+    const gp_Vec chord(le, middle);
+    auto share = [&](const gp_Pnt& p) { return gp_Vec(le, p).Dot(chord) / chord.SquareMagnitude(); };
+    const double aft = std::min(share(first), share(last));
+    profile.trailingEdge_ = gp_Pnt(le.XYZ() + aft * chord.XYZ());
+  } else {
+    profile.trailingEdge_ = first;
+  }
+  profile.leadingEdge_ = le;
+
+  // The curve: consecutive duplicates dropped, cubic through centripetal parameters.
+  std::vector<gp_Pnt> kept;
+  std::size_t keptLe = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!kept.empty() && kept.back().Distance(points[i]) < kSamePoint) continue;
+    if (i == leIndex) keptLe = kept.size();
+    kept.push_back(points[i]);
+  }
+  const std::vector<double> parameters = geometry::chordParameters(kept, 0.5);
+  Handle(Geom_BSplineCurve) curve = geometry::interpolateCurve(kept, parameters, 3);
+  const double tLe = parameters[keptLe];
+  double lowerEnd = 0.0, upperEnd = 1.0;
+
+  // A skewed trailing edge: the side reaching further aft is cut at the plane through the
+  // TE normal to the chord, so that the TE stands square to it.
+  const gp_Vec chordDirection(profile.leadingEdge_, profile.trailingEdge_);
+  const bool sameChordwise =
+      std::abs(gp_Vec(profile.leadingEdge_, first).Dot(chordDirection) -
+               gp_Vec(profile.leadingEdge_, last).Dot(chordDirection)) < 1e-12 * chordDirection.SquareMagnitude();
+  if (profile.blunt_ && !sameChordwise) {
+    if (auto cut = planeCrossing(*curve, 0.0, tLe, profile.trailingEdge_, chordDirection)) lowerEnd = *cut;
+    if (auto cut = planeCrossing(*curve, tLe, 1.0, profile.trailingEdge_, chordDirection)) upperEnd = *cut;
+  }
+  profile.upper_ = [curve, tLe, upperEnd](double xsi) { return curve->Value(tLe + xsi * (upperEnd - tLe)); };
+  profile.lower_ = [curve, tLe, lowerEnd](double xsi) { return curve->Value(tLe + xsi * (lowerEnd - tLe)); };
+  return profile;
+}
+
+namespace {
+
+/// One side of a CST airfoil: z(x) = ±(x^N1 (1−x)^N2 · Σ B_i C(n,i) x^i (1−x)^(n−i) + x·t/2),
+/// evaluated exactly at x(xsi), whose form follows N1 and N2 so that xsi spreads points
+/// where the side bends most.
+class CstSide {
+ public:
+  CstSide(double n1, double n2, std::vector<double> coefficients, double thickness, double sign)
+      : n1_(n1), n2_(n2), b_(std::move(coefficients)), thickness_(thickness), sign_(sign) {}
+
+  gp_Pnt operator()(double xsi) const {
+    const double x = chordwise(xsi);
+    const double n = static_cast<double>(b_.size()) - 1.0;
+    double shape = 0.0;
+    for (std::size_t i = 0; i < b_.size(); ++i) {
+      const double k = static_cast<double>(i);
+      shape += b_[i] * std::tgamma(n + 1.0) / (std::tgamma(k + 1.0) * std::tgamma(n - k + 1.0)) * std::pow(x, k) *
+               std::pow(1.0 - x, n - k);
+    }
+    const double z = std::pow(x, n1_) * std::pow(1.0 - x, n2_) * shape + x * thickness_ / 2.0;
+    return gp_Pnt(x, 0.0, sign_ * z);
+  }
+
+ private:
+  double chordwise(double t) const {
+    if (n1_ >= 1.0 && n2_ >= 1.0) return t;
+    if (n1_ < 1.0 && n2_ >= 1.0) return t * t;
+    if (n1_ >= 1.0) return 2.0 * t - t * t;
+    return 3.0 * t * t - 2.0 * t * t * t;
+  }
+
+  double n1_, n2_;
+  std::vector<double> b_;
+  double thickness_;
+  double sign_;
+};
+
+}  // namespace
+
+WingProfile WingProfile::fromCst(const schema::Cst2DType& cst, const std::string& xpath) {
+  WingProfile profile;
+  const double thickness = cst.trailingEdgeThickness.value_or(0.0);
+  profile.blunt_ = thickness > 0.0;
+  profile.leadingEdge_ = gp_Pnt(0, 0, 0);
+  profile.trailingEdge_ = gp_Pnt(1, 0, 0);
+  profile.upper_ = CstSide(cst.upperN1, cst.upperN2, model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0);
+  profile.lower_ =
+      CstSide(cst.lowerN1, cst.lowerN2, model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0);
+  return profile;
+}
+
+gp_Pnt WingProfile::upper(double xsi) const { return upper_(xsi); }
+
+gp_Pnt WingProfile::lower(double xsi) const { return lower_(xsi); }
+
+}  // namespace airshape::wing

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <Geom_BSplineCurve.hxx>
+#include <gp_Pnt.hxx>
+
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape::wing {
+
+/// A wing airfoil in profile coordinates (x along the chord, z up, y ignored for the
+/// chord): one curve split at the leading edge into an upper side (LE → upper TE end) and
+/// a lower side (LE → lower TE end), plus the chord line. See docs/wing.md.
+class WingProfile {
+ public:
+  /// Builds a profile from its CPACS definition (point list or CST). Throws Error naming
+  /// the profile's CPACS path for a definition that gives no airfoil.
+  static WingProfile fromDefinition(const schema::ProfileGeometryType& definition);
+
+  /// The point at normalised parameter xsi in [0, 1] of the upper (lower) side: 0 is the
+  /// leading edge, 1 the upper (lower) end of the trailing edge.
+  gp_Pnt upper(double xsi) const;
+  gp_Pnt lower(double xsi) const;
+
+  const gp_Pnt& leadingEdge() const { return leadingEdge_; }
+  const gp_Pnt& trailingEdge() const { return trailingEdge_; }
+  bool bluntTrailingEdge() const { return blunt_; }
+
+ private:
+  static WingProfile fromPointList(const schema::CurvePointListXYZType& points, const std::string& xpath);
+  static WingProfile fromCst(const schema::Cst2DType& cst, const std::string& xpath);
+
+  // Each side as a function of xsi (0 at the LE).
+  std::function<gp_Pnt(double)> upper_, lower_;
+  gp_Pnt leadingEdge_, trailingEdge_;
+  bool blunt_ = false;
+};
+
+}  // namespace airshape::wing
