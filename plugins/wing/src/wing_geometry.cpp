@@ -23,9 +23,13 @@ gp_Pnt lerp(const gp_Pnt& a, const gp_Pnt& b, double share) {
 class AirfoilLibrary {
  public:
   explicit AirfoilLibrary(const schema::CpacsType& cpacs) {
-    if (cpacs.vehicles && cpacs.vehicles->profiles && cpacs.vehicles->profiles->wingAirfoils)
-      for (const auto& airfoil : cpacs.vehicles->profiles->wingAirfoils->wingAirfoil)
-        definitions_.emplace(airfoil.uID, &airfoil);
+    if (!cpacs.vehicles || !cpacs.vehicles->profiles) return;
+    const schema::ProfilesType& profiles = *cpacs.vehicles->profiles;
+    if (profiles.wingAirfoils)
+      for (const auto& airfoil : profiles.wingAirfoils->wingAirfoil) definitions_.emplace(airfoil.uID, &airfoil);
+    // Rotor blades are wings whose airfoils live beside the wing airfoils.
+    if (profiles.rotorAirfoils)
+      for (const auto& airfoil : profiles.rotorAirfoils->rotorAirfoil) definitions_.emplace(airfoil.uID, &airfoil);
   }
 
   std::shared_ptr<const WingProfile> get(const std::string& uid, const std::string& xpath) {
