@@ -5,7 +5,9 @@
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
+#include "component_segment.h"
 #include "wing_geometry.h"
+#include "wing_measures.h"
 
 namespace airshape::wing {
 
@@ -26,14 +28,26 @@ std::size_t componentSegmentCount(const schema::WingType& wing) {
 
 Json asJson(const gp_Pnt& p) { return Json::array({p.X(), p.Y(), p.Z()}); }
 
+std::vector<std::string> segmentUids(const WingGeometry& geometry) {
+  std::vector<std::string> uids;
+  for (const auto& segment : geometry.segments()) uids.push_back(segment.uid);
+  return uids;
+}
+
+const schema::ComponentSegmentType& selectComponentSegment(const schema::WingType& wing, const Json& q) {
+  std::vector<std::string> uids;
+  if (wing.componentSegments)
+    for (const auto& cs : wing.componentSegments->componentSegment) uids.push_back(cs.uID);
+  return wing.componentSegments
+      ->componentSegment[query::selectByIndexOrUid(q, "component_segment", uids, "component segment")];
+}
+
 /// A point query: wing, segment (index or uID, in chain order), eta and xsi in [0, 1].
 template <class Point>
 query::Handler pointQuery(Point point) {
   return [point](Configuration& c, const Json& q) -> Json {
     const auto geometry = WingGeometry::of(c, selectWing(c, q));
-    std::vector<std::string> uids;
-    for (const auto& segment : geometry->segments()) uids.push_back(segment.uid);
-    const std::size_t segment = query::selectByIndexOrUid(q, "segment", uids, "segment");
+    const std::size_t segment = query::selectByIndexOrUid(q, "segment", segmentUids(*geometry), "segment");
     return asJson(point(*geometry, segment, query::fractionArgument(q, "eta"), query::fractionArgument(q, "xsi")));
   };
 }
@@ -67,19 +81,47 @@ class WingPlugin final : public plugin::BasicPlugin {
     registry.add(
         {"wing_chord_point", "", "wing, segment, eta, xsi -> point on the chord surface",
          pointQuery([](const WingGeometry& g, std::size_t s, double e, double x) { return g.chordPoint(s, e, x); })});
-    plugin::registerPendingOps(
-        registry, "wing",
-        {{"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
-         {"wing_volume", "wing -> volume"},
-         {"wing_surface_area", "wing -> area of the whole loft"},
-         {"wing_segment_volume", "wing, segment -> volume"},
-         {"wing_segment_surface_area", "wing, segment -> upper and lower skin area"},
-         {"wing_reference_area", "wing, plane -> projected area"},
-         {"wing_wetted_area", "wing -> loft area outside the parent fuselage"},
-         {"wing_span", "wing -> span"},
-         {"wing_mac", "wing -> {mac, point}"},
-         {"component_segment_to_segment", "wing, component_segment, eta, xsi -> {segment, eta, xsi}"},
-         {"segment_to_component_segment", "wing, segment, component_segment, eta, xsi -> {eta, xsi}"}});
+    registry.add({"wing_reference_area", "", "wing, plane -> projected area of the chord surfaces",
+                  [](Configuration& c, const Json& q) -> Json {
+                    return referenceArea(*WingGeometry::of(c, selectWing(c, q)), query::stringArgument(q, "plane"));
+                  }});
+    registry.add({"wing_mac", "", "wing -> {mac, point}: mean aerodynamic chord and its leading edge",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const MeanAerodynamicChord mac = meanAerodynamicChord(*WingGeometry::of(c, selectWing(c, q)));
+                    return {{"mac", mac.length}, {"point", asJson(mac.leadingEdge)}};
+                  }});
+    registry.add(
+        {"wing_span", "", "wing -> span (tip to tip where mirrored)", [](Configuration& c, const Json& q) -> Json {
+           const schema::WingType& wing = selectWing(c, q);
+           const model::Transform unparented = model::transformationMatrix(wing.transformation.get()) *
+                                               model::componentTransform(c, wing.uID).inverse();
+           return span(*WingGeometry::of(c, wing), model::resolvedSymmetry(c, wing.uID), unparented);
+         }});
+    registry.add({"component_segment_to_segment", "", "wing, component_segment, eta, xsi -> {segment, eta, xsi}",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    const auto geometry = WingGeometry::of(c, wing);
+                    const ComponentSegment cs(*geometry, selectComponentSegment(wing, q));
+                    const auto p = cs.toSegment(query::fractionArgument(q, "eta"), query::fractionArgument(q, "xsi"));
+                    return {{"segment", geometry->segments()[p.segment].uid}, {"eta", p.eta}, {"xsi", p.xsi}};
+                  }});
+    registry.add({"segment_to_component_segment", "", "wing, segment, component_segment, eta, xsi -> {eta, xsi}",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    const auto geometry = WingGeometry::of(c, wing);
+                    const std::size_t segment =
+                        query::selectByIndexOrUid(q, "segment", segmentUids(*geometry), "segment");
+                    const ComponentSegment cs(*geometry, selectComponentSegment(wing, q));
+                    const double eta = query::fractionArgument(q, "eta"), xsi = query::fractionArgument(q, "xsi");
+                    return {{"eta", cs.toComponentSegment(segment, eta)}, {"xsi", xsi}};
+                  }});
+    plugin::registerPendingOps(registry, "wing",
+                               {{"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
+                                {"wing_volume", "wing -> volume"},
+                                {"wing_surface_area", "wing -> area of the whole loft"},
+                                {"wing_segment_volume", "wing, segment -> volume"},
+                                {"wing_segment_surface_area", "wing, segment -> upper and lower skin area"},
+                                {"wing_wetted_area", "wing -> loft area outside the parent fuselage"}});
   }
 };
 
