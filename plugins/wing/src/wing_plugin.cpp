@@ -8,6 +8,7 @@
 #include "component_segment.h"
 #include "wing_geometry.h"
 #include "wing_measures.h"
+#include "wing_shape.h"
 
 namespace airshape::wing {
 
@@ -115,12 +116,27 @@ class WingPlugin final : public plugin::BasicPlugin {
                     const double eta = query::fractionArgument(q, "eta"), xsi = query::fractionArgument(q, "xsi");
                     return {{"eta", cs.toComponentSegment(segment, eta)}, {"xsi", xsi}};
                   }});
+    registry.add({"wing_volume", "", "wing -> volume", [](Configuration& c, const Json& q) -> Json {
+                    return WingShape::of(c, selectWing(c, q))->volume();
+                  }});
+    registry.add(
+        {"wing_surface_area", "", "wing -> area of the whole loft (skins, caps, trailing-edge strips)",
+         [](Configuration& c, const Json& q) -> Json { return WingShape::of(c, selectWing(c, q))->surfaceArea(); }});
+    registry.add({"wing_segment_volume", "", "wing, segment -> volume", [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    const auto shape = WingShape::of(c, wing);
+                    return shape->segmentVolume(
+                        query::selectByIndexOrUid(q, "segment", segmentUids(*WingGeometry::of(c, wing)), "segment"));
+                  }});
+    registry.add({"wing_segment_surface_area", "", "wing, segment -> area of the upper and lower skin",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    const auto shape = WingShape::of(c, wing);
+                    return shape->segmentSurfaceArea(
+                        query::selectByIndexOrUid(q, "segment", segmentUids(*WingGeometry::of(c, wing)), "segment"));
+                  }});
     plugin::registerPendingOps(registry, "wing",
                                {{"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
-                                {"wing_volume", "wing -> volume"},
-                                {"wing_surface_area", "wing -> area of the whole loft"},
-                                {"wing_segment_volume", "wing, segment -> volume"},
-                                {"wing_segment_surface_area", "wing, segment -> upper and lower skin area"},
                                 {"wing_wetted_area", "wing -> loft area outside the parent fuselage"}});
   }
 };

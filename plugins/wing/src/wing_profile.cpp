@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <BSplCLib.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
@@ -15,6 +17,29 @@ namespace airshape::wing {
 namespace {
 
 constexpr double kSamePoint = 1e-7;
+
+/// The part [from, to] of a curve (to < from reverses it) as a B-spline over [0, 1].
+Handle(Geom_BSplineCurve) piece(const Geom_BSplineCurve& curve, double from, double to) {
+  Handle(Geom_BSplineCurve) part = Handle(Geom_BSplineCurve)::DownCast(curve.Copy());
+  part->Segment(std::min(from, to), std::max(from, to));
+  if (to < from) part->Reverse();
+  TColStd_Array1OfReal knots = part->Knots();
+  BSplCLib::Reparametrize(0.0, 1.0, knots);
+  part->SetKnots(knots);
+  return part;
+}
+
+/// A B-spline through dense samples of xsi -> point, parametrised by xsi.
+Handle(Geom_BSplineCurve) sampled(const std::function<gp_Pnt(double)>& side) {
+  constexpr int kCount = 200;
+  std::vector<gp_Pnt> points;
+  std::vector<double> parameters;
+  for (int i = 0; i <= kCount; ++i) {
+    parameters.push_back(static_cast<double>(i) / kCount);
+    points.push_back(side(parameters.back()));
+  }
+  return geometry::interpolateCurve(points, parameters, 3);
+}
 
 /// Where, between parameters a and b, the curve crosses the plane through `origin` with
 /// `normal`; nullopt when it does not cross strictly inside.
@@ -112,6 +137,8 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
   }
   profile.upper_ = [curve, tLe, upperEnd](double xsi) { return curve->Value(tLe + xsi * (upperEnd - tLe)); };
   profile.lower_ = [curve, tLe, lowerEnd](double xsi) { return curve->Value(tLe + xsi * (lowerEnd - tLe)); };
+  profile.upperCurve_ = piece(*curve, tLe, upperEnd);
+  profile.lowerCurve_ = piece(*curve, tLe, lowerEnd);
   return profile;
 }
 
@@ -163,6 +190,8 @@ WingProfile WingProfile::fromCst(const schema::Cst2DType& cst, const std::string
   profile.upper_ = CstSide(cst.upperN1, cst.upperN2, model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0);
   profile.lower_ =
       CstSide(cst.lowerN1, cst.lowerN2, model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0);
+  profile.upperCurve_ = sampled(profile.upper_);
+  profile.lowerCurve_ = sampled(profile.lower_);
   return profile;
 }
 

@@ -24,6 +24,10 @@ class WingProfile {
   gp_Pnt upper(double xsi) const;
   gp_Pnt lower(double xsi) const;
 
+  /// The upper (lower) side as a B-spline curve over [0, 1] whose parameter is xsi.
+  const Handle(Geom_BSplineCurve) & upperCurve() const { return upperCurve_; }
+  const Handle(Geom_BSplineCurve) & lowerCurve() const { return lowerCurve_; }
+
   const gp_Pnt& leadingEdge() const { return leadingEdge_; }
   const gp_Pnt& trailingEdge() const { return trailingEdge_; }
   bool bluntTrailingEdge() const { return blunt_; }
@@ -34,6 +38,7 @@ class WingProfile {
 
   // Each side as a function of xsi (0 at the LE).
   std::function<gp_Pnt(double)> upper_, lower_;
+  Handle(Geom_BSplineCurve) upperCurve_, lowerCurve_;
   gp_Pnt leadingEdge_, trailingEdge_;
   bool blunt_ = false;
 };

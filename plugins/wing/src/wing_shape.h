@@ -1,0 +1,43 @@
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include "wing_geometry.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::wing {
+
+/// The faces of one wing segment: ruled upper and lower skins (and a trailing-edge strip
+/// for blunt airfoils) between its two placed airfoils, closed by planar caps.
+struct SegmentShape {
+  TopoDS_Face upper, lower, trailingEdge, innerCap, outerCap;
+  TopoDS_Shape solid;
+};
+
+/// The B-rep of a wing, segment by segment; measures are exact integrals over it.
+class WingShape {
+ public:
+  static std::shared_ptr<const WingShape> of(const Configuration& configuration, const schema::WingType& wing);
+
+  const std::vector<SegmentShape>& segments() const { return segments_; }
+
+  double segmentVolume(std::size_t segment) const;
+  /// Upper and lower skin of a segment.
+  double segmentSurfaceArea(std::size_t segment) const;
+  double volume() const;
+  /// Every face of the wing solid: skins, trailing-edge strips, root and tip caps.
+  double surfaceArea() const;
+
+ private:
+  std::vector<SegmentShape> segments_;
+};
+
+}  // namespace airshape::wing
