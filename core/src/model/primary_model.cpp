@@ -1,5 +1,6 @@
 #include "airshape/model/primary_model.h"
 
+#include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/segment_chain.h"
 
@@ -48,6 +49,11 @@ PrimaryModel primaryModel(const schema::CpacsType& cpacs) {
     return result;
   }
   return {};
+}
+
+const PrimaryModel& primaryModel(const Configuration& configuration) {
+  return *configuration.cache().obtain<PrimaryModel>(
+      "primary-model", [&] { return std::make_shared<const PrimaryModel>(primaryModel(configuration.cpacs())); });
 }
 
 }  // namespace airshape::model

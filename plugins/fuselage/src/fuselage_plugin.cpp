@@ -12,7 +12,7 @@ using query::Json;
 namespace {
 
 schema::FuselageType& selectFuselage(const Configuration& configuration, const Json& query) {
-  const auto fuselages = model::primaryModel(configuration.cpacs()).fuselages;
+  const auto& fuselages = model::primaryModel(configuration).fuselages;
   return *fuselages[query::selectByIndexOrUid(query, "fuselage", model::uidsOf(fuselages), "fuselage")];
 }
 
@@ -25,7 +25,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add(
         {"fuselage_count", "", "-> number of fuselages of the model",
-         [](Configuration& c, const Json&) -> Json { return model::primaryModel(c.cpacs()).fuselages.size(); }});
+         [](Configuration& c, const Json&) -> Json { return model::primaryModel(c).fuselages.size(); }});
     registry.add({"fuselage_uid", "", "fuselage -> uID",
                   [](Configuration& c, const Json& q) -> Json { return selectFuselage(c, q).uID; }});
     registry.add(

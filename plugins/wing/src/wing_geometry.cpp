@@ -85,6 +85,7 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
                       segment.xpath + "/" + which);
         return found->second;
       };
+      geometry->segmentUids_.push_back(segment.uID);
       geometry->segments_.push_back(
           {segment.uID, end(segment.fromElementUID, "fromElementUID"), end(segment.toElementUID, "toElementUID")});
     }

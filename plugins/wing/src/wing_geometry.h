@@ -42,6 +42,8 @@ class WingGeometry {
   static std::shared_ptr<const WingGeometry> of(const Configuration& configuration, const schema::WingType& wing);
 
   const std::vector<WingSegment>& segments() const { return segments_; }
+  /// The segments' uIDs in chain order, for addressing them by index or uID.
+  const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
   gp_Pnt upperPoint(std::size_t segment, double eta, double xsi) const;
   gp_Pnt lowerPoint(std::size_t segment, double eta, double xsi) const;
@@ -49,6 +51,7 @@ class WingGeometry {
 
  private:
   std::vector<WingSegment> segments_;
+  std::vector<std::string> segmentUids_;
 };
 
 }  // namespace airshape::wing

@@ -17,7 +17,7 @@ using query::Json;
 namespace {
 
 schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
-  const auto wings = model::primaryModel(configuration.cpacs()).wings;
+  const auto& wings = model::primaryModel(configuration).wings;
   return *wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(wings), "wing")];
 }
 
@@ -28,12 +28,6 @@ std::size_t componentSegmentCount(const schema::WingType& wing) {
 }
 
 Json asJson(const gp_Pnt& p) { return Json::array({p.X(), p.Y(), p.Z()}); }
-
-std::vector<std::string> segmentUids(const WingGeometry& geometry) {
-  std::vector<std::string> uids;
-  for (const auto& segment : geometry.segments()) uids.push_back(segment.uid);
-  return uids;
-}
 
 const schema::ComponentSegmentType& selectComponentSegment(const schema::WingType& wing, const Json& q) {
   std::vector<std::string> uids;
@@ -48,7 +42,7 @@ template <class Point>
 query::Handler pointQuery(Point point) {
   return [point](Configuration& c, const Json& q) -> Json {
     const auto geometry = WingGeometry::of(c, selectWing(c, q));
-    const std::size_t segment = query::selectByIndexOrUid(q, "segment", segmentUids(*geometry), "segment");
+    const std::size_t segment = query::selectByIndexOrUid(q, "segment", geometry->segmentUids(), "segment");
     return asJson(point(*geometry, segment, query::fractionArgument(q, "eta"), query::fractionArgument(q, "xsi")));
   };
 }
@@ -61,7 +55,7 @@ class WingPlugin final : public plugin::BasicPlugin {
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"wing_count", "", "-> number of wings of the model",
-                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c.cpacs()).wings.size(); }});
+                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c).wings.size(); }});
     registry.add(
         {"wing_uid", "", "wing -> uID", [](Configuration& c, const Json& q) -> Json { return selectWing(c, q).uID; }});
     registry.add({"wing_segment_count", "", "wing -> number of segments",
@@ -111,7 +105,7 @@ class WingPlugin final : public plugin::BasicPlugin {
                     const schema::WingType& wing = selectWing(c, q);
                     const auto geometry = WingGeometry::of(c, wing);
                     const std::size_t segment =
-                        query::selectByIndexOrUid(q, "segment", segmentUids(*geometry), "segment");
+                        query::selectByIndexOrUid(q, "segment", geometry->segmentUids(), "segment");
                     const ComponentSegment cs(*geometry, selectComponentSegment(wing, q));
                     const double eta = query::fractionArgument(q, "eta"), xsi = query::fractionArgument(q, "xsi");
                     return {{"eta", cs.toComponentSegment(segment, eta)}, {"xsi", xsi}};
@@ -126,14 +120,14 @@ class WingPlugin final : public plugin::BasicPlugin {
                     const schema::WingType& wing = selectWing(c, q);
                     const auto shape = WingShape::of(c, wing);
                     return shape->segmentVolume(
-                        query::selectByIndexOrUid(q, "segment", segmentUids(*WingGeometry::of(c, wing)), "segment"));
+                        query::selectByIndexOrUid(q, "segment", WingGeometry::of(c, wing)->segmentUids(), "segment"));
                   }});
     registry.add({"wing_segment_surface_area", "", "wing, segment -> area of the upper and lower skin",
                   [](Configuration& c, const Json& q) -> Json {
                     const schema::WingType& wing = selectWing(c, q);
                     const auto shape = WingShape::of(c, wing);
                     return shape->segmentSurfaceArea(
-                        query::selectByIndexOrUid(q, "segment", segmentUids(*WingGeometry::of(c, wing)), "segment"));
+                        query::selectByIndexOrUid(q, "segment", WingGeometry::of(c, wing)->segmentUids(), "segment"));
                   }});
     plugin::registerPendingOps(registry, "wing",
                                {{"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},

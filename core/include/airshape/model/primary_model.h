@@ -6,6 +6,10 @@
 #include "airshape/problem.h"
 #include "airshape/schema/generated/cpacs_model.h"
 
+namespace airshape {
+class Configuration;
+}
+
 namespace airshape::model {
 
 /// The wings and fuselages of the model that queries address: the first aircraft model,
@@ -21,6 +25,9 @@ struct PrimaryModel {
 };
 
 PrimaryModel primaryModel(const schema::CpacsType& cpacs);
+
+/// The same for an open configuration, worked out once and kept in its cache.
+const PrimaryModel& primaryModel(const Configuration& configuration);
 
 /// The uIDs of a list of nodes, for selection by index or uID.
 template <class T>
