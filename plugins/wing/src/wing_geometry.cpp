@@ -4,6 +4,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/placed_elements.h"
 #include "airshape/model/segment_chain.h"
 
 namespace airshape::wing {
@@ -56,23 +57,10 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
   return configuration.cache().obtain<WingGeometry>("wing-geometry:" + wing.uID, [&] {
     auto geometry = std::make_shared<WingGeometry>();
     AirfoilLibrary airfoils(configuration.cpacs());
-    const model::Transform component = model::componentTransform(configuration, wing.uID);
-    const auto positioning = model::positioningTranslations(wing.positionings.get());
-
     std::unordered_map<std::string, SegmentEnd> ends;  // by element uID
-    if (wing.sections) {
-      for (const auto& section : wing.sections->section) {
-        model::Transform placed = component;
-        if (const auto shift = positioning.find(section.uID); shift != positioning.end())
-          placed.translate(shift->second);
-        placed = placed * model::transformationMatrix(section.transformation.get());
-        if (!section.elements) continue;
-        for (const auto& element : section.elements->element)
-          ends.emplace(element.uID,
-                       SegmentEnd{element.uID, airfoils.get(element.airfoilUID, element.xpath + "/airfoilUID"),
-                                  placed * model::transformationMatrix(element.transformation.get())});
-      }
-    }
+    for (const auto& [uid, placed] : model::placedElements(configuration, wing))
+      ends.emplace(uid, SegmentEnd{uid, airfoils.get(placed.element->airfoilUID, placed.element->xpath + "/airfoilUID"),
+                                   placed.transform});
     if (!wing.segments) return std::shared_ptr<const WingGeometry>(geometry);
     std::vector<model::SegmentEnds> chain;
     for (const auto& segment : wing.segments->segment) chain.push_back({segment.fromElementUID, segment.toElementUID});

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+#include <unordered_map>
+
+#include "airshape/configuration.h"
+#include "airshape/model/placement.h"
+
+namespace airshape::model {
+
+/// A section element with the full transformation C · Pos(section) · Sec · Elem that takes
+/// its profile to global coordinates.
+template <class Element>
+struct PlacedElement {
+  const Element* element;
+  Transform transform;
+};
+
+/// Every section element of a wing or fuselage (any component with sections, elements and
+/// positionings), by element uID. Throws Error for broken positionings.
+template <class Component>
+auto placedElements(const Configuration& configuration, const Component& component) {
+  using Element = std::decay_t<decltype(component.sections->section[0].elements->element[0])>;
+  std::unordered_map<std::string, PlacedElement<Element>> placed;
+  if (!component.sections) return placed;
+  const Transform componentMatrix = componentTransform(configuration, component.uID);
+  const auto positioning = positioningTranslations(component.positionings.get());
+  for (const auto& section : component.sections->section) {
+    Transform sectionMatrix = componentMatrix;
+    if (const auto shift = positioning.find(section.uID); shift != positioning.end()) sectionMatrix.translate(shift->second);
+    sectionMatrix = sectionMatrix * transformationMatrix(section.transformation.get());
+    if (!section.elements) continue;
+    for (const auto& element : section.elements->element)
+      placed.emplace(element.uID, PlacedElement<Element>{&element, sectionMatrix * transformationMatrix(element.transformation.get())});
+  }
+  return placed;
+}
+
+}  // namespace airshape::model
