@@ -27,11 +27,13 @@ auto placedElements(const Configuration& configuration, const Component& compone
   const auto positioning = positioningTranslations(component.positionings.get());
   for (const auto& section : component.sections->section) {
     Transform sectionMatrix = componentMatrix;
-    if (const auto shift = positioning.find(section.uID); shift != positioning.end()) sectionMatrix.translate(shift->second);
+    if (const auto shift = positioning.find(section.uID); shift != positioning.end())
+      sectionMatrix.translate(shift->second);
     sectionMatrix = sectionMatrix * transformationMatrix(section.transformation.get());
     if (!section.elements) continue;
     for (const auto& element : section.elements->element)
-      placed.emplace(element.uID, PlacedElement<Element>{&element, sectionMatrix * transformationMatrix(element.transformation.get())});
+      placed.emplace(element.uID, PlacedElement<Element>{
+                                      &element, sectionMatrix * transformationMatrix(element.transformation.get())});
   }
   return placed;
 }

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <Geom_BSplineCurve.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+
+namespace airshape::geometry {
+
+// Small B-rep building blocks for lofted components: ruled faces between profile curves,
+// planar caps, sewing into a solid, and exact measures.
+
+/// The curve moved by an affine map (applied to its poles, which is exact for B-splines).
+Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform);
+
+/// The straight segment from a to b as a degree-1 B-spline over [0, 1].
+Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b);
+
+/// The ruled face joining the points of equal parameter of two curves over the same range.
+TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second);
+
+/// The planar face bounded by curves that join end to end into a closed wire. Throws
+/// Error when they are not planar.
+TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
+
+/// Sews faces into a closed shell and makes it a solid. Throws Error when they do not close.
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces);
+
+/// Volume of a solid and area of faces, by adaptive Gauss–Kronrod integration (relative
+/// accuracy 1e-9). Null shapes measure 0.
+double volumeOf(const TopoDS_Shape& solid);
+double areaOf(const TopoDS_Shape& faces);
+
+}  // namespace airshape::geometry

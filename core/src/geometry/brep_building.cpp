@@ -1,0 +1,94 @@
+#include "airshape/geometry/brep_building.h"
+
+#include <cmath>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include "airshape/error.h"
+#include "airshape/geometry/skinning.h"
+
+namespace airshape::geometry {
+
+namespace {
+
+constexpr double kTolerance = 1e-7;
+constexpr double kSewingTolerance = 1e-6;
+constexpr double kIntegrationAccuracy = 1e-9;
+
+}  // namespace
+
+Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
+  Handle(Geom_BSplineCurve) moved = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  for (int i = 1; i <= moved->NbPoles(); ++i) {
+    const gp_Pnt& p = moved->Pole(i);
+    const Eigen::Vector3d q = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
+    moved->SetPole(i, gp_Pnt(q.x(), q.y(), q.z()));
+  }
+  return moved;
+}
+
+Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b) {
+  TColgp_Array1OfPnt poles(1, 2);
+  poles(1) = a;
+  poles(2) = b;
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0.0;
+  knots(2) = 1.0;
+  TColStd_Array1OfInteger multiplicities(1, 2);
+  multiplicities.Init(2);
+  return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
+}
+
+TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second) {
+  const std::vector<double> sites = {0.0, 1.0};
+  const auto surface = skinCurves({first, second}, sites, skinningSpace(sites, 1, false));
+  return BRepBuilderAPI_MakeFace(surface, kTolerance).Face();
+}
+
+TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
+  BRepBuilderAPI_MakeWire wire;
+  for (const auto& curve : boundary) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
+  if (!wire.IsDone()) throw Error(ErrorCode::InvalidModel, "the boundary curves do not join into a wire");
+  BRepBuilderAPI_MakeFace face(wire.Wire(), true);
+  if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
+  return face.Face();
+}
+
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces) {
+  BRepBuilderAPI_Sewing sewing(kSewingTolerance);
+  for (const TopoDS_Face& face : faces)
+    if (!face.IsNull()) sewing.Add(face);
+  sewing.Perform();
+  TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
+  if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
+  return BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
+}
+
+double volumeOf(const TopoDS_Shape& solid) {
+  if (solid.IsNull()) return 0.0;
+  GProp_GProps properties;
+  BRepGProp::VolumeProperties(solid, properties, kIntegrationAccuracy);
+  return std::abs(properties.Mass());
+}
+
+double areaOf(const TopoDS_Shape& faces) {
+  if (faces.IsNull()) return 0.0;
+  GProp_GProps properties;
+  BRepGProp::SurfaceProperties(faces, properties, kIntegrationAccuracy);
+  return properties.Mass();
+}
+
+}  // namespace airshape::geometry
