@@ -4,6 +4,7 @@
 #include "airshape/model/primary_model.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
+#include "fuselage_geometry.h"
 
 namespace airshape::fuselage {
 
@@ -16,6 +17,10 @@ schema::FuselageType& selectFuselage(const Configuration& configuration, const J
   return *fuselages[query::selectByIndexOrUid(query, "fuselage", model::uidsOf(fuselages), "fuselage")];
 }
 
+std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
+  return query::selectByIndexOrUid(q, "segment", geometry.segmentUids(), "segment");
+}
+
 class FuselagePlugin final : public plugin::BasicPlugin {
  public:
   FuselagePlugin()
@@ -23,9 +28,8 @@ class FuselagePlugin final : public plugin::BasicPlugin {
                     {{"fuselage", "fuselages/fuselage"}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
-    registry.add(
-        {"fuselage_count", "", "-> number of fuselages of the model",
-         [](Configuration& c, const Json&) -> Json { return model::primaryModel(c).fuselages.size(); }});
+    registry.add({"fuselage_count", "", "-> number of fuselages of the model",
+                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c).fuselages.size(); }});
     registry.add({"fuselage_uid", "", "fuselage -> uID",
                   [](Configuration& c, const Json& q) -> Json { return selectFuselage(c, q).uID; }});
     registry.add(
@@ -33,13 +37,35 @@ class FuselagePlugin final : public plugin::BasicPlugin {
            const schema::FuselageType& fuselage = selectFuselage(c, q);
            return fuselage.segments ? fuselage.segments->segment.size() : 0;
          }});
-    plugin::registerPendingOps(registry, "fuselage",
-                               {{"fuselage_point", "fuselage, segment, eta, zeta -> point on the surface"},
-                                {"fuselage_volume", "fuselage -> volume"},
-                                {"fuselage_surface_area", "fuselage -> skin area"},
-                                {"fuselage_segment_volume", "fuselage, segment -> volume"},
-                                {"fuselage_segment_surface_area", "fuselage, segment -> skin area"},
-                                {"fuselage_circumference", "fuselage, segment, eta -> circumference"}});
+    registry.add({"fuselage_point", "", "fuselage, segment, eta, zeta -> point on the surface",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const auto geometry = FuselageGeometry::of(c, selectFuselage(c, q));
+                    const gp_Pnt p = geometry->point(segmentOf(*geometry, q), query::fractionArgument(q, "eta"),
+                                                     query::fractionArgument(q, "zeta"));
+                    return Json::array({p.X(), p.Y(), p.Z()});
+                  }});
+    registry.add({"fuselage_circumference", "", "fuselage, segment, eta -> length of the profile there",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const auto geometry = FuselageGeometry::of(c, selectFuselage(c, q));
+                    return geometry->circumference(segmentOf(*geometry, q), query::fractionArgument(q, "eta"));
+                  }});
+    registry.add({"fuselage_volume", "", "fuselage -> volume", [](Configuration& c, const Json& q) -> Json {
+                    return FuselageGeometry::of(c, selectFuselage(c, q))->volume();
+                  }});
+    registry.add(
+        {"fuselage_surface_area", "", "fuselage -> skin area (no caps)", [](Configuration& c, const Json& q) -> Json {
+           return FuselageGeometry::of(c, selectFuselage(c, q))->surfaceArea();
+         }});
+    registry.add(
+        {"fuselage_segment_volume", "", "fuselage, segment -> volume", [](Configuration& c, const Json& q) -> Json {
+           const auto geometry = FuselageGeometry::of(c, selectFuselage(c, q));
+           return geometry->segmentVolume(segmentOf(*geometry, q));
+         }});
+    registry.add({"fuselage_segment_surface_area", "", "fuselage, segment -> skin area of the segment",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const auto geometry = FuselageGeometry::of(c, selectFuselage(c, q));
+                    return geometry->segmentSurfaceArea(segmentOf(*geometry, q));
+                  }});
   }
 };
 
