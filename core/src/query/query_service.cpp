@@ -18,7 +18,7 @@ Json answer(Configuration& configuration, const QueryRegistry& registry, const s
   } catch (const Json::parse_error&) {
     return {{"error", "the line is not valid JSON"}};
   } catch (const Error& error) {
-    return {{"error", error.message()}};
+    return {{"error", error.what()}};  // with the CPACS path of the node, when known
   } catch (const std::exception& error) {
     return {{"error", std::string("internal error: ") + error.what()}};
   }
