@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 
+#include <Standard_Failure.hxx>
+
 #include "airshape/error.h"
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
@@ -94,6 +96,8 @@ int main(int argc, char** argv) {
     std::cerr << "airshape: " << error.what() << '\n';
   } catch (const std::exception& error) {
     std::cerr << "airshape: internal error: " << error.what() << '\n';
+  } catch (const Standard_Failure& failure) {
+    std::cerr << "airshape: geometry kernel failure: " << failure.GetMessageString() << '\n';
   }
   return airshape::cli::kFailure;
 }

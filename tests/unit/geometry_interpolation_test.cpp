@@ -130,5 +130,22 @@ TEST(Compatibility, DegreeElevationAndKnotInsertionKeepTheGeometry) {
   }
 }
 
+TEST(Compatibility, PeriodicAndClampedCurvesMix) {
+  const auto closedPoints = wavyPoints(11, true);
+  const auto periodic = interpolateCurve(closedPoints, chordParameters(closedPoints, 0.5), 3, true);
+  std::vector<gp_Pnt> square = {gp_Pnt(1, 0, 0), gp_Pnt(0, 1, 0), gp_Pnt(-1, 0, 0), gp_Pnt(0, -1, 0), gp_Pnt(1, 0, 0)};
+  const auto clamped = interpolateCurve(square, chordParameters(square), 3, false, {1, 2, 3});
+  std::vector<Handle(Geom_BSplineCurve)> curves = {Handle(Geom_BSplineCurve)::DownCast(periodic->Copy()),
+                                                   Handle(Geom_BSplineCurve)::DownCast(clamped->Copy())};
+  makeCompatible(curves);
+  EXPECT_EQ(curves[0]->NbPoles(), curves[1]->NbPoles());
+  EXPECT_FALSE(curves[0]->IsPeriodic());
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i / 100.0;
+    EXPECT_LT(curves[0]->Value(t).Distance(periodic->Value(t)), 1e-12);
+    EXPECT_LT(curves[1]->Value(t).Distance(clamped->Value(t)), 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace airshape::geometry

@@ -70,6 +70,17 @@ void insertMissing(Geom_BSplineSurface& surface, const KnotUnion& all, bool uDir
 
 void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
   if (curves.empty()) return;
+  // Periodic and clamped curves cannot share one knot vector: mixed, all become clamped
+  // (same geometry, same parameters).
+  const bool anyPeriodic = std::any_of(curves.begin(), curves.end(), [](const auto& c) { return c->IsPeriodic(); });
+  const bool allPeriodic = std::all_of(curves.begin(), curves.end(), [](const auto& c) { return c->IsPeriodic(); });
+  if (anyPeriodic && !allPeriodic)
+    for (auto& curve : curves)
+      if (curve->IsPeriodic()) {
+        const double first = curve->FirstParameter(), last = curve->LastParameter();
+        curve->SetNotPeriodic();  // may keep knots of the neighbouring periods
+        curve->Segment(first, last);
+      }
   int degree = 0;
   for (const auto& curve : curves) {
     degree = std::max(degree, curve->Degree());

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <Standard_Failure.hxx>
+
 #include "airshape/error.h"
 
 namespace airshape::query {
@@ -21,6 +23,9 @@ Json answer(Configuration& configuration, const QueryRegistry& registry, const s
     return {{"error", error.what()}};  // with the CPACS path of the node, when known
   } catch (const std::exception& error) {
     return {{"error", std::string("internal error: ") + error.what()}};
+  } catch (const Standard_Failure& failure) {  // OCCT's exceptions are not std::exceptions
+    return {{"error", std::string("geometry kernel failure (") + failure.DynamicType()->Name() +
+                          "): " + failure.GetMessageString()}};
   }
 }
 

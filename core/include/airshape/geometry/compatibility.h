@@ -9,7 +9,7 @@ namespace airshape::geometry {
 
 /// Raises every curve to the highest degree among them and inserts knots until all share
 /// one knot vector. The geometry does not change. All curves must span the same parameter
-/// range and be all periodic or all not.
+/// range; where periodic and clamped curves mix, the periodic ones are made clamped.
 void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves);
 
 /// The same for surfaces, in both parameter directions.
