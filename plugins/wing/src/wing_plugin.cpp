@@ -1,11 +1,13 @@
 // The wing plugin: CPACS wings. It answers the wing ops that need no geometry; the
 // geometry ops are registered as pending until the wing builder exists.
 #include "airshape/configuration.h"
+#include "airshape/error.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
 #include "component_segment.h"
+#include "segment_locator.h"
 #include "wing_geometry.h"
 #include "wing_measures.h"
 #include "wing_shape.h"
@@ -129,9 +131,23 @@ class WingPlugin final : public plugin::BasicPlugin {
                     return shape->segmentSurfaceArea(
                         query::selectByIndexOrUid(q, "segment", WingGeometry::of(c, wing)->segmentUids(), "segment"));
                   }});
+    registry.add({"wing_segment_eta_xsi", "", "wing, x, y, z -> {segment, eta, xsi, on_top} of the nearest skin point",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    const auto geometry = WingGeometry::of(c, wing);
+                    const gp_Pnt point(query::numberArgument(q, "x"), query::numberArgument(q, "y"),
+                                       query::numberArgument(q, "z"));
+                    const auto location = locateOnWing(*geometry, *WingShape::of(c, wing), point);
+                    if (!location)
+                      throw Error(ErrorCode::InvalidArgument,
+                                  "the point lies on no segment of wing '" + wing.uID + "'");
+                    return {{"segment", geometry->segmentUids()[location->segment]},
+                            {"eta", location->eta},
+                            {"xsi", location->xsi},
+                            {"on_top", location->onTop}};
+                  }});
     plugin::registerPendingOps(registry, "wing",
-                               {{"wing_segment_eta_xsi", "wing, x, y, z -> {segment, eta, xsi, on_top}"},
-                                {"wing_wetted_area", "wing -> loft area outside the parent fuselage"}});
+                               {{"wing_wetted_area", "wing -> loft area outside the parent fuselage"}});
   }
 };
 
