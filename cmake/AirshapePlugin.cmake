@@ -3,7 +3,7 @@
 function(airshape_add_plugin name)
   set(target airshape_plugin_${name})
   add_library(${target} MODULE ${ARGN})
-  target_link_libraries(${target} PRIVATE airshape::core airshape_warnings TKTopAlgo TKGeomAlgo)
+  target_link_libraries(${target} PRIVATE airshape::core airshape_warnings TKTopAlgo TKGeomAlgo TKBO)
   set_target_properties(${target} PROPERTIES PREFIX "lib" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_LIBRARY_OUTPUT_DIRECTORY})
   install(TARGETS ${target} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 endfunction()

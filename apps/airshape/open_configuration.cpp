@@ -8,6 +8,7 @@ namespace airshape::cli {
 
 Configuration openConfiguration(const std::string& path, const plugin::PluginHost& host) {
   Configuration configuration = Configuration::open(path, host.componentLocations());
+  configuration.useShapes(host.shapes());
   // A few lines say what was ignored; validate lists everything.
   constexpr std::size_t kShown = 5;
   const Problems& warnings = configuration.warnings();

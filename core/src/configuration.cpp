@@ -49,6 +49,11 @@ Configuration::Configuration(Configuration&&) noexcept = default;
 Configuration& Configuration::operator=(Configuration&&) noexcept = default;
 Configuration::~Configuration() = default;
 
+const ComponentShapes& Configuration::noShapes() {
+  static const ComponentShapes none;
+  return none;
+}
+
 void Configuration::writeModel() { schema::writeNode(*cpacs_, *document_.root()); }
 
 void Configuration::save(const std::string& path) {

@@ -52,8 +52,11 @@ def test_third_party_node_type_and_op_appear(tmp_path, third_party):
     aircraft.write_text(open(EXAMPLE).read().replace("</wings>", "</wings>" + gear))
     info = airshape("info", str(aircraft), env=env)
     assert "landingGear NoseGear  parent: Fuselage  plugin: landinggear" in info.stdout, info.stdout
-    answer = airshape("query", str(aircraft), stdin='{"op":"landing_gear_count"}\n', env=env)
-    assert json.loads(answer.stdout) == {"ok": 1}
+    queries = '{"op":"landing_gear_count"}\n{"op":"bounding_box","uid":"NoseGear"}\n'
+    answer = airshape("query", str(aircraft), stdin=queries, env=env)
+    count, box = (json.loads(line) for line in answer.stdout.splitlines())
+    assert count == {"ok": 1}
+    assert box == {"error": "no builder yet for landingGear"}, "a component type nobody builds says so"
 
 
 def test_bad_plugins_get_one_message_each_and_the_rest_works(tmp_path, third_party):
@@ -65,7 +68,7 @@ def test_bad_plugins_get_one_message_each_and_the_rest_works(tmp_path, third_par
     assert result.returncode == 0
     messages = result.stderr.strip().splitlines()
     assert any("libbroken.so: cannot be loaded as a plugin" in m for m in messages), messages
-    assert any("built for plugin ABI version 999, this core has 1" in m for m in messages), messages
+    assert any("built for plugin ABI version 999, this core has 2" in m for m in messages), messages
     assert any("claims node type 'wing', which plugin wing builds already" in m for m in messages), messages
     assert "wing 0.1.0" in result.stdout and "wing_count" in result.stdout
     query = airshape("query", EXAMPLE, stdin='{"op":"wing_count"}\n', env={"AIRSHAPE_PLUGIN_PATH": str(folder)})

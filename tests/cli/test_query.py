@@ -20,7 +20,7 @@ def test_example_answers():
                   {"op": "wing_wetted_area", "wing": 1}, {"op": "wing_volume", "wing": 1})
     assert answers[:6] == [{"ok": 1}, {"ok": "MainWing"}, {"ok": "x-z"}, {"ok": 2}, {"ok": 3}, {"ok": 3}]
     assert "out of range" in answers[6]["error"]
-    assert answers[7] == {"error": "no builder yet for wing: op 'wing_wetted_area' needs its geometry"}
+    assert 0 < answers[7]["ok"] < answers[8]["ok"] * 10
     assert answers[8]["ok"] > 0
 
 

@@ -101,3 +101,20 @@ def test_points_map_back_to_eta_and_xsi():
     assert math.isclose(on_lower["eta"], 0.8, abs_tol=1e-7) and math.isclose(on_lower["xsi"], 0.4, abs_tol=1e-7)
     far = airshape("query", WINGS, stdin='{"op":"wing_segment_eta_xsi","wing":"Rect","x":100,"y":0,"z":0}\n')
     assert "lies on no segment" in json.loads(far.stdout)["error"]
+
+
+def test_bounding_box_and_wetted_area():
+    box, wetted, area, everything = ask({"op": "bounding_box", "uid": "Rect"}, {"op": "wing_wetted_area", "wing": "Rect"},
+                                         {"op": "wing_surface_area", "wing": "Rect"}, {"op": "bounding_box"})
+    # Rect: chord 2 from x = 1, span 5 along y, parabolic sides of height 0.15·0.25·2 = 0.075.
+    for got, want in zip(box["min"] + box["max"], [1, 0, -0.075, 3, 5, 0.075]):
+        assert math.isclose(got, want, abs_tol=1e-6)
+    assert math.isclose(wetted, area, rel_tol=1e-12), "a wing without a parent is wetted all over"
+    assert everything["min"][1] < -5, "the whole configuration includes the mirrored swept wing"
+
+
+def test_wetted_area_leaves_out_the_part_inside_the_parent():
+    example = os.path.join(os.path.dirname(DATA), "..", "examples", "example-aircraft.xml")
+    result = airshape("query", example, stdin='{"op":"wing_wetted_area","wing":1}\n{"op":"wing_surface_area","wing":1}\n')
+    wetted, area = (json.loads(line)["ok"] for line in result.stdout.splitlines())
+    assert 0.5 * area < wetted < area

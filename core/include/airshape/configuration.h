@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "airshape/component_cache.h"
+#include "airshape/component_shapes.h"
 #include "airshape/graph/component_graph.h"
 #include "airshape/problem.h"
 #include "airshape/uid/uid_registry.h"
@@ -53,6 +54,10 @@ class Configuration {
   /// Geometry built from this configuration, kept until the model changes.
   ComponentCache& cache() const { return *cache_; }
 
+  /// The builders of component solids (those the loaded plugins registered).
+  const ComponentShapes& shapes() const { return *shapes_; }
+  void useShapes(const ComponentShapes& shapes) { shapes_ = &shapes; }
+
   /// Writes the model's values into the document (only what differs from it).
   void writeModel();
   /// Writes the model into the document and saves it atomically to `path`.
@@ -69,6 +74,8 @@ class Configuration {
   Problems schemaProblems_;
   Problems warnings_;
   std::unique_ptr<ComponentCache> cache_ = std::make_unique<ComponentCache>();
+  const ComponentShapes* shapes_ = &noShapes();
+  static const ComponentShapes& noShapes();
 };
 
 }  // namespace airshape

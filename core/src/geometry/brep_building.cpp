@@ -8,6 +8,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepGProp.hxx>
+#include <BRepLib.hxx>
 #include <GProp_GProps.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -74,7 +75,9 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces) {
   sewing.Perform();
   TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
-  return BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
+  TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
+  BRepLib::OrientClosedSolid(solid);  // outward normals, so that Boolean operations see the inside
+  return solid;
 }
 
 double volumeOf(const TopoDS_Shape& solid) {

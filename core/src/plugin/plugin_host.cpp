@@ -112,6 +112,10 @@ bool PluginHost::loadFile(const std::string& file) {
       messages_.push_back(canonical + ": " + error.message());
     }
   }
+  ComponentShapes offered;
+  plugin->registerShapeBuilders(offered);
+  for (const NodeType& type : loaded.nodeTypes)  // only for the node types it was granted
+    if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
   plugins_.push_back(std::move(loaded));
   return true;
 }

@@ -1,24 +1,67 @@
 #include "airshape/query/core_queries.h"
 
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <tuple>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/symmetry.h"
 
 namespace airshape::query {
 
+namespace {
+
+/// The tight box of a shape (from its exact geometry, not its control points).
+Bnd_Box tightBox(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, false, false);
+  return box;
+}
+
+/// The box of the mirror image about a coordinate plane: the box mirrored.
+Bnd_Box mirrored(const Bnd_Box& box, const std::string& symmetry) {
+  double x1, y1, z1, x2, y2, z2;
+  box.Get(x1, y1, z1, x2, y2, z2);
+  if (symmetry == "x-z") std::tie(y1, y2) = std::make_pair(-y2, -y1);
+  if (symmetry == "x-y") std::tie(z1, z2) = std::make_pair(-z2, -z1);
+  if (symmetry == "y-z") std::tie(x1, x2) = std::make_pair(-x2, -x1);
+  Bnd_Box result;
+  result.Update(x1, y1, z1, x2, y2, z2);
+  return result;
+}
+
+Json asJson(const Bnd_Box& box) {
+  double x1, y1, z1, x2, y2, z2;
+  box.Get(x1, y1, z1, x2, y2, z2);
+  return {{"min", {x1, y1, z1}}, {"max", {x2, y2, z2}}};
+}
+
+Json boundingBox(Configuration& configuration, const Json& query) {
+  if (query.contains("uid")) {
+    const auto& uid = query.at("uid");
+    if (!uid.is_string()) throw Error(ErrorCode::InvalidArgument, "argument 'uid' must be a string");
+    return asJson(tightBox(configuration.shapes().shapeOf(configuration, uid.get<std::string>())));
+  }
+  // The whole configuration, mirrored halves included: every component a plugin builds.
+  Bnd_Box all;
+  for (const auto& component : configuration.components().components()) {
+    if (configuration.shapes().find(component.nodeType) == nullptr) continue;
+    const Bnd_Box box = tightBox(configuration.shapes().shapeOf(configuration, component.uid));
+    all.Add(box);
+    const std::string symmetry = model::resolvedSymmetry(configuration, component.uid);
+    if (symmetry != "none") all.Add(mirrored(box, symmetry));
+  }
+  if (all.IsVoid()) throw Error(ErrorCode::NotImplemented, "no builder yet for any component of the configuration");
+  return asJson(all);
+}
+
+}  // namespace
+
 void registerCoreQueries(QueryRegistry& registry) {
-  registry.add({"bounding_box", "core", "[uid] -> {min, max}: tight box of a component or of the whole configuration",
-                [](Configuration& configuration, const Json& query) -> Json {
-                  const auto& graph = configuration.components();
-                  if (query.contains("uid")) {
-                    const std::string uid = query.at("uid").is_string() ? query.at("uid").get<std::string>() : "";
-                    const long index = graph.find(uid);
-                    if (index < 0)
-                      throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
-                    throw Error(ErrorCode::NotImplemented,
-                                "no builder yet for " + graph.components()[static_cast<std::size_t>(index)].nodeType);
-                  }
-                  throw Error(ErrorCode::NotImplemented, "no builder yet for the configuration's components");
-                }});
+  registry.add({"bounding_box", "core",
+                "[uid] -> {min, max}: tight box of a component, or of the whole configuration with mirrored halves",
+                boundingBox});
 }
 
 }  // namespace airshape::query

@@ -146,4 +146,14 @@ double FuselageGeometry::surfaceArea() const {
   return total;
 }
 
+TopoDS_Shape FuselageGeometry::solid() const {
+  if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid");
+  std::vector<TopoDS_Face> faces = {segments_.front().startCap, segments_.back().endCap};
+  for (const FuselageSegment& segment : segments_) {
+    faces.push_back(segment.skin);
+    faces.push_back(segment.symmetryFace);
+  }
+  return geometry::sewnSolid(faces);
+}
+
 }  // namespace airshape::fuselage

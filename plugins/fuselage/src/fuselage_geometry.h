@@ -46,6 +46,9 @@ class FuselageGeometry {
   /// The skin only: no caps, no symmetry faces.
   double surfaceArea() const;
 
+  /// The whole fuselage as one solid: skins, symmetry faces, front and rear caps.
+  TopoDS_Shape solid() const;
+
  private:
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;

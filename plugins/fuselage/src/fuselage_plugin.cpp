@@ -1,6 +1,7 @@
 // The fuselage plugin: CPACS fuselages. It answers the fuselage ops that need no
 // geometry; the geometry ops are registered as pending until the fuselage builder exists.
 #include "airshape/configuration.h"
+#include "airshape/error.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
@@ -23,6 +24,14 @@ std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
 
 class FuselagePlugin final : public plugin::BasicPlugin {
  public:
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
+      for (const auto* fuselage : model::primaryModel(c).fuselages)
+        if (fuselage->uID == uid) return FuselageGeometry::of(c, *fuselage)->solid();
+      throw Error(ErrorCode::InvalidArgument, "no fuselage with uID '" + uid + "' in the model");
+    });
+  }
+
   FuselagePlugin()
       : BasicPlugin("fuselage", "0.1.0", "CPACS fuselages: profiles, sections, segments",
                     {{"fuselage", "fuselages/fuselage"}}) {}

@@ -1,7 +1,10 @@
 // The wing plugin: CPACS wings. It answers the wing ops that need no geometry; the
 // geometry ops are registered as pending until the wing builder exists.
+#include <BRepAlgoAPI_Cut.hxx>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
@@ -51,6 +54,14 @@ query::Handler pointQuery(Point point) {
 
 class WingPlugin final : public plugin::BasicPlugin {
  public:
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    shapes.add("wing", [](const Configuration& c, const std::string& uid) {
+      for (const auto* wing : model::primaryModel(c).wings)
+        if (wing->uID == uid) return WingShape::of(c, *wing)->solid();
+      throw Error(ErrorCode::InvalidArgument, "no wing with uID '" + uid + "' in the model");
+    });
+  }
+
   WingPlugin()
       : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
                     {{"wing", "wings/wing"}}) {}
@@ -146,8 +157,16 @@ class WingPlugin final : public plugin::BasicPlugin {
                             {"xsi", location->xsi},
                             {"on_top", location->onTop}};
                   }});
-    plugin::registerPendingOps(registry, "wing",
-                               {{"wing_wetted_area", "wing -> loft area outside the parent fuselage"}});
+    registry.add({"wing_wetted_area", "", "wing -> area of the wing solid outside its parent component",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    const auto shape = WingShape::of(c, wing);
+                    const std::string parent = wing.parentUID.value_or("");
+                    if (parent.empty() || c.components().find(parent) < 0) return shape->surfaceArea();
+                    const TopoDS_Shape cut =
+                        BRepAlgoAPI_Cut(c.shapes().shapeOf(c, wing.uID), c.shapes().shapeOf(c, parent)).Shape();
+                    return geometry::areaOf(cut);
+                  }});
   }
 };
 

@@ -79,4 +79,15 @@ double WingShape::surfaceArea() const {
   return total;
 }
 
+TopoDS_Shape WingShape::solid() const {
+  if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the wing has no segments, so no solid");
+  std::vector<TopoDS_Face> faces = {segments_.front().innerCap, segments_.back().outerCap};
+  for (const SegmentShape& segment : segments_) {
+    faces.push_back(segment.upper);
+    faces.push_back(segment.lower);
+    faces.push_back(segment.trailingEdge);
+  }
+  return geometry::sewnSolid(faces);
+}
+
 }  // namespace airshape::wing

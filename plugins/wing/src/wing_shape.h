@@ -36,6 +36,9 @@ class WingShape {
   /// Every face of the wing solid: skins, trailing-edge strips, root and tip caps.
   double surfaceArea() const;
 
+  /// The whole wing as one solid: every segment's skins and strips, the root and tip caps.
+  TopoDS_Shape solid() const;
+
  private:
   std::vector<SegmentShape> segments_;
 };

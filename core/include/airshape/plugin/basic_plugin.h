@@ -31,14 +31,4 @@ class BasicPlugin : public Plugin {
   std::vector<NodeType> nodeTypes_;
 };
 
-/// An op a plugin names but cannot answer yet, with its one-line summary.
-struct PendingOp {
-  const char* name;
-  const char* summary;
-};
-
-/// Registers ops that answer "no builder yet for <nodeType>": a plugin that builds nothing
-/// yet says so instead of pretending.
-void registerPendingOps(query::QueryRegistry& registry, const std::string& nodeType, const std::vector<PendingOp>& ops);
-
 }  // namespace airshape::plugin

@@ -6,6 +6,7 @@
 
 #include <boost/dll/alias.hpp>
 
+#include "airshape/component_shapes.h"
 #include "airshape/graph/component_graph.h"
 #include "airshape/query/query_registry.h"
 
@@ -13,7 +14,7 @@
 /// against; the host refuses plugins whose value differs from its own. Raise it whenever
 /// a change to Plugin, QueryRegistry, Configuration or the generated model breaks plugins.
 #ifndef AIRSHAPE_PLUGIN_ABI_VERSION
-#define AIRSHAPE_PLUGIN_ABI_VERSION 1
+#define AIRSHAPE_PLUGIN_ABI_VERSION 2
 #endif
 
 namespace airshape::plugin {
@@ -36,6 +37,8 @@ class Plugin {
   virtual std::vector<NodeType> nodeTypes() const = 0;
   /// Adds this plugin's query ops (their owner is this plugin's name).
   virtual void registerQueries(query::QueryRegistry& registry) const = 0;
+  /// Adds the builders of the solids of its node types (those it was granted are kept).
+  virtual void registerShapeBuilders(ComponentShapes& /*shapes*/) const {}
 };
 
 /// The plugin ABI version a plugin was compiled with (exported by AIRSHAPE_PLUGIN).

@@ -36,6 +36,7 @@ class PluginHost {
   const std::vector<LoadedPlugin>& plugins() const { return plugins_; }
   const std::vector<std::string>& messages() const { return messages_; }
   const query::QueryRegistry& queries() const { return queries_; }
+  const ComponentShapes& shapes() const { return shapes_; }
 
   /// Where components live: the standard CPACS locations plus those plugins add.
   std::vector<graph::ComponentLocation> componentLocations() const;
@@ -49,6 +50,7 @@ class PluginHost {
   std::vector<LoadedPlugin> plugins_;
   std::vector<std::string> messages_;
   query::QueryRegistry queries_;
+  ComponentShapes shapes_;
 };
 
 }  // namespace airshape::plugin

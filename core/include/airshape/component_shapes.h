@@ -1,0 +1,36 @@
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+
+#include <TopoDS_Shape.hxx>
+
+namespace airshape {
+
+class Configuration;
+
+/// Builds the solid of one component (by uID) of a configuration.
+using ShapeBuilder = std::function<TopoDS_Shape(const Configuration& configuration, const std::string& uid)>;
+
+/// The shape builders plugins register, by CPACS node type, so that any code (a wing asking
+/// for its parent fuselage, the bounding box, exports) gets a component's solid without
+/// knowing which plugin builds it.
+class ComponentShapes {
+ public:
+  void add(const std::string& nodeType, ShapeBuilder builder) { builders_[nodeType] = std::move(builder); }
+  /// The builder of a node type, or nullptr.
+  const ShapeBuilder* find(const std::string& nodeType) const {
+    const auto entry = builders_.find(nodeType);
+    return entry == builders_.end() ? nullptr : &entry->second;
+  }
+
+  /// The solid of the component with this uID, built once and cached in the configuration.
+  /// Throws Error when no component has the uID or no plugin builds its type.
+  TopoDS_Shape shapeOf(const Configuration& configuration, const std::string& uid) const;
+
+ private:
+  std::map<std::string, ShapeBuilder> builders_;
+};
+
+}  // namespace airshape
