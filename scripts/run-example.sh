@@ -6,6 +6,7 @@ scripts/build.sh
 example=examples/example-aircraft.xml
 ./build/bin/airshape info "$example"
 ./build/bin/airshape validate "$example"
+./build/bin/airshape build "$example"
 printf '%s\n' '{"op":"wing_count"}' '{"op":"wing_uid","wing":1}' '{"op":"wing_symmetry","wing":"MainWing"}' \
   '{"op":"wing_segment_count","wing":1}' '{"op":"fuselage_segment_count","fuselage":1}' \
   '{"op":"wing_upper_point","wing":1,"segment":1,"eta":0.5,"xsi":0.3}' '{"op":"wing_volume","wing":1}' \

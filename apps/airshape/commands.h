@@ -22,5 +22,6 @@ int runValidate(const Arguments& arguments, plugin::PluginHost& host);
 int runSave(const Arguments& arguments, plugin::PluginHost& host);
 int runPlugins(const Arguments& arguments, plugin::PluginHost& host);
 int runGordon(const Arguments& arguments, plugin::PluginHost& host);
+int runBuild(const Arguments& arguments, plugin::PluginHost& host);
 
 }  // namespace airshape::cli

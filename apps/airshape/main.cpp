@@ -36,6 +36,11 @@ const std::map<std::string, Command>& commands() {
        {runSave, "airshape save IN -o OUT [--force] | airshape save IN --in-place",
         "Loads IN into the model and writes it back, every node preserved. OUT is written\n"
         "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
+      {"build",
+       {runBuild, "airshape build FILE",
+        "Builds the solid of every component a plugin builds, in build order, and checks it\n"
+        "(BRepCheck); prints validity, volume and time per component. Exit status 1 if any\n"
+        "fails or is invalid."}},
       {"gordon",
        {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep",
         "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"

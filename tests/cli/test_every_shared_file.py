@@ -1,6 +1,6 @@
-"""Every wing and fuselage of every shared CPACS file builds or fails with a clear message; nothing crashes."""
+"""`airshape build` on every shared CPACS file: every component a plugin builds becomes a valid
+solid (BRepCheck) or fails with a line naming it; nothing crashes."""
 import glob
-import json
 import os
 
 import pytest
@@ -9,29 +9,26 @@ from conftest import SHARED, airshape, shared_path
 
 FILES = sorted(glob.glob(os.path.join(SHARED, "data", "cpacs", "*.xml")) +
                glob.glob(os.path.join(SHARED, "data", "cpacs-examples", "*.xml")))
-# What does not build yet, and why (docs/wing.md, docs/fuselage.md list the same).
-KNOWN = {"NACA0012": "nacaProfile airfoils (not CPACS 3.5)"}
-
-
-def answers(path, queries):
-    result = airshape("query", path, stdin="".join(json.dumps(q) + "\n" for q in queries))
-    return result, [json.loads(line) for line in result.stdout.splitlines()]
+# What does not build yet, and why (docs/wing.md and docs/fuselage.md list the same).
+KNOWN = [
+    "has neither pointList nor cst2D",  # nacaProfile airfoils (not CPACS 3.5)
+    "segments do not form one continuous chain",                     # left out on loading, as the reference does
+    "the wing has no segments",                                      # multiple_wings.xml: W13_EmptyWing
+]
+KNOWN_INVALID = {"simpletest_standard_profile_rectangle_circle_guides.cpacs.xml"}  # rectangle-to-circle skin, see docs
 
 
 @pytest.mark.parametrize("path", FILES or ["absent"], ids=lambda p: os.path.basename(p))
-def test_components_build_or_fail_clearly(path):
+def test_every_component_builds_or_fails_clearly(path):
     shared_path("data", "cpacs")
-    result, counts = answers(path, [{"op": "wing_count"}, {"op": "fuselage_count"}])
-    if result.returncode == 2:
-        assert len(result.stderr.strip().splitlines()) >= 1 and path in result.stderr
-        return  # not a CPACS 3 file: refused with one line
-    assert result.returncode == 0, result.stderr
-    queries = [{"op": "wing_volume", "wing": i} for i in range(1, counts[0]["ok"] + 1)]
-    queries += [{"op": "fuselage_volume", "fuselage": i} for i in range(1, counts[1]["ok"] + 1)]
-    result, replies = answers(path, queries)
-    assert result.returncode == 0 and len(replies) == len(queries), result.stderr[-500:]
-    for query, reply in zip(queries, replies):
-        if "ok" in reply:
-            assert reply["ok"] >= 0, (query, reply)  # 0 for a wing without segments (W13_EmptyWing)
-        else:
-            assert any(known in reply["error"] for known in KNOWN), (query, reply)
+    result = airshape("build", path)
+    if result.returncode == 2:  # not a CPACS 3 file: refused with one line naming it
+        assert path in result.stderr and "Traceback" not in result.stderr and "terminate" not in result.stderr
+        return
+    assert result.returncode in (0, 1), result.stderr[-500:]
+    for line in result.stdout.splitlines()[1:]:
+        assert "solid" in line or "no builder yet" in line or "FAILED" in line, line
+        if "FAILED" in line:
+            assert any(known in line for known in KNOWN), line
+        if "INVALID" in line:
+            assert os.path.basename(path) in KNOWN_INVALID, line

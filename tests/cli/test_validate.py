@@ -32,3 +32,9 @@ def test_loading_warns_about_what_it_ignores():
     assert result.returncode == 0
     assert "warning" in result.stderr and "duplicate uID 'F'" in result.stderr
     assert result.stdout.count("fuselage F") == 1, "the repeated fuselage is left out"
+
+
+def test_build_reports_valid_solids():
+    result = airshape("build", EXAMPLE)
+    assert result.returncode == 0, result.stdout
+    assert result.stdout.count("valid solid") == 2, result.stdout

@@ -58,6 +58,9 @@ class WingPlugin final : public plugin::BasicPlugin {
     shapes.add("wing", [](const Configuration& c, const std::string& uid) {
       for (const auto* wing : model::primaryModel(c).wings)
         if (wing->uID == uid) return WingShape::of(c, *wing)->solid();
+      for (const Problem& skipped : model::primaryModel(c).skipped)  // left out on loading: say why
+        if (skipped.message.find(uid) != std::string::npos)
+          throw Error(ErrorCode::InvalidModel, skipped.message, {}, skipped.xpath);
       throw Error(ErrorCode::InvalidArgument, "no wing with uID '" + uid + "' in the model");
     });
   }
