@@ -12,6 +12,19 @@
 
 namespace airshape::geometry {
 
+TColStd_Array1OfReal occKnots(const KnotVector& space) {
+  TColStd_Array1OfReal knots(1, static_cast<int>(space.knots.size()));
+  for (std::size_t i = 0; i < space.knots.size(); ++i) knots(static_cast<int>(i) + 1) = space.knots[i];
+  return knots;
+}
+
+TColStd_Array1OfInteger occMultiplicities(const KnotVector& space) {
+  TColStd_Array1OfInteger multiplicities(1, static_cast<int>(space.multiplicities.size()));
+  for (std::size_t i = 0; i < space.multiplicities.size(); ++i)
+    multiplicities(static_cast<int>(i) + 1) = space.multiplicities[i];
+  return multiplicities;
+}
+
 int KnotVector::poleCount() const {
   const int sum = std::accumulate(multiplicities.begin(), multiplicities.end(), 0);
   return periodic ? sum - multiplicities.back() : sum - degree - 1;
@@ -78,13 +91,8 @@ namespace {
 /// Calls visit(row, column, value) for every non-zero basis value at the parameters.
 template <class Visit>
 void forEachBasisValue(const KnotVector& space, const std::vector<double>& parameters, int derivative, Visit visit) {
-  const int knotCount = static_cast<int>(space.knots.size());
-  TColStd_Array1OfReal knots(1, knotCount);
-  TColStd_Array1OfInteger multiplicities(1, knotCount);
-  for (int i = 0; i < knotCount; ++i) {
-    knots(i + 1) = space.knots[static_cast<std::size_t>(i)];
-    multiplicities(i + 1) = space.multiplicities[static_cast<std::size_t>(i)];
-  }
+  const TColStd_Array1OfReal knots = occKnots(space);
+  const TColStd_Array1OfInteger multiplicities = occMultiplicities(space);
   TColStd_Array1OfReal flat(1, BSplCLib::KnotSequenceLength(multiplicities, space.degree, space.periodic));
   BSplCLib::KnotSequence(knots, multiplicities, space.degree, space.periodic, flat);
 

@@ -21,14 +21,7 @@ Handle(Geom_BSplineCurve) makeCurve(const KnotVector& space, const PoleMatrix& p
   TColgp_Array1OfPnt occPoles(1, static_cast<int>(poles.rows()));
   for (Eigen::Index i = 0; i < poles.rows(); ++i)
     occPoles(static_cast<int>(i) + 1) = gp_Pnt(poles(i, 0), poles(i, 1), poles(i, 2));
-  const int count = static_cast<int>(space.knots.size());
-  TColStd_Array1OfReal knots(1, count);
-  TColStd_Array1OfInteger multiplicities(1, count);
-  for (int i = 0; i < count; ++i) {
-    knots(i + 1) = space.knots[static_cast<std::size_t>(i)];
-    multiplicities(i + 1) = space.multiplicities[static_cast<std::size_t>(i)];
-  }
-  return new Geom_BSplineCurve(occPoles, knots, multiplicities, space.degree, space.periodic);
+  return new Geom_BSplineCurve(occPoles, occKnots(space), occMultiplicities(space), space.degree, space.periodic);
 }
 
 KnotVector knotVectorOf(const Geom_BSplineCurve& curve) {

@@ -19,13 +19,6 @@ std::vector<double> withoutClosingParameter(const std::vector<double>& parameter
   return space.periodic ? std::vector<double>(parameters.begin(), parameters.end() - 1) : parameters;
 }
 
-void fill(TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& multiplicities, const KnotVector& space) {
-  for (std::size_t i = 0; i < space.knots.size(); ++i) {
-    knots(static_cast<int>(i) + 1) = space.knots[i];
-    multiplicities(static_cast<int>(i) + 1) = space.multiplicities[i];
-  }
-}
-
 /// Interpolates a grid of points (rows: data sites, columns: other-direction index, as
 /// x,y,z triples) along the rows, returning the pole rows.
 Eigen::MatrixXd interpolateRows(const KnotVector& space, const std::vector<double>& parameters,
@@ -48,13 +41,8 @@ Handle(Geom_BSplineSurface)
   TColgp_Array2OfPnt grid(1, nu, 1, nv);
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) grid(i + 1, j + 1) = poles[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-  TColStd_Array1OfReal uKnots(1, static_cast<int>(uSpace.knots.size())),
-      vKnots(1, static_cast<int>(vSpace.knots.size()));
-  TColStd_Array1OfInteger uMults(1, static_cast<int>(uSpace.knots.size())),
-      vMults(1, static_cast<int>(vSpace.knots.size()));
-  fill(uKnots, uMults, uSpace);
-  fill(vKnots, vMults, vSpace);
-  return new Geom_BSplineSurface(grid, uKnots, vKnots, uMults, vMults, uSpace.degree, vSpace.degree, uSpace.periodic,
+  return new Geom_BSplineSurface(grid, occKnots(uSpace), occKnots(vSpace), occMultiplicities(uSpace),
+                                 occMultiplicities(vSpace), uSpace.degree, vSpace.degree, uSpace.periodic,
                                  vSpace.periodic);
 }
 

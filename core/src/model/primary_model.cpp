@@ -51,6 +51,13 @@ PrimaryModel primaryModel(const schema::CpacsType& cpacs) {
   return {};
 }
 
+void throwNotInModel(const Configuration& configuration, const std::string& uid, const std::string& kind) {
+  for (const Problem& skipped : primaryModel(configuration).skipped)  // left out on loading: say why
+    if (skipped.message.find(uid) != std::string::npos)
+      throw Error(ErrorCode::InvalidModel, skipped.message, {}, skipped.xpath);
+  throw Error(ErrorCode::InvalidArgument, "no " + kind + " with uID '" + uid + "' in the model");
+}
+
 const PrimaryModel& primaryModel(const Configuration& configuration) {
   return *configuration.cache().obtain<PrimaryModel>(
       "primary-model", [&] { return std::make_shared<const PrimaryModel>(primaryModel(configuration.cpacs())); });

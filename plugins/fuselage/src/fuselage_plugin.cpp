@@ -26,12 +26,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
-      for (const auto* fuselage : model::primaryModel(c).fuselages)
-        if (fuselage->uID == uid) return FuselageGeometry::of(c, *fuselage)->solid();
-      for (const Problem& skipped : model::primaryModel(c).skipped)  // left out on loading: say why
-        if (skipped.message.find(uid) != std::string::npos)
-          throw Error(ErrorCode::InvalidModel, skipped.message, {}, skipped.xpath);
-      throw Error(ErrorCode::InvalidArgument, "no fuselage with uID '" + uid + "' in the model");
+      return FuselageGeometry::of(c, model::findByUid(c, model::primaryModel(c).fuselages, uid, "fuselage"))->solid();
     });
   }
 

@@ -52,16 +52,21 @@ query::Handler pointQuery(Point point) {
   };
 }
 
+/// A per-segment measure query: wing, segment (index or uID, in chain order).
+query::Handler segmentMeasure(double (WingShape::*measure)(std::size_t) const) {
+  return [measure](Configuration& c, const Json& q) -> Json {
+    const schema::WingType& wing = selectWing(c, q);
+    const std::size_t segment =
+        query::selectByIndexOrUid(q, "segment", WingGeometry::of(c, wing)->segmentUids(), "segment");
+    return (*WingShape::of(c, wing).*measure)(segment);
+  };
+}
+
 class WingPlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("wing", [](const Configuration& c, const std::string& uid) {
-      for (const auto* wing : model::primaryModel(c).wings)
-        if (wing->uID == uid) return WingShape::of(c, *wing)->solid();
-      for (const Problem& skipped : model::primaryModel(c).skipped)  // left out on loading: say why
-        if (skipped.message.find(uid) != std::string::npos)
-          throw Error(ErrorCode::InvalidModel, skipped.message, {}, skipped.xpath);
-      throw Error(ErrorCode::InvalidArgument, "no wing with uID '" + uid + "' in the model");
+      return WingShape::of(c, model::findByUid(c, model::primaryModel(c).wings, uid, "wing"))->solid();
     });
   }
 
@@ -132,19 +137,9 @@ class WingPlugin final : public plugin::BasicPlugin {
     registry.add(
         {"wing_surface_area", "", "wing -> area of the whole loft (skins, caps, trailing-edge strips)",
          [](Configuration& c, const Json& q) -> Json { return WingShape::of(c, selectWing(c, q))->surfaceArea(); }});
-    registry.add({"wing_segment_volume", "", "wing, segment -> volume", [](Configuration& c, const Json& q) -> Json {
-                    const schema::WingType& wing = selectWing(c, q);
-                    const auto shape = WingShape::of(c, wing);
-                    return shape->segmentVolume(
-                        query::selectByIndexOrUid(q, "segment", WingGeometry::of(c, wing)->segmentUids(), "segment"));
-                  }});
+    registry.add({"wing_segment_volume", "", "wing, segment -> volume", segmentMeasure(&WingShape::segmentVolume)});
     registry.add({"wing_segment_surface_area", "", "wing, segment -> area of the upper and lower skin",
-                  [](Configuration& c, const Json& q) -> Json {
-                    const schema::WingType& wing = selectWing(c, q);
-                    const auto shape = WingShape::of(c, wing);
-                    return shape->segmentSurfaceArea(
-                        query::selectByIndexOrUid(q, "segment", WingGeometry::of(c, wing)->segmentUids(), "segment"));
-                  }});
+                  segmentMeasure(&WingShape::segmentSurfaceArea)});
     registry.add({"wing_segment_eta_xsi", "", "wing, x, y, z -> {segment, eta, xsi, on_top} of the nearest skin point",
                   [](Configuration& c, const Json& q) -> Json {
                     const schema::WingType& wing = selectWing(c, q);

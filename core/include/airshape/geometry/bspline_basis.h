@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
 
 namespace airshape::geometry {
 
@@ -20,6 +22,11 @@ struct KnotVector {
   double first() const { return knots.front(); }
   double last() const { return knots.back(); }
 };
+
+/// The distinct knots and their multiplicities as OCCT arrays (1-based), as its B-spline
+/// classes take them.
+TColStd_Array1OfReal occKnots(const KnotVector& space);
+TColStd_Array1OfInteger occMultiplicities(const KnotVector& space);
 
 /// Clamped knots for interpolation at `parameters` by averaging (de Boor): interior knot j
 /// is the mean of `degree` consecutive parameters, so the system matrix is well posed.
