@@ -17,13 +17,14 @@ def circle(count, half=False):
     return f"<pointList><x>{xs}</x><y>{ys}</y><z>{zs}</z></pointList>"
 
 
-def fuselage(uid, profile, length):
+def fuselage(uid, profile, length, stations=None):
+    stations = stations or [0, length / 2, length]
     sections = "".join(
         f'<section uID="{uid}S{i}"><name>s</name><transformation><translation><x>{x}</x></translation></transformation>'
         f'<elements><element uID="{uid}E{i}"><name>e</name><profileUID>{profile}</profileUID><transformation/></element>'
-        f"</elements></section>" for i, x in enumerate([0, length / 2, length]))
+        f"</elements></section>" for i, x in enumerate(stations))
     segments = "".join(f'<segment uID="{uid}G{i}"><name>g</name><fromElementUID>{uid}E{i}</fromElementUID>'
-                       f"<toElementUID>{uid}E{i + 1}</toElementUID></segment>" for i in range(2))
+                       f"<toElementUID>{uid}E{i + 1}</toElementUID></segment>" for i in range(len(stations) - 1))
     return (f'<fuselage uID="{uid}"><name>f</name><transformation/><sections>{sections}</sections>'
             f"<segments>{segments}</segments></fuselage>")
 
@@ -72,3 +73,23 @@ def test_bad_arguments_are_errors(tmp_path):
     result = airshape("query", str(path), stdin='{"op":"fuselage_point","fuselage":1,"segment":1,"eta":1.5,"zeta":0}\n'
                                                  '{"op":"fuselage_point","fuselage":1,"segment":3,"eta":0,"zeta":0}\n')
     assert all("error" in json.loads(line) for line in result.stdout.splitlines())
+
+
+def test_one_smooth_loft_through_unevenly_spaced_sections(tmp_path):
+    """Sections at x = 0, 2 and 17: the loft is one quadratic through all three profiles at
+    centripetal parameters (0, t1, 1), not two ruled pieces, so x is not linear in eta."""
+    path = tmp_path / "uneven.xml"
+    profiles = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(64)}</fuselageProfile></fuselageProfiles>'
+    path.write_text(HEADER + fuselage("F", "Circle", 17.0, stations=[0, 2, 17]) +
+                    f"</fuselages></model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
+    t1 = math.sqrt(2) / (math.sqrt(2) + math.sqrt(15))
+    # x(t) = a t + b t^2 through x(t1) = 2 and x(1) = 17.
+    b = (2 - 17 * t1) / (t1 * t1 - t1)
+    a = 17 - b
+    inner, outer, girth = ask(path, {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0.5, "zeta": 0.25},
+                              {"op": "fuselage_point", "fuselage": 1, "segment": 2, "eta": 0.6, "zeta": 0.25},
+                              {"op": "fuselage_circumference", "fuselage": 1, "segment": 2, "eta": 0.6})
+    for point, t in ((inner, 0.5 * t1), (outer, t1 + 0.6 * (1 - t1))):
+        assert math.isclose(point[0], a * t + b * t * t, abs_tol=1e-9)
+        assert math.isclose(point[1], 1.0, abs_tol=1e-9)
+    assert math.isclose(girth, 2 * math.pi, rel_tol=1e-5)

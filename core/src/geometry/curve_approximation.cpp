@@ -12,7 +12,8 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
   // assembled and solved in sparse form: linear in the number of control points.
   const Eigen::SparseMatrix<double> samples = sparseBasisMatrix(space, parameters);
   const Eigen::Index poles = samples.cols();
-  const auto fixed = static_cast<Eigen::Index>(constraints.parameters.size());
+  const auto pinned = static_cast<Eigen::Index>(constraints.parameters.size());
+  const Eigen::Index fixed = pinned + constraints.seamContinuity;
   const Eigen::SparseMatrix<double> normal = samples.transpose() * samples;
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index column = 0; column < normal.outerSize(); ++column)
@@ -20,14 +21,24 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
       entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
   Eigen::MatrixXd rightSide = Eigen::MatrixXd::Zero(poles + fixed, 3);
   rightSide.topRows(poles) = samples.transpose() * points;
-  if (fixed > 0) {
+  auto addConstraintEntry = [&](Eigen::Index row, Eigen::Index pole, double value) {
+    if (value == 0.0) return;
+    entries.emplace_back(static_cast<int>(poles + row), static_cast<int>(pole), value);
+    entries.emplace_back(static_cast<int>(pole), static_cast<int>(poles + row), value);
+  };
+  if (pinned > 0) {
     const Eigen::SparseMatrix<double> rows = sparseBasisMatrix(space, constraints.parameters);
     for (Eigen::Index column = 0; column < rows.outerSize(); ++column)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(rows, column); it; ++it) {
-        entries.emplace_back(static_cast<int>(poles + it.row()), static_cast<int>(it.col()), it.value());
-        entries.emplace_back(static_cast<int>(it.col()), static_cast<int>(poles + it.row()), it.value());
-      }
-    rightSide.bottomRows(fixed) = constraints.points;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(rows, column); it; ++it)
+        addConstraintEntry(it.row(), it.col(), it.value());
+    rightSide.block(poles, 0, pinned, 3) = constraints.points;
+  }
+  for (int derivative = 1; derivative <= constraints.seamContinuity; ++derivative) {
+    // The derivative at the start minus the one at the end is zero.
+    const Eigen::MatrixXd start = basisMatrix(space, {space.first()}, derivative);
+    const Eigen::MatrixXd end = basisMatrix(space, {space.last()}, derivative);
+    for (Eigen::Index pole = 0; pole < poles; ++pole)
+      addConstraintEntry(pinned + derivative - 1, pole, start(0, pole) - end(0, pole));
   }
   Eigen::SparseMatrix<double> system(poles + fixed, poles + fixed);
   system.setFromTriplets(entries.begin(), entries.end());

@@ -28,6 +28,24 @@ Eigen::MatrixXd interpolateRows(const KnotVector& space, const std::vector<doubl
 
 }  // namespace
 
+std::vector<double> averagedSectionParameters(const std::vector<Handle(Geom_BSplineCurve)>& compatibleCurves) {
+  const std::size_t sections = compatibleCurves.size();
+  if (sections < 2) throw Error(ErrorCode::InvalidArgument, "skinning needs at least two curves");
+  const int columns = compatibleCurves.front()->NbPoles();
+  std::vector<double> average(sections, 0.0);
+  for (int i = 1; i <= columns; ++i) {
+    std::vector<gp_Pnt> column;
+    for (const auto& curve : compatibleCurves) column.push_back(curve->Pole(i));
+    double length = 0.0;
+    for (std::size_t k = 1; k < sections; ++k) length += column[k].Distance(column[k - 1]);
+    // A column that does not move (all curves share the pole) counts as evenly spaced.
+    const std::vector<double> shares = length > 1e-10 ? chordParameters(column, 0.5) : std::vector<double>();
+    for (std::size_t k = 0; k < sections; ++k)
+      average[k] += (shares.empty() ? double(k) / double(sections - 1) : shares[k]) / columns;
+  }
+  return average;
+}
+
 KnotVector skinningSpace(const std::vector<double>& parameters, int degree, bool closed) {
   const int sites = static_cast<int>(parameters.size()) - (closed ? 1 : 0);
   if (sites < 2) throw Error(ErrorCode::InvalidArgument, "skinning needs at least two curves");

@@ -2,6 +2,7 @@
 
 #include <unordered_map>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAdaptor_Curve.hxx>
 
@@ -9,12 +10,15 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/compatibility.h"
+#include "airshape/geometry/skinning.h"
 #include "airshape/model/placed_elements.h"
 #include "airshape/model/segment_chain.h"
 
 namespace airshape::fuselage {
 
 namespace {
+
+constexpr double kFaceTolerance = 1e-7;
 
 /// The fuselage profiles of the document by uID, built on demand.
 class ProfileLibrary {
@@ -38,14 +42,6 @@ class ProfileLibrary {
   std::unordered_map<std::string, FuselageProfile> built_;
 };
 
-/// The profile curve at eta: the blend of the segment's compatible profiles, pole by pole.
-Handle(Geom_BSplineCurve) blend(const FuselageSegment& segment, double eta) {
-  Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(segment.start->Copy());
-  for (int i = 1; i <= curve->NbPoles(); ++i)
-    curve->SetPole(i, gp_Pnt((1.0 - eta) * segment.start->Pole(i).XYZ() + eta * segment.end->Pole(i).XYZ()));
-  return curve;
-}
-
 /// Whether a placed profile has shrunk to a point (a nose or tail tip).
 bool isPoint(const Geom_BSplineCurve& curve) {
   for (int i = 2; i <= curve.NbPoles(); ++i)
@@ -53,24 +49,11 @@ bool isPoint(const Geom_BSplineCurve& curve) {
   return true;
 }
 
-void buildFaces(FuselageSegment& segment) {
-  using namespace geometry;
-  segment.skin = ruledFace(segment.start, segment.end);
-  std::vector<Handle(Geom_BSplineCurve)> startBoundary = {segment.start}, endBoundary = {segment.end};
-  if (!segment.closed) {  // a half profile: closed by straight edges and a flat face between them
-    const auto startClosing = straightLine(segment.start->EndPoint(), segment.start->StartPoint());
-    const auto endClosing = straightLine(segment.end->EndPoint(), segment.end->StartPoint());
-    segment.symmetryFace = ruledFace(startClosing, endClosing);
-    startBoundary.push_back(startClosing);
-    endBoundary.push_back(endClosing);
-  }
-  try {  // a profile shrunk to a point needs no cap
-    if (!isPoint(*segment.start)) segment.startCap = planarFace(startBoundary);
-    if (!isPoint(*segment.end)) segment.endCap = planarFace(endBoundary);
-    segment.solid = sewnSolid({segment.skin, segment.symmetryFace, segment.startCap, segment.endCap});
-  } catch (const Error& error) {
-    segment.solidProblem = "segment '" + segment.uid + "': " + error.message();
-  }
+/// The loft's boundary curve at u over the v range [v0, v1], as a B-spline of its own.
+Handle(Geom_BSplineCurve) boundaryAlongV(const Geom_BSplineSurface& loft, double u, double v0, double v1) {
+  Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(loft.UIso(u));
+  curve->Segment(v0, v1);
+  return curve;
 }
 
 const TopoDS_Shape& solidOf(const FuselageSegment& segment) {
@@ -87,6 +70,8 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
     ProfileLibrary profiles(configuration.cpacs());
     const auto placed = model::placedElements(configuration, fuselage);
     if (!fuselage.segments) return std::shared_ptr<const FuselageGeometry>(geometry);
+    std::vector<Handle(Geom_BSplineCurve)> profileCurves;  // placed, in chain order
+    std::vector<std::string> segmentXpaths;
     std::vector<model::SegmentEnds> chain;
     for (const auto& segment : fuselage.segments->segment)
       chain.push_back({segment.fromElementUID, segment.toElementUID});
@@ -99,30 +84,75 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
                       {}, definition.xpath + "/" + which);
         const FuselageProfile& profile =
             profiles.get(found->second.element->profileUID, found->second.element->xpath + "/profileUID");
-        return std::make_pair(geometry::transformed(profile.curve, found->second.transform), profile.closed);
+        if (!profileCurves.empty() && profile.closed != geometry->closedProfiles_)
+          throw Error(ErrorCode::InvalidModel, "the fuselage mixes closed and open (half) profiles", {},
+                      definition.xpath);
+        geometry->closedProfiles_ = profile.closed;
+        return geometry::transformed(profile.curve, found->second.transform);
       };
-      const auto [start, startClosed] = end(definition.fromElementUID, "fromElementUID");
-      const auto [finish, endClosed] = end(definition.toElementUID, "toElementUID");
-      if (startClosed != endClosed)
-        throw Error(ErrorCode::InvalidModel, "the segment joins a closed and an open profile", {}, definition.xpath);
-      std::vector<Handle(Geom_BSplineCurve)> curves = {start, finish};
-      geometry::makeCompatible(curves);
-      FuselageSegment segment{definition.uID, curves[0], curves[1], startClosed, {}, {}, {}, {}, {}, {}};
-      buildFaces(segment);
-      geometry->segments_.push_back(segment);
+      if (profileCurves.empty()) profileCurves.push_back(end(definition.fromElementUID, "fromElementUID"));
+      profileCurves.push_back(end(definition.toElementUID, "toElementUID"));
       geometry->segmentUids_.push_back(definition.uID);
+      segmentXpaths.push_back(definition.xpath);
     }
+    geometry->loft(profileCurves, segmentXpaths);
     return std::shared_ptr<const FuselageGeometry>(geometry);
   });
 }
 
-gp_Pnt FuselageGeometry::point(std::size_t segment, double eta, double zeta) const {
+void FuselageGeometry::loft(std::vector<Handle(Geom_BSplineCurve)> profiles,
+                            const std::vector<std::string>& segmentXpaths) {
+  using namespace geometry;
+  makeCompatible(profiles);
+  // One smooth skin through every profile (cubic where there are enough of them), so the
+  // fuselage has no creases at its sections; each segment is the skin between two of them.
+  const std::vector<double> sites = averagedSectionParameters(profiles);
+  loft_ = skinCurves(profiles, sites, skinningSpace(sites, 3, false));
+  for (std::size_t k = 0; k < segmentUids_.size(); ++k) {
+    FuselageSegment segment;
+    segment.uid = segmentUids_[k];
+    segment.vStart = sites[k];
+    segment.vEnd = sites[k + 1];
+    if (!(segment.vEnd > segment.vStart))
+      throw Error(ErrorCode::InvalidModel, "the segment's two profiles coincide", {}, segmentXpaths[k]);
+    buildSegmentFaces(segment, profiles[k], profiles[k + 1]);
+    segments_.push_back(segment);
+  }
+}
+
+void FuselageGeometry::buildSegmentFaces(FuselageSegment& segment, const Handle(Geom_BSplineCurve) & startProfile,
+                                         const Handle(Geom_BSplineCurve) & endProfile) const {
+  using namespace geometry;
+  double u0, u1, v0, v1;
+  loft_->Bounds(u0, u1, v0, v1);
+  segment.skin = BRepBuilderAPI_MakeFace(loft_, u0, u1, segment.vStart, segment.vEnd, kFaceTolerance).Face();
+  std::vector<Handle(Geom_BSplineCurve)> startBoundary = {startProfile}, endBoundary = {endProfile};
+  if (!closedProfiles_) {  // a half profile: closed by straight edges and a flat face between them
+    segment.symmetryFace = ruledFace(boundaryAlongV(*loft_, u0, segment.vStart, segment.vEnd),
+                                     boundaryAlongV(*loft_, u1, segment.vStart, segment.vEnd));
+    startBoundary.push_back(straightLine(startProfile->EndPoint(), startProfile->StartPoint()));
+    endBoundary.push_back(straightLine(endProfile->EndPoint(), endProfile->StartPoint()));
+  }
+  try {  // a profile shrunk to a point needs no cap
+    if (!isPoint(*startProfile)) segment.startCap = planarFace(startBoundary);
+    if (!isPoint(*endProfile)) segment.endCap = planarFace(endBoundary);
+    segment.solid = sewnSolid({segment.skin, segment.symmetryFace, segment.startCap, segment.endCap});
+  } catch (const Error& error) {
+    segment.solidProblem = "segment '" + segment.uid + "': " + error.message();
+  }
+}
+
+double FuselageGeometry::vAt(std::size_t segment, double eta) const {
   const FuselageSegment& s = segments_[segment];
-  return gp_Pnt((1.0 - eta) * s.start->Value(zeta).XYZ() + eta * s.end->Value(zeta).XYZ());
+  return s.vStart + eta * (s.vEnd - s.vStart);
+}
+
+gp_Pnt FuselageGeometry::point(std::size_t segment, double eta, double zeta) const {
+  return loft_->Value(zeta, vAt(segment, eta));
 }
 
 double FuselageGeometry::circumference(std::size_t segment, double eta) const {
-  GeomAdaptor_Curve curve(blend(segments_[segment], eta));
+  GeomAdaptor_Curve curve(loft_->VIso(vAt(segment, eta)));
   return GCPnts_AbscissaPoint::Length(curve, 1e-10);
 }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
@@ -16,18 +18,18 @@ class Configuration;
 
 namespace airshape::fuselage {
 
-/// One segment of a fuselage: its two profile curves in global coordinates, the ruled skin
-/// between them (and the flat symmetry face of half profiles), closed by planar caps.
+/// One segment of a fuselage: its share [vStart, vEnd] of the fuselage's loft, the skin
+/// faces there (and the flat symmetry face of half profiles), closed by planar caps.
 struct FuselageSegment {
   std::string uid;
-  Handle(Geom_BSplineCurve) start, end;  ///< placed profiles, made compatible
-  bool closed = true;
+  double vStart = 0.0, vEnd = 1.0;
   TopoDS_Face skin, symmetryFace, startCap, endCap;
   TopoDS_Shape solid;
   std::string solidProblem;  ///< why there is no solid (the points and lengths still work)
 };
 
-/// A fuselage as the queries need it: segments in chain order.
+/// A fuselage as the queries need it: one smooth loft through all its profiles (u is the
+/// profile parameter zeta, v runs from nose to tail), cut into segments in chain order.
 class FuselageGeometry {
  public:
   static std::shared_ptr<const FuselageGeometry> of(const Configuration& configuration,
@@ -36,7 +38,7 @@ class FuselageGeometry {
   const std::vector<FuselageSegment>& segments() const { return segments_; }
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
-  /// The point at (eta, zeta): the straight blend of the two profiles at curve parameter zeta.
+  /// The loft's point at profile parameter zeta, eta of the way through the segment's v range.
   gp_Pnt point(std::size_t segment, double eta, double zeta) const;
   /// Length of the profile of the segment at eta (the closing edge of half profiles excluded).
   double circumference(std::size_t segment, double eta) const;
@@ -50,6 +52,14 @@ class FuselageGeometry {
   TopoDS_Shape solid() const;
 
  private:
+  /// Skins the placed profiles (chain order) and cuts the skin into the segments.
+  void loft(std::vector<Handle(Geom_BSplineCurve)> profiles, const std::vector<std::string>& segmentXpaths);
+  double vAt(std::size_t segment, double eta) const;
+  void buildSegmentFaces(FuselageSegment& segment, const Handle(Geom_BSplineCurve) & startProfile,
+                         const Handle(Geom_BSplineCurve) & endProfile) const;
+
+  Handle(Geom_BSplineSurface) loft_;
+  bool closedProfiles_ = true;
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;
 };

@@ -7,6 +7,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/uniform_refit.h"
 #include "airshape/model/placement.h"
 
 namespace airshape::fuselage {
@@ -39,7 +40,10 @@ FuselageProfile fromPointList(const schema::CurvePointListXYZType& list, const s
     points.back() = seam;
   }
   const std::vector<double> parameters = geometry::chordParameters(points, 0.5);
-  profile.curve = geometry::interpolateCurve(points, parameters, 3, profile.closed);
+  // Re-fitted on uniform knots like the reference does: the loft through all profiles then
+  // needs few knots, and the numbers agree with the reference's.
+  profile.curve =
+      geometry::refitOnUniformSpans(*geometry::interpolateCurve(points, parameters, 3, profile.closed), parameters);
   return profile;
 }
 

@@ -6,10 +6,12 @@
 
 namespace airshape::geometry {
 
-/// Points a curve must pass through exactly, at given parameters.
+/// Points a curve must pass through exactly, at given parameters, and for a closed curve
+/// the derivatives (1 to seamContinuity) that must agree at the two ends of its range.
 struct InterpolationConstraints {
   std::vector<double> parameters;
-  PoleMatrix points;
+  PoleMatrix points = PoleMatrix(0, 3);
+  int seamContinuity = 0;
 };
 
 /// Least-squares approximation: the control points of `space` that minimise the squared

@@ -16,6 +16,11 @@ namespace airshape::geometry {
 /// Gordon surface uses one space per direction for skinning and for its tensor part alike.
 KnotVector skinningSpace(const std::vector<double>& parameters, int degree, bool closed);
 
+/// Where compatible curves sit along a skin: centripetal parameters of every column of
+/// corresponding control points, averaged over the columns and normalised to [0, 1]. Curves
+/// that are farther apart get more parameter room, so the skin does not overshoot.
+std::vector<double> averagedSectionParameters(const std::vector<Handle(Geom_BSplineCurve)>& compatibleCurves);
+
 /// Skins compatible curves (made so first, see makeCompatible) into a surface whose
 /// u-direction is the curves' and whose v-iso-curve at parameters[k] is curve k; `space`
 /// comes from skinningSpace. Degree 1 gives a ruled surface.
