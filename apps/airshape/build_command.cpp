@@ -7,6 +7,7 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
 #include "open_configuration.h"

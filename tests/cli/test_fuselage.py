@@ -93,3 +93,87 @@ def test_one_smooth_loft_through_unevenly_spaced_sections(tmp_path):
         assert math.isclose(point[0], a * t + b * t * t, abs_tol=1e-9)
         assert math.isclose(point[1], 1.0, abs_tol=1e-9)
     assert math.isclose(girth, 2 * math.pi, rel_tol=1e-5)
+
+
+def guided_cylinder(path, second_segment_continuity):
+    """A cylinder of unit circles at x = 0, 5, 10 with four guides at relative circumference
+    0, 1/4, 1/2, 3/4. Along the top (rc 0) the first segment's guide bulges out by 0.1 at its
+    middle and the second's is straight; the others are straight."""
+    def guide(uid, segment, rc, profile):
+        start = (f"<fromRelativeCircumference>{rc}</fromRelativeCircumference>" if segment == 0 else
+                 f"<fromGuideCurveUID>G{rc}S0</fromGuideCurveUID>" +
+                 (f"<continuity>{second_segment_continuity}</continuity>"
+                  if second_segment_continuity and rc == 0 else ""))
+        return (f'<guideCurve uID="{uid}"><name>g</name><guideCurveProfileUID>{profile}</guideCurveProfileUID>'
+                f"{start}<toRelativeCircumference>{rc}</toRelativeCircumference></guideCurve>")
+
+    def segment(i):
+        curves = "".join(guide(f"G{rc}S{i}", i, rc, "Bulge" if (rc == 0 and i == 0) else "Straight")
+                         for rc in (0, 0.25, 0.5, 0.75))
+        return (f'<segment uID="G{i}"><name>g</name><fromElementUID>FE{i}</fromElementUID>'
+                f"<toElementUID>FE{i + 1}</toElementUID><guideCurves>{curves}</guideCurves></segment>")
+
+    sections = "".join(
+        f'<section uID="FS{i}"><name>s</name><transformation><translation><x>{x}</x></translation></transformation>'
+        f'<elements><element uID="FE{i}"><name>e</name><profileUID>Circle</profileUID><transformation/></element>'
+        f"</elements></section>" for i, x in enumerate([0, 5, 10]))
+    fuselage = (f'<fuselage uID="F"><name>f</name><transformation/><sections>{sections}</sections>'
+                f"<segments>{segment(0)}{segment(1)}</segments></fuselage>")
+    # Alpha runs along global z; the circle's "diameter line" is 2 long, so 0.05 lifts by 0.1.
+    guide_profiles = "".join(
+        f'<guideCurveProfile uID="{uid}"><name>p</name><pointList><rX>0;{alpha};0</rX><rY>0.25;0.5;0.75</rY>'
+        f"<rZ>0;0;0</rZ></pointList></guideCurveProfile>" for uid, alpha in (("Bulge", 0.05), ("Straight", 0)))
+    profiles = (f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(64)}</fuselageProfile>'
+                f"</fuselageProfiles><guideCurves>{guide_profiles}</guideCurves>")
+    path.write_text(HEADER + fuselage + f"</fuselages></model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
+
+
+def test_guide_curves_shape_the_loft(tmp_path):
+    path = tmp_path / "guided.xml"
+    guided_cylinder(path, "C0")
+    bulge, straight_after, side, girth_at_section = ask(
+        path, {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0.5, "zeta": 0.0},
+        {"op": "fuselage_point", "fuselage": 1, "segment": 2, "eta": 0.5, "zeta": 0.0},
+        {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0.5, "zeta": 0.25},
+        {"op": "fuselage_circumference", "fuselage": 1, "segment": 2, "eta": 0.0})
+    # The loft passes through the guide's middle point, lifted 0.1 above the cylinder.
+    assert all(math.isclose(a, b, abs_tol=1e-4) for a, b in zip(bulge, [2.5, 0, 1.1])), bulge
+    # C0: the second segment's guide is straight on its own, so the top stays at z = 1.
+    assert math.isclose(straight_after[2], 1.0, abs_tol=1e-4), straight_after
+    # A straight guide at the side keeps the side where it was.
+    assert all(math.isclose(a, b, abs_tol=1e-4) for a, b in zip(side, [2.5, 1, 0])), side
+    # At a section the loft is the profile itself.
+    assert math.isclose(girth_at_section, 2 * math.pi, rel_tol=1e-4)
+    result = airshape("build", str(path))
+    assert result.returncode == 0 and "valid solid" in result.stdout, result.stdout + result.stderr
+
+
+def top_slopes_at_the_section(path):
+    """The slope dz/dx of the top line just before and just after x = 5."""
+    before_end, end, start, after_start = ask(
+        path, *({"op": "fuselage_point", "fuselage": 1, "segment": seg, "eta": eta, "zeta": 0.0}
+                for seg, eta in ((1, 0.99), (1, 1.0), (2, 0.0), (2, 0.01))))
+    return ((end[2] - before_end[2]) / (end[0] - before_end[0]),
+            (after_start[2] - start[2]) / (after_start[0] - start[0]))
+
+
+def test_c0_continuity_leaves_a_kink_in_the_guide(tmp_path):
+    """With C0 the top guide turns at the section (the bulge's cubic arrives with a slope, the
+    straight piece leaves level); without it the guide is one smooth cubic through both."""
+    kinked, smooth = tmp_path / "kinked.xml", tmp_path / "smooth.xml"
+    guided_cylinder(kinked, "C0")
+    guided_cylinder(smooth, None)
+    before, after = top_slopes_at_the_section(kinked)
+    assert abs(before - after) > 0.05 and abs(after) < 1e-3, (before, after)
+    before, after = top_slopes_at_the_section(smooth)
+    assert abs(before - after) < 0.01, (before, after)
+
+
+def test_guide_curve_errors_name_the_curve(tmp_path):
+    path = tmp_path / "broken.xml"
+    guided_cylinder(path, "C0")
+    path.write_text(path.read_text().replace("<guideCurveProfileUID>Straight</guideCurveProfileUID>",
+                                             "<guideCurveProfileUID>Nowhere</guideCurveProfileUID>", 1))
+    result = airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n')
+    answer = json.loads(result.stdout)
+    assert "error" in answer and "Nowhere" in answer["error"] and "guideCurve" in answer["error"], answer

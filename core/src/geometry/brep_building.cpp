@@ -7,9 +7,7 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
-#include <BRepGProp.hxx>
 #include <BRepLib.hxx>
-#include <GProp_GProps.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -27,7 +25,6 @@ namespace {
 
 constexpr double kTolerance = 1e-7;
 constexpr double kSewingTolerance = 1e-6;
-constexpr double kIntegrationAccuracy = 1e-9;
 
 }  // namespace
 
@@ -78,20 +75,6 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces) {
   TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
   BRepLib::OrientClosedSolid(solid);  // outward normals, so that Boolean operations see the inside
   return solid;
-}
-
-double volumeOf(const TopoDS_Shape& solid) {
-  if (solid.IsNull()) return 0.0;
-  GProp_GProps properties;
-  BRepGProp::VolumeProperties(solid, properties, kIntegrationAccuracy);
-  return std::abs(properties.Mass());
-}
-
-double areaOf(const TopoDS_Shape& faces) {
-  if (faces.IsNull()) return 0.0;
-  GProp_GProps properties;
-  BRepGProp::SurfaceProperties(faces, properties, kIntegrationAccuracy);
-  return properties.Mass();
 }
 
 }  // namespace airshape::geometry

@@ -214,7 +214,8 @@ CurveCrossing closestApproach(const Geom_BSplineCurve& a, const Geom_BSplineCurv
 }
 
 CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
-                               std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance) {
+                               std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance,
+                               const KnownCrossings* known) {
   if (profiles.size() < 2 || guides.size() < 2)
     throw Error(ErrorCode::InvalidArgument, "a curve network needs at least two profiles and two guides (got " +
                                                 std::to_string(profiles.size()) + " and " +
@@ -225,8 +226,12 @@ CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
   network.guideParameters.resize(K, L);
   for (Eigen::Index k = 0; k < K; ++k)
     for (Eigen::Index l = 0; l < L; ++l) {
-      const CurveCrossing crossing =
-          closestApproach(*profiles[static_cast<std::size_t>(k)], *guides[static_cast<std::size_t>(l)]);
+      const Geom_BSplineCurve& profile = *profiles[static_cast<std::size_t>(k)];
+      const Geom_BSplineCurve& guide = *guides[static_cast<std::size_t>(l)];
+      const CurveCrossing crossing = known ? CurveCrossing{known->profileParameters(k, l), known->guideParameters(k, l),
+                                                           profile.Value(known->profileParameters(k, l))
+                                                               .Distance(guide.Value(known->guideParameters(k, l)))}
+                                           : closestApproach(profile, guide);
       if (crossing.distance > tolerance) {
         throw Error(ErrorCode::InvalidArgument, "guide " + std::to_string(l + 1) + " misses profile " +
                                                     std::to_string(k + 1) + " by " + std::to_string(crossing.distance) +

@@ -44,10 +44,10 @@ std::vector<double> sites(std::vector<double> targets, bool closed) {
 
 GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
                                  const std::vector<Handle(Geom_BSplineCurve)>& guides,
-                                 const GordonTolerances& tolerances) {
+                                 const GordonTolerances& tolerances, const KnownCrossings* known) {
   GordonSurface result;
   auto start = Clock::now();
-  const CurveNetwork network = buildCurveNetwork(profiles, guides, tolerances.crossing);
+  const CurveNetwork network = buildCurveNetwork(profiles, guides, tolerances.crossing, known);
   for (Eigen::Index k = 0; k < network.profileParameters.rows(); ++k)
     for (Eigen::Index l = 0; l < network.profileParameters.cols(); ++l) {
       const gp_Pnt onProfile = network.profiles[static_cast<std::size_t>(k)]->Value(network.profileParameters(k, l));
@@ -88,6 +88,8 @@ GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& p
       gordon->SetPole(i, j,
                       gp_Pnt(parts[0]->Pole(i, j).XYZ() + parts[1]->Pole(i, j).XYZ() - parts[2]->Pole(i, j).XYZ()));
   result.surface = gordon;
+  result.profileSites = g.targets;
+  result.guideSites = f.targets;
   result.timings.combination = secondsSince(start);
   return result;
 }

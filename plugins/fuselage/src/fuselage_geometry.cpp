@@ -4,13 +4,17 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomAdaptor_Curve.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/compatibility.h"
+#include "airshape/geometry/gordon_surface.h"
 #include "airshape/geometry/skinning.h"
+#include "airshape/model/guide_curves.h"
 #include "airshape/model/placed_elements.h"
 #include "airshape/model/segment_chain.h"
 
@@ -70,7 +74,8 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
     ProfileLibrary profiles(configuration.cpacs());
     const auto placed = model::placedElements(configuration, fuselage);
     if (!fuselage.segments) return std::shared_ptr<const FuselageGeometry>(geometry);
-    std::vector<Handle(Geom_BSplineCurve)> profileCurves;  // placed, in chain order
+    std::vector<PlacedProfile> sections;  // in chain order
+    std::vector<const schema::GuideCurvesType*> guidesPerSegment;
     std::vector<std::string> segmentXpaths;
     std::vector<model::SegmentEnds> chain;
     for (const auto& segment : fuselage.segments->segment)
@@ -84,40 +89,71 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
                       {}, definition.xpath + "/" + which);
         const FuselageProfile& profile =
             profiles.get(found->second.element->profileUID, found->second.element->xpath + "/profileUID");
-        if (!profileCurves.empty() && profile.closed != geometry->closedProfiles_)
+        if (!sections.empty() && profile.closed != geometry->closedProfiles_)
           throw Error(ErrorCode::InvalidModel, "the fuselage mixes closed and open (half) profiles", {},
                       definition.xpath);
         geometry->closedProfiles_ = profile.closed;
-        return geometry::transformed(profile.curve, found->second.transform);
+        return PlacedProfile{geometry::transformed(profile.curve, found->second.transform), found->second.transform,
+                             &profile};
       };
-      if (profileCurves.empty()) profileCurves.push_back(end(definition.fromElementUID, "fromElementUID"));
-      profileCurves.push_back(end(definition.toElementUID, "toElementUID"));
+      if (sections.empty()) sections.push_back(end(definition.fromElementUID, "fromElementUID"));
+      sections.push_back(end(definition.toElementUID, "toElementUID"));
+      guidesPerSegment.push_back(definition.guideCurves ? &*definition.guideCurves : nullptr);
       geometry->segmentUids_.push_back(definition.uID);
       segmentXpaths.push_back(definition.xpath);
     }
-    geometry->loft(profileCurves, segmentXpaths);
+    if (model::hasGuideCurves(guidesPerSegment))
+      geometry->loftWithGuides(sections, fuselageGuideCurves(configuration.cpacs(), sections, guidesPerSegment));
+    else
+      geometry->loft(sections);
+    geometry->cutIntoSegments(segmentXpaths);
     return std::shared_ptr<const FuselageGeometry>(geometry);
   });
 }
 
-void FuselageGeometry::loft(std::vector<Handle(Geom_BSplineCurve)> profiles,
-                            const std::vector<std::string>& segmentXpaths) {
+void FuselageGeometry::loft(const std::vector<PlacedProfile>& sections) {
   using namespace geometry;
-  makeCompatible(profiles);
+  for (const PlacedProfile& section : sections) profiles_.push_back(section.curve);
+  makeCompatible(profiles_);
   // One smooth skin through every profile (cubic where there are enough of them), so the
   // fuselage has no creases at its sections; each segment is the skin between two of them.
-  const std::vector<double> sites = averagedSectionParameters(profiles);
-  loft_ = skinCurves(profiles, sites, skinningSpace(sites, 3, false));
+  sectionSites_ = averagedSectionParameters(profiles_);
+  loft_ = skinCurves(profiles_, sectionSites_, skinningSpace(sectionSites_, 3, false));
+}
+
+void FuselageGeometry::loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides) {
+  for (const PlacedProfile& section : sections) profiles_.push_back(section.curve);
+  const geometry::GordonSurface gordon = geometry::buildGordonSurface(profiles_, guides.curves, {}, &guides.crossings);
+  if (gordon.profileSites.size() != profiles_.size())
+    throw Error(ErrorCode::InvalidModel, "the guide curves do not cross every profile of the fuselage once");
+  loft_ = gordon.surface;
+  sectionSites_ = gordon.profileSites;
+  guided_ = true;
+}
+
+void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXpaths) {
   for (std::size_t k = 0; k < segmentUids_.size(); ++k) {
     FuselageSegment segment;
     segment.uid = segmentUids_[k];
-    segment.vStart = sites[k];
-    segment.vEnd = sites[k + 1];
+    segment.vStart = sectionSites_[k];
+    segment.vEnd = sectionSites_[k + 1];
     if (!(segment.vEnd > segment.vStart))
       throw Error(ErrorCode::InvalidModel, "the segment's two profiles coincide", {}, segmentXpaths[k]);
-    buildSegmentFaces(segment, profiles[k], profiles[k + 1]);
+    buildSegmentFaces(segment, profileOnLoft(k), profileOnLoft(k + 1));
     segments_.push_back(segment);
   }
+}
+
+Handle(Geom_BSplineCurve) FuselageGeometry::profileOnLoft(std::size_t section) const {
+  return Handle(Geom_BSplineCurve)::DownCast(loft_->VIso(sectionSites_[section]));
+}
+
+double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const {
+  if (!guided_) return zeta;
+  // The Gordon surface runs the profiles at parameters of its own: find where this
+  // profile's point at zeta lies on the surface's iso-curve there.
+  GeomAPI_ProjectPointOnCurve projection(profiles_[section]->Value(zeta), loft_->VIso(sectionSites_[section]));
+  return projection.NbPoints() > 0 ? projection.LowerDistanceParameter() : zeta;
 }
 
 void FuselageGeometry::buildSegmentFaces(FuselageSegment& segment, const Handle(Geom_BSplineCurve) & startProfile,
@@ -148,7 +184,8 @@ double FuselageGeometry::vAt(std::size_t segment, double eta) const {
 }
 
 gp_Pnt FuselageGeometry::point(std::size_t segment, double eta, double zeta) const {
-  return loft_->Value(zeta, vAt(segment, eta));
+  const double u = (1.0 - eta) * loftParameterOf(segment, zeta) + eta * loftParameterOf(segment + 1, zeta);
+  return loft_->Value(u, vAt(segment, eta));
 }
 
 double FuselageGeometry::circumference(std::size_t segment, double eta) const {

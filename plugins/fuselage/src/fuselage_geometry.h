@@ -10,6 +10,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "airshape/model/placement.h"
+#include "fuselage_guide_curves.h"
 #include "fuselage_profile.h"
 
 namespace airshape {
@@ -52,13 +53,23 @@ class FuselageGeometry {
   TopoDS_Shape solid() const;
 
  private:
-  /// Skins the placed profiles (chain order) and cuts the skin into the segments.
-  void loft(std::vector<Handle(Geom_BSplineCurve)> profiles, const std::vector<std::string>& segmentXpaths);
+  /// Skins the placed profiles (chain order): the loft without guide curves.
+  void loft(const std::vector<PlacedProfile>& sections);
+  /// The Gordon surface through the placed profiles and the guide curves.
+  void loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides);
+  void cutIntoSegments(const std::vector<std::string>& segmentXpaths);
+  /// The loft's iso-curve where section k lies (its profile, as the loft has it).
+  Handle(Geom_BSplineCurve) profileOnLoft(std::size_t section) const;
+  /// The loft's u where section k's profile has parameter zeta.
+  double loftParameterOf(std::size_t section, double zeta) const;
   double vAt(std::size_t segment, double eta) const;
   void buildSegmentFaces(FuselageSegment& segment, const Handle(Geom_BSplineCurve) & startProfile,
                          const Handle(Geom_BSplineCurve) & endProfile) const;
 
   Handle(Geom_BSplineSurface) loft_;
+  std::vector<Handle(Geom_BSplineCurve)> profiles_;  ///< placed, in chain order
+  std::vector<double> sectionSites_;                 ///< the loft's v at each profile
+  bool guided_ = false;
   bool closedProfiles_ = true;
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;

@@ -3,12 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
+
+#include <BSplCLib.hxx>
+#include <TColStd_Array1OfReal.hxx>
 
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/kinked_interpolation.h"
 #include "airshape/geometry/uniform_refit.h"
 #include "airshape/model/placement.h"
+#include "airshape/xml/text.h"
 
 namespace airshape::fuselage {
 
@@ -17,33 +23,102 @@ namespace {
 constexpr double kClosureShare = 0.005;
 constexpr double kSamePoint = 1e-7;
 
-FuselageProfile fromPointList(const schema::CurvePointListXYZType& list, const std::string& xpath) {
+/// Indices from a CPACS list ("1;3"), 0-based as the reference reads them.
+std::vector<int> indicesOf(const std::string& text, const std::string& xpath) {
+  std::vector<int> indices;
+  for (double value : model::parseVector(text, xpath)) indices.push_back(static_cast<int>(std::lround(value)));
+  return indices;
+}
+
+/// Whether the profile carries the reference's non-standard <symmetry>half</symmetry>: its
+/// points are one half, to be mirrored in y (the schema's own symmetry values are planes).
+bool isMirroredHalf(const schema::ProfileGeometryType& definition) {
+  if (!definition.binding) return false;
+  const auto* symmetry = xml::firstChild(*definition.binding, "symmetry");
+  return symmetry && xml::text(*symmetry) == "half";
+}
+
+/// The profile's points with the indices of the list they came from (repeats dropped).
+std::vector<gp_Pnt> readPoints(const schema::CurvePointListXYZType& list, const std::string& xpath,
+                               std::vector<int>& listIndex) {
   const std::vector<double> x = model::parseVector(list.x, xpath + "/x"), y = model::parseVector(list.y, xpath + "/y"),
                             z = model::parseVector(list.z, xpath + "/z");
   if (x.size() != y.size() || x.size() != z.size())
     throw Error(ErrorCode::InvalidModel, "x, y and z have different lengths", {}, xpath);
   std::vector<gp_Pnt> points;
   for (std::size_t i = 0; i < x.size(); ++i)
-    if (points.empty() || points.back().Distance(gp_Pnt(x[i], y[i], z[i])) >= kSamePoint)
+    if (points.empty() || points.back().Distance(gp_Pnt(x[i], y[i], z[i])) >= kSamePoint) {
       points.emplace_back(x[i], y[i], z[i]);
+      listIndex.push_back(static_cast<int>(i));
+    }
   if (points.size() < 3)
     throw Error(ErrorCode::InvalidModel, "a fuselage profile needs at least three points", {}, xpath);
+  return points;
+}
+
+/// Where in `points` the point of list index `index` is; throws naming `xpath` when none.
+int pointIndexOf(int index, const std::vector<int>& listIndex, const std::string& xpath) {
+  const auto found = std::find(listIndex.begin(), listIndex.end(), index);
+  if (found == listIndex.end())
+    throw Error(ErrorCode::InvalidModel, "index " + std::to_string(index) + " names no point of the list", {}, xpath);
+  return static_cast<int>(found - listIndex.begin());
+}
+
+FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
+  const schema::CurvePointListXYZType& list = *definition.pointList;
+  const std::string xpath = list.xpath;
+  std::vector<int> listIndex;
+  std::vector<gp_Pnt> points = readPoints(list, xpath, listIndex);
+  FuselageProfile profile;
+  profile.points = points;
+  const bool mirrored = isMirroredHalf(definition);
+  if (mirrored)  // the other half, back to the first point
+    for (std::size_t i = points.size() - 1; i-- > 0;) points.emplace_back(points[i].X(), -points[i].Y(), points[i].Z());
 
   double size = 0.0;
   for (const gp_Pnt& a : points)
     for (const gp_Pnt& b : points) size = std::max(size, a.Distance(b));
-  FuselageProfile profile;
   profile.closed = points.front().Distance(points.back()) < kClosureShare * size;
   if (profile.closed) {
     const gp_Pnt seam((points.front().XYZ() + points.back().XYZ()) / 2.0);
     points.front() = seam;
     points.back() = seam;
   }
+  std::vector<int> kinks;
+  if (list.kinkIndices && !mirrored)
+    for (int index : indicesOf(*list.kinkIndices, xpath + "/kinkIndices"))
+      kinks.push_back(pointIndexOf(index, listIndex, xpath + "/kinkIndices"));
   const std::vector<double> parameters = geometry::chordParameters(points, 0.5);
+  profile.curve = geometry::interpolateWithCorners(points, parameters, kinks, profile.closed);
+  if (mirrored) {  // back to the given half, over the whole range
+    profile.curve->Segment(0.0, 0.5);
+    TColStd_Array1OfReal knots(1, profile.curve->NbKnots());
+    profile.curve->Knots(knots);
+    BSplCLib::Reparametrize(0.0, 1.0, knots);
+    profile.curve->SetKnots(knots);
+    profile.closed = false;
+    profile.mirroredHalf = true;
+  }
+  if (list.parameterMap && !mirrored) {
+    // Pinned points get their given parameters; the others keep their places between them.
+    const std::string at = list.parameterMap->xpath;
+    const std::vector<int> pinned = indicesOf(list.parameterMap->pointIndices, at + "/pointIndices");
+    const std::vector<double> values = model::parseVector(list.parameterMap->paramOnCurve, at + "/paramOnCurve");
+    if (pinned.size() != values.size())
+      throw Error(ErrorCode::InvalidModel, "pointIndices and paramOnCurve have different lengths", {}, at);
+    std::map<int, double> map = {{0, 0.0}, {static_cast<int>(points.size()) - 1, 1.0}};
+    for (std::size_t i = 0; i < pinned.size(); ++i) map[pointIndexOf(pinned[i], listIndex, at)] = values[i];
+    std::vector<double> from, to;
+    for (const auto& [index, value] : map) {
+      from.push_back(parameters[static_cast<std::size_t>(index)]);
+      to.push_back(value);
+    }
+    profile.curve = geometry::reparametrisePiecewiseLinearly(*profile.curve, from, to);
+    return profile;
+  }
   // Re-fitted on uniform knots like the reference does: the loft through all profiles then
   // needs few knots, and the numbers agree with the reference's.
-  profile.curve =
-      geometry::refitOnUniformSpans(*geometry::interpolateCurve(points, parameters, 3, profile.closed), parameters);
+  profile.curve = geometry::refitOnUniformSpans(*profile.curve, parameters);
   return profile;
 }
 
@@ -66,7 +141,9 @@ FuselageProfile sampledProfile(const std::function<gp_Pnt(double)>& at, std::vec
     }
   }
   points.back() = points.front();
-  return {geometry::interpolateCurve(points, parameters, 3, false, kinks), true};
+  FuselageProfile profile;
+  profile.curve = geometry::interpolateCurve(points, parameters, 3, false, kinks);
+  return profile;
 }
 
 /// The superellipse of width and height 1: the upper and lower halves have their own
@@ -115,13 +192,25 @@ FuselageProfile rectangle(const schema::RectangleProfileType& shape) {
     s -= arc;
     return gp_Pnt(0.0, -0.5 + c + s, h);
   };
-  return sampledProfile(at, breaks);
+  FuselageProfile profile = sampledProfile(at, breaks);
+  profile.standardGuideScale = shape.heightToWidthRatio;
+  return profile;
 }
 
 }  // namespace
 
+double FuselageProfile::guideScale(const Eigen::Affine3d& transform) const {
+  if (points.empty()) return standardGuideScale;
+  std::vector<Eigen::Vector3d> placed;
+  for (const gp_Pnt& p : points) placed.push_back(transform * Eigen::Vector3d(p.X(), p.Y(), p.Z()));
+  const Eigen::Vector3d middle = 0.5 * (placed.front() + placed.back());
+  double farthest = 0.0;
+  for (const auto& p : placed) farthest = std::max(farthest, (p - middle).norm());
+  return farthest;
+}
+
 FuselageProfile FuselageProfile::fromDefinition(const schema::ProfileGeometryType& definition) {
-  if (definition.pointList) return fromPointList(*definition.pointList, definition.xpath + "/pointList");
+  if (definition.pointList) return fromPointList(definition);
   if (definition.standardProfile) {
     if (definition.standardProfile->superEllipse) return superEllipse(*definition.standardProfile->superEllipse);
     if (definition.standardProfile->rectangle) return rectangle(*definition.standardProfile->rectangle);

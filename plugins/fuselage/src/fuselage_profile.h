@@ -1,5 +1,8 @@
 #pragma once
 
+#include <vector>
+
+#include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>
 
 #include "airshape/schema/generated/cpacs_model.h"
@@ -13,6 +16,19 @@ namespace airshape::fuselage {
 struct FuselageProfile {
   Handle(Geom_BSplineCurve) curve;
   bool closed = true;
+  /// The reference's <symmetry>half</symmetry>: a half interpolated as its mirrored whole.
+  /// Its relative circumference leaves out the closing edge.
+  bool mirroredHalf = false;
+  /// The points of a point list (empty for a standard profile).
+  std::vector<gp_Pnt> points;
+  /// The length guide curve profiles are scaled by for a standard profile: the rectangle's
+  /// height ratio, 1 for a superellipse (unscaled, as the reference has it).
+  double standardGuideScale = 1.0;
+
+  /// The length guide curve profiles are scaled by where this profile is placed by
+  /// `transform`: for a point list, from the middle of its first and last point to the
+  /// point farthest from there (its "diameter line"), in global coordinates.
+  double guideScale(const Eigen::Affine3d& transform) const;
 
   /// Throws Error naming the profile's CPACS path for a definition that gives no curve.
   static FuselageProfile fromDefinition(const schema::ProfileGeometryType& definition);

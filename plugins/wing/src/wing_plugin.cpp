@@ -5,6 +5,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"

@@ -3,6 +3,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/brep_measures.h"
 
 namespace airshape::wing {
 

@@ -10,7 +10,7 @@
 namespace airshape::geometry {
 
 // Small B-rep building blocks for lofted components: ruled faces between profile curves,
-// planar caps, sewing into a solid, and exact measures.
+// planar caps, sewing into a solid.
 
 /// The curve moved by an affine map (applied to its poles, which is exact for B-splines).
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform);
@@ -27,10 +27,5 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 
 /// Sews faces into a closed shell and makes it a solid. Throws Error when they do not close.
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces);
-
-/// Volume of a solid and area of faces, by adaptive Gauss–Kronrod integration (relative
-/// accuracy 1e-9). Null shapes measure 0.
-double volumeOf(const TopoDS_Shape& solid);
-double areaOf(const TopoDS_Shape& faces);
 
 }  // namespace airshape::geometry

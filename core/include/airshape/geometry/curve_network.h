@@ -22,14 +22,23 @@ struct CurveNetwork {
   bool guidesClosed = false;  ///< the same for the guides and v
 };
 
-/// Intersects every profile with every guide and sorts the network: drops a curve that
+/// Where the curves of a network cross when the caller knows it (profile k meets guide l at
+/// profileParameters(k, l) and guideParameters(k, l), in input order): no search needed.
+struct KnownCrossings {
+  Eigen::MatrixXd profileParameters;
+  Eigen::MatrixXd guideParameters;
+};
+
+/// Intersects every profile with every guide (or takes the `known` crossings, checking
+/// their gaps) and sorts the network: drops a curve that
 /// repeats another (the seam curve of a closed network, given twice), reverses the curves
 /// that run against the others and orders profiles along the guides and guides along the
 /// profiles. `tolerance` is the largest gap (in model units) a crossing may have. Throws
 /// Error naming both curves and the gap when a guide misses a profile, and when the
 /// network cannot be ordered.
 CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
-                               std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance);
+                               std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance,
+                               const KnownCrossings* known = nullptr);
 
 /// Where two curves come closest: parameters and distance.
 struct CurveCrossing {

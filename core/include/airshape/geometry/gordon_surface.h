@@ -6,6 +6,8 @@
 #include <Geom_BSplineSurface.hxx>
 #include <gp_Pnt.hxx>
 
+#include "airshape/geometry/curve_network.h"
+
 namespace airshape::geometry {
 
 /// Seconds spent in each stage of building a Gordon surface.
@@ -29,15 +31,19 @@ struct GordonSurface {
   std::vector<gp_Pnt> crossings;
   /// The largest distance between a profile and a guide where they cross (the input's own gap).
   double maxCrossingGap = 0.0;
+  /// Where the profiles run (v, in the order of the network: along the guides) and where
+  /// the guides run (u, along the profiles; the seam guide of a closed network once).
+  std::vector<double> profileSites, guideSites;
 };
 
 /// The Gordon surface interpolating a curve network: S = S_f + S_g − T, where S_f skins the
 /// (reparametrised) profiles, S_g skins the guides and T interpolates their crossing points,
 /// all made compatible and combined into one B-spline surface (u along the profiles, v
 /// along the guides). Closed profiles or guides give a periodic direction, smooth across
-/// its seam. Throws Error for a network that cannot be interpolated.
+/// its seam. `known` crossings (see buildCurveNetwork) spare the search for them. Throws
+/// Error for a network that cannot be interpolated.
 GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
                                  const std::vector<Handle(Geom_BSplineCurve)>& guides,
-                                 const GordonTolerances& tolerances);
+                                 const GordonTolerances& tolerances, const KnownCrossings* known = nullptr);
 
 }  // namespace airshape::geometry

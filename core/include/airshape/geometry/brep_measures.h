@@ -1,0 +1,17 @@
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+namespace airshape::geometry {
+
+/// Volume of a solid. Faces on polynomial (non-rational) B-spline surfaces bounded by four
+/// iso-lines, the skins of lofts, are integrated exactly: Gauss–Legendre per knot span with
+/// enough points for the polynomial integrand (1/3)·P·(S_u × S_v). Other faces (planar
+/// caps, trimmed faces) by OCCT's adaptive Gauss–Kronrod integration (relative accuracy
+/// 1e-9). A null shape measures 0.
+double volumeOf(const TopoDS_Shape& solid);
+
+/// Area of faces by adaptive Gauss–Kronrod integration (relative accuracy 1e-9); 0 for null.
+double areaOf(const TopoDS_Shape& faces);
+
+}  // namespace airshape::geometry

@@ -1,0 +1,132 @@
+#include "airshape/geometry/brep_measures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <math.hxx>
+#include <math_Vector.hxx>
+
+namespace airshape::geometry {
+
+namespace {
+
+constexpr double kIntegrationAccuracy = 1e-9;
+
+/// Gauss–Legendre points and weights on [-1, 1].
+struct GaussRule {
+  math_Vector points, weights;
+  explicit GaussRule(int count) : points(1, count), weights(1, count) {
+    math::GaussPoints(count, points);
+    math::GaussWeights(count, weights);
+  }
+};
+
+/// The surface of a face bounded by four iso-lines of a polynomial B-spline surface, with
+/// its parameter rectangle; nothing for any other face.
+struct RectangularPatch {
+  Handle(Geom_BSplineSurface) surface;
+  double u0, u1, v0, v1;
+};
+
+std::optional<RectangularPatch> rectangularPatch(const TopoDS_Face& face) {
+  Handle(Geom_BSplineSurface) surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+  if (surface.IsNull() || surface->IsURational() || surface->IsVRational()) return std::nullopt;
+  for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
+    double first, last;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(edges.Current()), face, first, last);
+    const Handle(Geom2d_Line) line = Handle(Geom2d_Line)::DownCast(pcurve);
+    if (line.IsNull()) return std::nullopt;
+    const gp_Dir2d direction = line->Direction();
+    if (std::abs(direction.X()) > 1e-12 && std::abs(direction.Y()) > 1e-12) return std::nullopt;  // not an iso-line
+  }
+  RectangularPatch patch{surface, 0, 0, 0, 0};
+  BRepTools::UVBounds(face, patch.u0, patch.u1, patch.v0, patch.v1);
+  return patch;
+}
+
+/// The distinct knots of one direction inside [from, to], with the ends.
+std::vector<double> breaks(const TColStd_Array1OfReal& knots, double from, double to) {
+  std::vector<double> result = {from};
+  for (int i = knots.Lower(); i <= knots.Upper(); ++i)
+    if (knots(i) > from + 1e-12 && knots(i) < to - 1e-12) result.push_back(knots(i));
+  result.push_back(to);
+  return result;
+}
+
+/// (1/3)∫∫ P·(S_u × S_v) du dv over the patch: polynomial on every knot span, so a Gauss rule
+/// with ceil(3p/2) points in a direction of degree p integrates it exactly.
+double patchVolume(const RectangularPatch& patch) {
+  const Geom_BSplineSurface& s = *patch.surface;
+  const GaussRule uRule((3 * s.UDegree() + 2) / 2), vRule((3 * s.VDegree() + 2) / 2);
+  const std::vector<double> uBreaks = breaks(s.UKnots(), patch.u0, patch.u1);
+  const std::vector<double> vBreaks = breaks(s.VKnots(), patch.v0, patch.v1);
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < uBreaks.size(); ++i) {
+    const double uMid = 0.5 * (uBreaks[i] + uBreaks[i + 1]), uHalf = 0.5 * (uBreaks[i + 1] - uBreaks[i]);
+    for (std::size_t j = 0; j + 1 < vBreaks.size(); ++j) {
+      const double vMid = 0.5 * (vBreaks[j] + vBreaks[j + 1]), vHalf = 0.5 * (vBreaks[j + 1] - vBreaks[j]);
+      double span = 0.0;
+      for (int a = 1; a <= uRule.points.Length(); ++a)
+        for (int b = 1; b <= vRule.points.Length(); ++b) {
+          gp_Pnt p;
+          gp_Vec du, dv;
+          s.D1(uMid + uHalf * uRule.points(a), vMid + vHalf * vRule.points(b), p, du, dv);
+          span += uRule.weights(a) * vRule.weights(b) * gp_Vec(p.XYZ()).Dot(du.Crossed(dv));
+        }
+      sum += span * uHalf * vHalf;
+    }
+  }
+  return sum / 3.0;
+}
+
+double adaptiveVolume(const TopoDS_Shape& shape) {
+  GProp_GProps properties;
+  BRepGProp::VolumeProperties(shape, properties, kIntegrationAccuracy);
+  return properties.Mass();
+}
+
+}  // namespace
+
+double volumeOf(const TopoDS_Shape& solid) {
+  if (solid.IsNull()) return 0.0;
+  // (1/3)∫ P·n dA over every face: exact on rectangular patches and on planes (where P·n is
+  // constant). The terms of one formula only add up to the volume together, so a solid with
+  // any other face is integrated by OCCT as a whole.
+  double volume = 0.0;
+  for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(faces.Current());
+    const double sense = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+    if (const auto patch = rectangularPatch(face)) {
+      volume += sense * patchVolume(*patch);
+    } else if (const auto plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face)); !plane.IsNull()) {
+      const gp_Ax3& frame = plane->Position();
+      const double offset = gp_Vec(frame.Location().XYZ()).Dot(gp_Vec(frame.Direction()));
+      const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
+      volume += sense * orientation * offset * areaOf(face) / 3.0;
+    } else {
+      return std::abs(adaptiveVolume(solid));
+    }
+  }
+  return std::abs(volume);
+}
+
+double areaOf(const TopoDS_Shape& faces) {
+  if (faces.IsNull()) return 0.0;
+  GProp_GProps properties;
+  BRepGProp::SurfaceProperties(faces, properties, kIntegrationAccuracy);
+  return properties.Mass();
+}
+
+}  // namespace airshape::geometry

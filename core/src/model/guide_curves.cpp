@@ -1,0 +1,242 @@
+#include "airshape/model/guide_curves.h"
+
+#include <algorithm>
+#include <iterator>
+#include <unordered_map>
+
+#include <GeomAPI_Interpolate.hxx>
+#include <Precision.hxx>
+#include <TColStd_HArray1OfBoolean.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_Array1OfVec.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/topological_sort.hpp>
+
+#include "airshape/error.h"
+#include "airshape/geometry/bspline_curve.h"
+#include "airshape/geometry/curve_concatenation.h"
+#include "airshape/model/placement.h"
+
+namespace airshape::model {
+
+namespace {
+
+using schema::GuideCurveType;
+using Continuity = schema::GuideCurveTypeContinuity;
+
+/// A guide curve profile: (alpha, beta, gamma) per point.
+struct GuideProfile {
+  std::vector<gp_XYZ> points;
+};
+
+GuideProfile readGuideProfile(const schema::CpacsType& cpacs, const GuideCurveType& curve) {
+  if (cpacs.vehicles && cpacs.vehicles->profiles && cpacs.vehicles->profiles->guideCurves)
+    for (const auto& profile : cpacs.vehicles->profiles->guideCurves->guideCurveProfile) {
+      if (profile.uID != curve.guideCurveProfileUID) continue;
+      if (!profile.pointList)
+        throw Error(ErrorCode::InvalidModel, "the guide curve profile has no pointList", {}, profile.xpath);
+      const std::string at = profile.pointList->xpath;
+      const auto a = parseVector(profile.pointList->rX, at + "/rX"), b = parseVector(profile.pointList->rY, at + "/rY"),
+                 c = parseVector(profile.pointList->rZ, at + "/rZ");
+      if (a.size() != b.size() || a.size() != c.size())
+        throw Error(ErrorCode::InvalidModel, "rX, rY and rZ have different lengths", {}, at);
+      GuideProfile result;
+      for (std::size_t i = 0; i < a.size(); ++i) result.points.emplace_back(a[i], b[i], c[i]);
+      return result;
+    }
+  throw Error(ErrorCode::InvalidModel,
+              "guideCurveProfileUID '" + curve.guideCurveProfileUID + "' names no guide curve profile", {},
+              curve.xpath + "/guideCurveProfileUID");
+}
+
+/// One piece of a guide curve: the curve definition in segment `segment` and its points.
+struct Piece {
+  const GuideCurveType* definition = nullptr;
+  std::size_t segment = 0;
+  double fromRc = 0.0;
+  std::vector<gp_Pnt> points;
+  std::vector<double> parameters;
+};
+
+/// The chain of pieces of one root, one per segment.
+std::vector<Piece> chainOf(const GuideCurveType& root, const std::vector<const schema::GuideCurvesType*>& perSegment) {
+  std::vector<Piece> chain = {{&root, 0, *root.fromRelativeCircumference, {}, {}}};
+  for (std::size_t segment = 1; segment < perSegment.size(); ++segment) {
+    const GuideCurveType* next = nullptr;
+    if (perSegment[segment])
+      for (const auto& curve : perSegment[segment]->guideCurve)
+        if (curve.fromGuideCurveUID && *curve.fromGuideCurveUID == chain.back().definition->uID) {
+          if (next)
+            throw Error(ErrorCode::InvalidModel, "two guide curves continue '" + chain.back().definition->uID + "'", {},
+                        curve.xpath);
+          next = &curve;
+        }
+    if (!next)
+      throw Error(ErrorCode::InvalidModel,
+                  "no guide curve of the next segment continues this one (every guide curve must run through all "
+                  "segments)",
+                  {}, chain.back().definition->xpath);
+    chain.push_back({next, segment, chain.back().definition->toRelativeCircumference, {}, {}});
+  }
+  return chain;
+}
+
+/// The piece's points [P0, Q_1 .. Q_m, P1] and their parameters within [from, to].
+void placePiece(Piece& piece, const GuideProfile& profile, const GuideCurveSections& sections, double from, double to) {
+  const GuideCurveType& curve = *piece.definition;
+  const std::size_t k = piece.segment;
+  const gp_Pnt p0 = sections.pointAt(k, piece.fromRc), p1 = sections.pointAt(k + 1, curve.toRelativeCircumference);
+  gp_Vec x = curve.rXDirection ? gp_Vec(curve.rXDirection->x, curve.rXDirection->y, curve.rXDirection->z)
+                               : sections.defaultXDirection;
+  const gp_Vec chord(p0, p1);
+  if (x.Magnitude() < Precision::Confusion() || chord.Magnitude() < Precision::Confusion() ||
+      x.Crossed(chord).Magnitude() < Precision::Confusion() * x.Magnitude() * chord.Magnitude())
+    throw Error(ErrorCode::InvalidModel,
+                "the guide curve's ends coincide or lie along its rXDirection, so its profile has no plane", {},
+                curve.xpath);
+  x.Normalize();
+  const gp_Vec z = x.Crossed(chord).Normalized();
+  const double scaleIn = sections.scale(k), scaleOut = sections.scale(k + 1);
+  piece.points = {p0};
+  for (std::size_t i = 0; i < profile.points.size(); ++i) {
+    const double alpha = profile.points[i].X(), beta = profile.points[i].Y(), gamma = profile.points[i].Z();
+    if ((i == 0 && beta <= 0.0) || (i + 1 == profile.points.size() && beta >= 1.0))
+      throw Error(ErrorCode::InvalidModel,
+                  "the guide curve profile's rY must lie strictly between 0 and 1 (the ends are the sections' points)",
+                  {}, curve.xpath + "/guideCurveProfileUID");
+    const double s = (1.0 - beta) * scaleIn + beta * scaleOut;
+    piece.points.emplace_back(p0.XYZ() + beta * chord.XYZ() + s * (alpha * x.XYZ() + gamma * z.XYZ()));
+  }
+  piece.points.push_back(p1);
+  piece.parameters = geometry::chordParameters(piece.points, 0.5);
+  for (double& t : piece.parameters) t = from + (to - from) * t;
+}
+
+/// A run of pieces interpolated as one curve, with the derivatives its ends must have.
+struct Part {
+  std::size_t firstPiece = 0, endPiece = 0;  ///< pieces [firstPiece, endPiece)
+  std::optional<gp_Vec> startDerivative, endDerivative;
+  Handle(Geom_BSplineCurve) curve;
+};
+
+Handle(Geom_BSplineCurve) interpolatePart(const std::vector<Piece>& pieces, const Part& part) {
+  std::vector<gp_Pnt> points;
+  std::vector<double> parameters;
+  for (std::size_t p = part.firstPiece; p < part.endPiece; ++p)
+    for (std::size_t i = p == part.firstPiece ? 0 : 1; i < pieces[p].points.size(); ++i) {
+      points.push_back(pieces[p].points[i]);
+      parameters.push_back(pieces[p].parameters[i]);
+    }
+  Handle(TColgp_HArray1OfPnt) occPoints = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()));
+  Handle(TColStd_HArray1OfReal) occParameters = new TColStd_HArray1OfReal(1, static_cast<int>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    occPoints->SetValue(static_cast<int>(i) + 1, points[i]);
+    occParameters->SetValue(static_cast<int>(i) + 1, parameters[i]);
+  }
+  GeomAPI_Interpolate interpolation(occPoints, occParameters, false, Precision::Confusion());
+  if (part.startDerivative || part.endDerivative) {
+    TColgp_Array1OfVec tangents(1, static_cast<int>(points.size()));
+    Handle(TColStd_HArray1OfBoolean) given = new TColStd_HArray1OfBoolean(1, static_cast<int>(points.size()), false);
+    for (int i = 1; i <= tangents.Length(); ++i) tangents(i) = gp_Vec(0, 0, 0);
+    if (part.startDerivative) {
+      tangents(1) = *part.startDerivative;
+      given->SetValue(1, true);
+    }
+    if (part.endDerivative) {
+      tangents(tangents.Length()) = *part.endDerivative;
+      given->SetValue(tangents.Length(), true);
+    }
+    interpolation.Load(tangents, given, false);
+  }
+  interpolation.Perform();
+  if (!interpolation.IsDone())
+    throw Error(ErrorCode::InvalidModel, "the guide curve's points cannot be interpolated (repeated points?)", {},
+                pieces[part.firstPiece].definition->xpath);
+  return interpolation.Curve();
+}
+
+/// Whether the part starts with the end derivative of the part before ("C1/C2 from previous";
+/// C1 and C2 are treated alike: the first derivative is matched).
+bool takesFromPrevious(const std::vector<Piece>& pieces, const Part& part) {
+  const Continuity c = pieces[part.firstPiece].definition->continuity.value_or(Continuity::C0);
+  return c == Continuity::C1FromPrevious || c == Continuity::C2FromPrevious;
+}
+
+/// Whether the part before must end with this part's start derivative ("to previous").
+bool givesToPrevious(const std::vector<Piece>& pieces, const Part& part) {
+  const Continuity c = pieces[part.firstPiece].definition->continuity.value_or(Continuity::C0);
+  return c == Continuity::C1ToPrevious || c == Continuity::C2ToPrevious;
+}
+
+/// Interpolates the parts in an order where every part whose end derivative another one
+/// takes comes first (a topological sort of that dependency), then joins them.
+Handle(Geom_BSplineCurve) joinParts(const std::vector<Piece>& pieces, std::vector<Part>& parts) {
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
+  Graph dependencies(parts.size());
+  for (std::size_t j = 1; j < parts.size(); ++j) {
+    if (takesFromPrevious(pieces, parts[j])) boost::add_edge(j - 1, j, dependencies);
+    if (givesToPrevious(pieces, parts[j])) boost::add_edge(j, j - 1, dependencies);
+  }
+  std::vector<std::size_t> reversedOrder;
+  boost::topological_sort(dependencies, std::back_inserter(reversedOrder));
+  for (auto it = reversedOrder.rbegin(); it != reversedOrder.rend(); ++it) {
+    const std::size_t j = *it;
+    Part& part = parts[j];
+    part.curve = interpolatePart(pieces, part);
+    // Hand this part's end derivatives to the neighbours that take them.
+    if (j + 1 < parts.size() && takesFromPrevious(pieces, parts[j + 1]))
+      parts[j + 1].startDerivative = part.curve->DN(part.curve->LastParameter(), 1);
+    if (j > 0 && givesToPrevious(pieces, part))
+      parts[j - 1].endDerivative = part.curve->DN(part.curve->FirstParameter(), 1);
+  }
+  std::vector<Handle(Geom_BSplineCurve)> curves;
+  for (const Part& part : parts) curves.push_back(part.curve);
+  return geometry::concatenateCurves(curves);
+}
+
+}  // namespace
+
+bool hasGuideCurves(const std::vector<const schema::GuideCurvesType*>& perSegment) {
+  return std::any_of(perSegment.begin(), perSegment.end(),
+                     [](const auto* curves) { return curves && !curves->guideCurve.empty(); });
+}
+
+std::vector<GuideCurve> buildGuideCurves(const schema::CpacsType& cpacs,
+                                         const std::vector<const schema::GuideCurvesType*>& perSegment,
+                                         const GuideCurveSections& sections) {
+  std::vector<GuideCurve> result;
+  if (perSegment.empty() || !perSegment.front()) return result;
+  std::vector<gp_Pnt> centres;
+  for (std::size_t k = 0; k < sections.count; ++k) centres.push_back(sections.centre(k));
+  const std::vector<double> sectionParameters = geometry::chordParameters(centres, 0.5);
+  for (std::size_t segment = 1; segment < perSegment.size(); ++segment)
+    if (perSegment[segment])
+      for (const auto& curve : perSegment[segment]->guideCurve)
+        if (!curve.fromGuideCurveUID)
+          throw Error(ErrorCode::InvalidModel,
+                      "a guide curve that starts after the first segment (no fromGuideCurveUID) cannot run through "
+                      "all segments",
+                      {}, curve.xpath);
+
+  for (const auto& root : perSegment.front()->guideCurve) {
+    if (!root.fromRelativeCircumference)
+      throw Error(ErrorCode::InvalidModel, "a guide curve of the first segment needs fromRelativeCircumference", {},
+                  root.xpath);
+    std::vector<Piece> pieces = chainOf(root, perSegment);
+    std::vector<Part> parts;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      placePiece(pieces[p], readGuideProfile(cpacs, *pieces[p].definition), sections, sectionParameters[p],
+                 sectionParameters[p + 1]);
+      if (p == 0 || pieces[p].definition->continuity) parts.push_back({p, p + 1, {}, {}, {}});
+      parts.back().endPiece = p + 1;
+    }
+    std::vector<double> circumferences;
+    for (const Piece& piece : pieces) circumferences.push_back(piece.fromRc);
+    circumferences.push_back(pieces.back().definition->toRelativeCircumference);
+    result.push_back({root.uID, joinParts(pieces, parts), sectionParameters, circumferences});
+  }
+  return result;
+}
+
+}  // namespace airshape::model
