@@ -8,24 +8,16 @@
 
 #include "airshape/configuration.h"
 #include "airshape/model/primary_model.h"
-#include "airshape/plugin/plugin_host.h"
 #include "airshape/query/query_service.h"
+#include "bench_support.h"
 
 namespace {
 
-const std::string kData = std::string(AIRSHAPE_SHARED_DATA) + "/data/cpacs/";
-
-airshape::plugin::PluginHost& host() {
-  static airshape::plugin::PluginHost loaded = [] {
-    airshape::plugin::PluginHost h;
-    h.loadDefaultPlugins();
-    return h;
-  }();
-  return loaded;
-}
+using airshape::bench::host;
+using airshape::bench::sharedCpacs;
 
 void openAndBuildWings(benchmark::State& state, const std::string& name) {
-  const std::string path = kData + name;
+  const std::string path = sharedCpacs(name);
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
   for (auto _ : state) {
     airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
@@ -37,7 +29,7 @@ void openAndBuildWings(benchmark::State& state, const std::string& name) {
 }
 
 void upperPoint(benchmark::State& state, const std::string& name) {
-  const std::string path = kData + name;
+  const std::string path = sharedCpacs(name);
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
   airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
   const auto* op = host().queries().find("wing_upper_point");

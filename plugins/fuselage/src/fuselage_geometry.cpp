@@ -60,7 +60,7 @@ Handle(Geom_BSplineCurve) boundaryAlongV(const Geom_BSplineSurface& loft, double
   return curve;
 }
 
-const TopoDS_Shape& solidOf(const FuselageSegment& segment) {
+const TopoDS_Shape& solidOf(const LoftPiece& segment) {
   if (segment.solid.IsNull()) throw Error(ErrorCode::InvalidModel, segment.solidProblem);
   return segment.solid;
 }
@@ -139,9 +139,9 @@ void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXp
     segment.vEnd = sectionSites_[k + 1];
     if (!(segment.vEnd > segment.vStart))
       throw Error(ErrorCode::InvalidModel, "the segment's two profiles coincide", {}, segmentXpaths[k]);
-    buildSegmentFaces(segment, profileOnLoft(k), profileOnLoft(k + 1));
     segments_.push_back(segment);
   }
+  segmentPieces_.resize(segments_.size());
 }
 
 Handle(Geom_BSplineCurve) FuselageGeometry::profileOnLoft(std::size_t section) const {
@@ -156,26 +156,42 @@ double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const
   return projection.NbPoints() > 0 ? projection.LowerDistanceParameter() : zeta;
 }
 
-void FuselageGeometry::buildSegmentFaces(FuselageSegment& segment, const Handle(Geom_BSplineCurve) & startProfile,
-                                         const Handle(Geom_BSplineCurve) & endProfile) const {
+LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to, const std::string& name) const {
   using namespace geometry;
+  const double vStart = sectionSites_[from], vEnd = sectionSites_[to];
+  const Handle(Geom_BSplineCurve) startProfile = profileOnLoft(from), endProfile = profileOnLoft(to);
   double u0, u1, v0, v1;
   loft_->Bounds(u0, u1, v0, v1);
-  segment.skin = BRepBuilderAPI_MakeFace(loft_, u0, u1, segment.vStart, segment.vEnd, kFaceTolerance).Face();
+  LoftPiece piece;
+  piece.skin = skinFace(from, to);
   std::vector<Handle(Geom_BSplineCurve)> startBoundary = {startProfile}, endBoundary = {endProfile};
   if (!closedProfiles_) {  // a half profile: closed by straight edges and a flat face between them
-    segment.symmetryFace = ruledFace(boundaryAlongV(*loft_, u0, segment.vStart, segment.vEnd),
-                                     boundaryAlongV(*loft_, u1, segment.vStart, segment.vEnd));
+    piece.symmetryFace = ruledFace(boundaryAlongV(*loft_, u0, vStart, vEnd), boundaryAlongV(*loft_, u1, vStart, vEnd));
     startBoundary.push_back(straightLine(startProfile->EndPoint(), startProfile->StartPoint()));
     endBoundary.push_back(straightLine(endProfile->EndPoint(), endProfile->StartPoint()));
   }
   try {  // a profile shrunk to a point needs no cap
-    if (!isPoint(*startProfile)) segment.startCap = planarFace(startBoundary);
-    if (!isPoint(*endProfile)) segment.endCap = planarFace(endBoundary);
-    segment.solid = sewnSolid({segment.skin, segment.symmetryFace, segment.startCap, segment.endCap});
+    if (!isPoint(*startProfile)) piece.startCap = planarFace(startBoundary);
+    if (!isPoint(*endProfile)) piece.endCap = planarFace(endBoundary);
+    piece.solid = sewnSolid({piece.skin, piece.symmetryFace, piece.startCap, piece.endCap});
   } catch (const Error& error) {
-    segment.solidProblem = "segment '" + segment.uid + "': " + error.message();
+    piece.solidProblem = name + ": " + error.message();
   }
+  return piece;
+}
+
+TopoDS_Face FuselageGeometry::skinFace(std::size_t from, std::size_t to) const {
+  double u0, u1, v0, v1;
+  loft_->Bounds(u0, u1, v0, v1);
+  return BRepBuilderAPI_MakeFace(loft_, u0, u1, sectionSites_[from], sectionSites_[to], kFaceTolerance).Face();
+}
+
+const LoftPiece& FuselageGeometry::segmentPiece(std::size_t segment) const {
+  std::lock_guard<std::mutex> lock(piecesMutex_);
+  auto& built = segmentPieces_[segment];
+  if (!built)
+    built = std::make_unique<LoftPiece>(piece(segment, segment + 1, "segment '" + segments_[segment].uid + "'"));
+  return *built;
 }
 
 double FuselageGeometry::vAt(std::size_t segment, double eta) const {
@@ -194,31 +210,29 @@ double FuselageGeometry::circumference(std::size_t segment, double eta) const {
 }
 
 double FuselageGeometry::segmentVolume(std::size_t segment) const {
-  return geometry::volumeOf(solidOf(segments_[segment]));
+  return geometry::volumeOf(solidOf(segmentPiece(segment)));
 }
 
 double FuselageGeometry::segmentSurfaceArea(std::size_t segment) const {
-  return geometry::areaOf(segments_[segment].skin);
+  return geometry::areaOf(segmentPiece(segment).skin);
 }
 
-double FuselageGeometry::volume() const {
-  double total = 0.0;
-  for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentVolume(k);
-  return total;
-}
+double FuselageGeometry::volume() const { return geometry::volumeOf(solid()); }
 
 double FuselageGeometry::surfaceArea() const {
-  double total = 0.0;
-  for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentSurfaceArea(k);
-  return total;
+  return segments_.empty() ? 0.0 : geometry::areaOf(skinFace(0, segments_.size()));
 }
 
 TopoDS_Shape FuselageGeometry::solid() const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid");
-  std::vector<TopoDS_Face> faces = {segments_.front().startCap, segments_.back().endCap};
-  for (const FuselageSegment& segment : segments_) {
-    faces.push_back(segment.skin);
-    faces.push_back(segment.symmetryFace);
+  // One skin face over the whole loft: no seams between segments to sew. Where that does not
+  // close (sewing can fail on a face with many degenerate spans), the segments' faces do.
+  const LoftPiece whole = piece(0, segments_.size(), "the fuselage");
+  if (!whole.solid.IsNull()) return whole.solid;
+  std::vector<TopoDS_Face> faces = {segmentPiece(0).startCap, segmentPiece(segments_.size() - 1).endCap};
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    faces.push_back(segmentPiece(k).skin);
+    faces.push_back(segmentPiece(k).symmetryFace);
   }
   return geometry::sewnSolid(faces);
 }

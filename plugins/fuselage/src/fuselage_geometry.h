@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -19,11 +20,15 @@ class Configuration;
 
 namespace airshape::fuselage {
 
-/// One segment of a fuselage: its share [vStart, vEnd] of the fuselage's loft, the skin
-/// faces there (and the flat symmetry face of half profiles), closed by planar caps.
+/// One segment of a fuselage: its share [vStart, vEnd] of the fuselage's loft.
 struct FuselageSegment {
   std::string uid;
   double vStart = 0.0, vEnd = 1.0;
+};
+
+/// A stretch of the loft as B-rep: the skin face (and the flat symmetry face of half
+/// profiles), closed by planar caps where the profiles are not points.
+struct LoftPiece {
   TopoDS_Face skin, symmetryFace, startCap, endCap;
   TopoDS_Shape solid;
   std::string solidProblem;  ///< why there is no solid (the points and lengths still work)
@@ -36,7 +41,6 @@ class FuselageGeometry {
   static std::shared_ptr<const FuselageGeometry> of(const Configuration& configuration,
                                                     const schema::FuselageType& fuselage);
 
-  const std::vector<FuselageSegment>& segments() const { return segments_; }
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
   /// The loft's point at profile parameter zeta, eta of the way through the segment's v range.
@@ -63,8 +67,12 @@ class FuselageGeometry {
   /// The loft's u where section k's profile has parameter zeta.
   double loftParameterOf(std::size_t section, double zeta) const;
   double vAt(std::size_t segment, double eta) const;
-  void buildSegmentFaces(FuselageSegment& segment, const Handle(Geom_BSplineCurve) & startProfile,
-                         const Handle(Geom_BSplineCurve) & endProfile) const;
+  /// The loft's skin between sections `from` and `to` (chain order) as one face.
+  TopoDS_Face skinFace(std::size_t from, std::size_t to) const;
+  /// The B-rep of the loft between sections `from` and `to`.
+  LoftPiece piece(std::size_t from, std::size_t to, const std::string& name) const;
+  /// A segment's B-rep, built on first use: most queries need none.
+  const LoftPiece& segmentPiece(std::size_t segment) const;
 
   Handle(Geom_BSplineSurface) loft_;
   std::vector<Handle(Geom_BSplineCurve)> profiles_;  ///< placed, in chain order
@@ -73,6 +81,8 @@ class FuselageGeometry {
   bool closedProfiles_ = true;
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;
+  mutable std::mutex piecesMutex_;
+  mutable std::vector<std::unique_ptr<LoftPiece>> segmentPieces_;
 };
 
 }  // namespace airshape::fuselage
