@@ -2,7 +2,6 @@
 
 #include <unordered_map>
 
-#include <BRepBuilderAPI_MakeFace.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomAdaptor_Curve.hxx>
@@ -13,6 +12,7 @@
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/compatibility.h"
 #include "airshape/geometry/gordon_surface.h"
+#include "airshape/geometry/loft_piece.h"
 #include "airshape/geometry/skinning.h"
 #include "airshape/model/guide_curves.h"
 #include "airshape/model/placed_elements.h"
@@ -21,8 +21,6 @@
 namespace airshape::fuselage {
 
 namespace {
-
-constexpr double kFaceTolerance = 1e-7;
 
 /// The fuselage profiles of the document by uID, built on demand.
 class ProfileLibrary {
@@ -46,21 +44,7 @@ class ProfileLibrary {
   std::unordered_map<std::string, FuselageProfile> built_;
 };
 
-/// Whether a placed profile has shrunk to a point (a nose or tail tip).
-bool isPoint(const Geom_BSplineCurve& curve) {
-  for (int i = 2; i <= curve.NbPoles(); ++i)
-    if (curve.Pole(i).Distance(curve.Pole(1)) > 1e-7) return false;
-  return true;
-}
-
-/// The loft's boundary curve at u over the v range [v0, v1], as a B-spline of its own.
-Handle(Geom_BSplineCurve) boundaryAlongV(const Geom_BSplineSurface& loft, double u, double v0, double v1) {
-  Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(loft.UIso(u));
-  curve->Segment(v0, v1);
-  return curve;
-}
-
-const TopoDS_Shape& solidOf(const LoftPiece& segment) {
+const TopoDS_Shape& solidOf(const geometry::LoftPiece& segment) {
   if (segment.solid.IsNull()) throw Error(ErrorCode::InvalidModel, segment.solidProblem);
   return segment.solid;
 }
@@ -156,41 +140,22 @@ double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const
   return projection.NbPoints() > 0 ? projection.LowerDistanceParameter() : zeta;
 }
 
-LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to, const std::string& name) const {
-  using namespace geometry;
-  const double vStart = sectionSites_[from], vEnd = sectionSites_[to];
-  const Handle(Geom_BSplineCurve) startProfile = profileOnLoft(from), endProfile = profileOnLoft(to);
-  double u0, u1, v0, v1;
-  loft_->Bounds(u0, u1, v0, v1);
-  LoftPiece piece;
-  piece.skin = skinFace(from, to);
-  std::vector<Handle(Geom_BSplineCurve)> startBoundary = {startProfile}, endBoundary = {endProfile};
-  if (!closedProfiles_) {  // a half profile: closed by straight edges and a flat face between them
-    piece.symmetryFace = ruledFace(boundaryAlongV(*loft_, u0, vStart, vEnd), boundaryAlongV(*loft_, u1, vStart, vEnd));
-    startBoundary.push_back(straightLine(startProfile->EndPoint(), startProfile->StartPoint()));
-    endBoundary.push_back(straightLine(endProfile->EndPoint(), endProfile->StartPoint()));
-  }
-  try {  // a profile shrunk to a point needs no cap
-    if (!isPoint(*startProfile)) piece.startCap = planarFace(startBoundary);
-    if (!isPoint(*endProfile)) piece.endCap = planarFace(endBoundary);
-    piece.solid = sewnSolid({piece.skin, piece.symmetryFace, piece.startCap, piece.endCap});
-  } catch (const Error& error) {
-    piece.solidProblem = name + ": " + error.message();
-  }
+geometry::LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to, const std::string& name) const {
+  geometry::LoftPiece piece = geometry::loftPiece(loft_, sectionSites_[from], sectionSites_[to], closedProfiles_);
+  if (!piece.solidProblem.empty()) piece.solidProblem = name + ": " + piece.solidProblem;
   return piece;
 }
 
 TopoDS_Face FuselageGeometry::skinFace(std::size_t from, std::size_t to) const {
-  double u0, u1, v0, v1;
-  loft_->Bounds(u0, u1, v0, v1);
-  return BRepBuilderAPI_MakeFace(loft_, u0, u1, sectionSites_[from], sectionSites_[to], kFaceTolerance).Face();
+  return geometry::loftFace(loft_, sectionSites_[from], sectionSites_[to]);
 }
 
-const LoftPiece& FuselageGeometry::segmentPiece(std::size_t segment) const {
+const geometry::LoftPiece& FuselageGeometry::segmentPiece(std::size_t segment) const {
   std::lock_guard<std::mutex> lock(piecesMutex_);
   auto& built = segmentPieces_[segment];
   if (!built)
-    built = std::make_unique<LoftPiece>(piece(segment, segment + 1, "segment '" + segments_[segment].uid + "'"));
+    built =
+        std::make_unique<geometry::LoftPiece>(piece(segment, segment + 1, "segment '" + segments_[segment].uid + "'"));
   return *built;
 }
 
@@ -227,12 +192,12 @@ TopoDS_Shape FuselageGeometry::solid() const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid");
   // One skin face over the whole loft: no seams between segments to sew. Where that does not
   // close (sewing can fail on a face with many degenerate spans), the segments' faces do.
-  const LoftPiece whole = piece(0, segments_.size(), "the fuselage");
+  const geometry::LoftPiece whole = piece(0, segments_.size(), "the fuselage");
   if (!whole.solid.IsNull()) return whole.solid;
   std::vector<TopoDS_Face> faces = {segmentPiece(0).startCap, segmentPiece(segments_.size() - 1).endCap};
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     faces.push_back(segmentPiece(k).skin);
-    faces.push_back(segmentPiece(k).symmetryFace);
+    faces.push_back(segmentPiece(k).closingFace);
   }
   return geometry::sewnSolid(faces);
 }

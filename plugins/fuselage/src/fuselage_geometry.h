@@ -10,6 +10,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include "airshape/geometry/loft_piece.h"
 #include "airshape/model/placement.h"
 #include "fuselage_guide_curves.h"
 #include "fuselage_profile.h"
@@ -24,14 +25,6 @@ namespace airshape::fuselage {
 struct FuselageSegment {
   std::string uid;
   double vStart = 0.0, vEnd = 1.0;
-};
-
-/// A stretch of the loft as B-rep: the skin face (and the flat symmetry face of half
-/// profiles), closed by planar caps where the profiles are not points.
-struct LoftPiece {
-  TopoDS_Face skin, symmetryFace, startCap, endCap;
-  TopoDS_Shape solid;
-  std::string solidProblem;  ///< why there is no solid (the points and lengths still work)
 };
 
 /// A fuselage as the queries need it: one smooth loft through all its profiles (u is the
@@ -70,9 +63,9 @@ class FuselageGeometry {
   /// The loft's skin between sections `from` and `to` (chain order) as one face.
   TopoDS_Face skinFace(std::size_t from, std::size_t to) const;
   /// The B-rep of the loft between sections `from` and `to`.
-  LoftPiece piece(std::size_t from, std::size_t to, const std::string& name) const;
+  geometry::LoftPiece piece(std::size_t from, std::size_t to, const std::string& name) const;
   /// A segment's B-rep, built on first use: most queries need none.
-  const LoftPiece& segmentPiece(std::size_t segment) const;
+  const geometry::LoftPiece& segmentPiece(std::size_t segment) const;
 
   Handle(Geom_BSplineSurface) loft_;
   std::vector<Handle(Geom_BSplineCurve)> profiles_;  ///< placed, in chain order
@@ -82,7 +75,7 @@ class FuselageGeometry {
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;
   mutable std::mutex piecesMutex_;
-  mutable std::vector<std::unique_ptr<LoftPiece>> segmentPieces_;
+  mutable std::vector<std::unique_ptr<geometry::LoftPiece>> segmentPieces_;
 };
 
 }  // namespace airshape::fuselage

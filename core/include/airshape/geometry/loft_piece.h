@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+
+#include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+
+namespace airshape::geometry {
+
+/// A stretch of a loft surface (u along its profiles, v across them) as B-rep: the skin
+/// face over [vStart, vEnd], for open profiles the face that closes them (ruled between the
+/// skin's u-boundaries: a fuselage's symmetry plane, a wing's blunt trailing edge), and
+/// planar caps on the profiles at vStart and vEnd where they are not points.
+struct LoftPiece {
+  TopoDS_Face skin, closingFace, startCap, endCap;
+  TopoDS_Shape solid;
+  std::string solidProblem;  ///< why there is no solid, when there is none
+};
+
+/// The skin of the loft over [vStart, vEnd] as one face, the whole u range.
+TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd);
+
+/// The B-rep of the loft over [vStart, vEnd]. A failure to close it into a solid is kept
+/// in solidProblem rather than thrown, so the faces can still be measured.
+LoftPiece loftPiece(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd, bool closedProfiles);
+
+}  // namespace airshape::geometry

@@ -1,0 +1,60 @@
+#include "airshape/geometry/loft_piece.h"
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Geom_BSplineCurve.hxx>
+
+#include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
+
+namespace airshape::geometry {
+
+namespace {
+
+constexpr double kFaceTolerance = 1e-7;
+
+/// Whether a curve has shrunk to a point (a nose or tail tip).
+bool isPoint(const Geom_BSplineCurve& curve) {
+  for (int i = 2; i <= curve.NbPoles(); ++i)
+    if (curve.Pole(i).Distance(curve.Pole(1)) > 1e-7) return false;
+  return true;
+}
+
+/// The loft's boundary curve at u over [v0, v1], as a B-spline of its own.
+Handle(Geom_BSplineCurve) alongV(const Geom_BSplineSurface& loft, double u, double v0, double v1) {
+  Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(loft.UIso(u));
+  curve->Segment(v0, v1);
+  return curve;
+}
+
+}  // namespace
+
+TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd) {
+  double u0, u1, v0, v1;
+  loft->Bounds(u0, u1, v0, v1);
+  return BRepBuilderAPI_MakeFace(loft, u0, u1, vStart, vEnd, kFaceTolerance).Face();
+}
+
+LoftPiece loftPiece(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd, bool closedProfiles) {
+  double u0, u1, v0, v1;
+  loft->Bounds(u0, u1, v0, v1);
+  const auto startProfile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(vStart));
+  const auto endProfile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(vEnd));
+  LoftPiece piece;
+  piece.skin = loftFace(loft, vStart, vEnd);
+  std::vector<Handle(Geom_BSplineCurve)> startBoundary = {startProfile}, endBoundary = {endProfile};
+  if (!closedProfiles) {
+    piece.closingFace = ruledFace(alongV(*loft, u0, vStart, vEnd), alongV(*loft, u1, vStart, vEnd));
+    startBoundary.push_back(straightLine(startProfile->EndPoint(), startProfile->StartPoint()));
+    endBoundary.push_back(straightLine(endProfile->EndPoint(), endProfile->StartPoint()));
+  }
+  try {
+    if (!isPoint(*startProfile)) piece.startCap = planarFace(startBoundary);
+    if (!isPoint(*endProfile)) piece.endCap = planarFace(endBoundary);
+    piece.solid = sewnSolid({piece.skin, piece.closingFace, piece.startCap, piece.endCap});
+  } catch (const Error& error) {
+    piece.solidProblem = error.message();
+  }
+  return piece;
+}
+
+}  // namespace airshape::geometry
