@@ -1,6 +1,7 @@
 """Shared fixtures of the command-line tests: where the binary, the sources and ../shared are."""
 import os
 import subprocess
+import sys
 
 import pytest
 
@@ -24,3 +25,13 @@ def airshape(*arguments, stdin=None, env=None):
     """Runs the airshape command and returns the completed process (text mode)."""
     return subprocess.run([BINARY, *arguments], input=stdin, capture_output=True, text=True, timeout=300,
                           env={**os.environ, **(env or {})})
+
+
+def conformance_passed(case_file):
+    """Runs ../shared/conformance/run.py on one case file against this build (skips when the
+    shared data is absent); returns the number of passed cases and the runner's output."""
+    cases = shared_path("conformance", case_file)
+    runner = os.path.join(os.path.dirname(cases), "run.py")
+    result = subprocess.run([sys.executable, runner, "--airshape", BINARY, "--data", shared_path("data", "cpacs"), cases],
+                            capture_output=True, text=True, timeout=900)
+    return int(result.stdout.strip().splitlines()[-1].split()[0]), result.stdout

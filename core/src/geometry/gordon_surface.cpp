@@ -44,7 +44,8 @@ std::vector<double> sites(std::vector<double> targets, bool closed) {
 
 GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
                                  const std::vector<Handle(Geom_BSplineCurve)>& guides,
-                                 const GordonTolerances& tolerances, const KnownCrossings* known) {
+                                 const GordonTolerances& tolerances, const KnownCrossings* known,
+                                 int degreeAcrossProfiles) {
   GordonSurface result;
   auto start = Clock::now();
   const CurveNetwork network = buildCurveNetwork(profiles, guides, tolerances.crossing, known);
@@ -66,7 +67,7 @@ GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& p
   const std::vector<double> uSites = sites(f.targets, network.profilesClosed);  // where the guides run
   const std::vector<double> vSites = sites(g.targets, network.guidesClosed);    // where the profiles run
   const KnotVector uSpace = skinningSpace(uSites, 3, network.profilesClosed);
-  const KnotVector vSpace = skinningSpace(vSites, 3, network.guidesClosed);
+  const KnotVector vSpace = skinningSpace(vSites, degreeAcrossProfiles, network.guidesClosed);
   Handle(Geom_BSplineSurface) skinnedProfiles = skinCurves(f.curves, vSites, vSpace);
   Handle(Geom_BSplineSurface) skinnedGuides = swapDirections(*skinCurves(g.curves, uSites, uSpace));
   std::vector<std::vector<gp_Pnt>> crossings(f.curves.size());

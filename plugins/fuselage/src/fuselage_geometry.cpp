@@ -22,6 +22,10 @@ namespace airshape::fuselage {
 
 namespace {
 
+/// With guide curves the loft blends linearly between neighbouring profiles (the guides
+/// shape it in between), as the reference's guided lofts do; see docs/fuselage.md.
+constexpr int kDegreeAcrossProfiles = 1;
+
 /// The fuselage profiles of the document by uID, built on demand.
 class ProfileLibrary {
  public:
@@ -107,7 +111,8 @@ void FuselageGeometry::loft(const std::vector<PlacedProfile>& sections) {
 
 void FuselageGeometry::loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides) {
   for (const PlacedProfile& section : sections) profiles_.push_back(section.curve);
-  const geometry::GordonSurface gordon = geometry::buildGordonSurface(profiles_, guides.curves, {}, &guides.crossings);
+  const geometry::GordonSurface gordon =
+      geometry::buildGordonSurface(profiles_, guides.curves, {}, &guides.crossings, kDegreeAcrossProfiles);
   if (gordon.profileSites.size() != profiles_.size())
     throw Error(ErrorCode::InvalidModel, "the guide curves do not cross every profile of the fuselage once");
   loft_ = gordon.surface;

@@ -77,16 +77,20 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
       geometry->segments_.push_back(
           {segment.uID, end(segment.fromElementUID, "fromElementUID"), end(segment.toElementUID, "toElementUID")});
     }
+    if (!geometry->segments_.empty())
+      geometry->guidedSkin_ = GuidedWingSkin::build(configuration, wing, geometry->segments_);
     return std::shared_ptr<const WingGeometry>(geometry);
   });
 }
 
 gp_Pnt WingGeometry::upperPoint(std::size_t segment, double eta, double xsi) const {
+  if (guidedSkin_) return guidedSkin_->upperPoint(segment, eta, xsi);
   const WingSegment& s = segments_[segment];
   return lerp(s.inner.upper(xsi), s.outer.upper(xsi), eta);
 }
 
 gp_Pnt WingGeometry::lowerPoint(std::size_t segment, double eta, double xsi) const {
+  if (guidedSkin_) return guidedSkin_->lowerPoint(segment, eta, xsi);
   const WingSegment& s = segments_[segment];
   return lerp(s.inner.lower(xsi), s.outer.lower(xsi), eta);
 }

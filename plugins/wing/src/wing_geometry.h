@@ -7,6 +7,7 @@
 #include <gp_Pnt.hxx>
 
 #include "airshape/model/placement.h"
+#include "guided_wing_skin.h"
 #include "wing_profile.h"
 
 namespace airshape {
@@ -34,7 +35,8 @@ struct WingSegment {
 };
 
 /// The geometry of one wing that the point queries need: its segments in chain order,
-/// each with its two placed airfoils. The skins are ruled between them (docs/wing.md).
+/// each with its two placed airfoils. The skins are ruled between them, or shaped by guide
+/// curves where the wing has them (docs/wing.md).
 class WingGeometry {
  public:
   /// Builds (or takes from the configuration's cache) the geometry of a wing. Throws Error
@@ -45,6 +47,9 @@ class WingGeometry {
   /// The segments' uIDs in chain order, for addressing them by index or uID.
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
+  /// The skin shaped by guide curves, or null when the wing has none (ruled skins).
+  const GuidedWingSkin* guidedSkin() const { return guidedSkin_.get(); }
+
   gp_Pnt upperPoint(std::size_t segment, double eta, double xsi) const;
   gp_Pnt lowerPoint(std::size_t segment, double eta, double xsi) const;
   gp_Pnt chordPoint(std::size_t segment, double eta, double xsi) const;
@@ -52,6 +57,7 @@ class WingGeometry {
  private:
   std::vector<WingSegment> segments_;
   std::vector<std::string> segmentUids_;
+  std::shared_ptr<const GuidedWingSkin> guidedSkin_;
 };
 
 }  // namespace airshape::wing

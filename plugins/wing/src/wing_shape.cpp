@@ -49,13 +49,30 @@ SegmentShape segmentShape(const WingSegment& segment) {
   return shape;
 }
 
+/// A segment of a wing with guide curves: its stretch of the guided skin (one face for
+/// both sides), the blunt trailing edge between the skin's ends, and the caps.
+SegmentShape guidedSegmentShape(const WingGeometry& geometry, std::size_t segment) {
+  geometry::LoftPiece piece = geometry.guidedSkin()->segmentPiece(segment);
+  if (piece.solid.IsNull())
+    throw Error(ErrorCode::InvalidModel, "segment '" + geometry.segments()[segment].uid + "': " + piece.solidProblem);
+  SegmentShape shape;
+  shape.upper = piece.skin;
+  shape.trailingEdge = piece.closingFace;
+  shape.innerCap = piece.startCap;
+  shape.outerCap = piece.endCap;
+  shape.solid = piece.solid;
+  return shape;
+}
+
 }  // namespace
 
 std::shared_ptr<const WingShape> WingShape::of(const Configuration& configuration, const schema::WingType& wing) {
   return configuration.cache().obtain<WingShape>("wing-shape:" + wing.uID, [&] {
     auto shape = std::make_shared<WingShape>();
-    for (const WingSegment& segment : WingGeometry::of(configuration, wing)->segments())
-      shape->segments_.push_back(segmentShape(segment));
+    const auto geometry = WingGeometry::of(configuration, wing);
+    for (std::size_t k = 0; k < geometry->segments().size(); ++k)
+      shape->segments_.push_back(geometry->guidedSkin() ? guidedSegmentShape(*geometry, k)
+                                                        : segmentShape(geometry->segments()[k]));
     return std::shared_ptr<const WingShape>(shape);
   });
 }

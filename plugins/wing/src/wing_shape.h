@@ -16,7 +16,8 @@ class Configuration;
 namespace airshape::wing {
 
 /// The faces of one wing segment: ruled upper and lower skins (and a trailing-edge strip
-/// for blunt airfoils) between its two placed airfoils, closed by planar caps.
+/// for blunt airfoils) between its two placed airfoils, closed by planar caps. With guide
+/// curves the skin is one face of the guided skin, in `upper` (`lower` stays empty).
 struct SegmentShape {
   TopoDS_Face upper, lower, trailingEdge, innerCap, outerCap;
   TopoDS_Shape solid;

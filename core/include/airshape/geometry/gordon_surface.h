@@ -40,10 +40,14 @@ struct GordonSurface {
 /// (reparametrised) profiles, S_g skins the guides and T interpolates their crossing points,
 /// all made compatible and combined into one B-spline surface (u along the profiles, v
 /// along the guides). Closed profiles or guides give a periodic direction, smooth across
-/// its seam. `known` crossings (see buildCurveNetwork) spare the search for them. Throws
-/// Error for a network that cannot be interpolated.
+/// its seam. `known` crossings (see buildCurveNetwork) spare the search for them.
+/// `degreeAcrossProfiles` is the degree of S_f and T across the profiles: 3 makes the
+/// surface C2 everywhere; 1 blends linearly between neighbouring profiles (C0 at the
+/// profiles, like the Coons patches of the reference library's guided lofts) while the
+/// guides still shape it in between. Throws Error for a network that cannot be interpolated.
 GordonSurface buildGordonSurface(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
                                  const std::vector<Handle(Geom_BSplineCurve)>& guides,
-                                 const GordonTolerances& tolerances, const KnownCrossings* known = nullptr);
+                                 const GordonTolerances& tolerances, const KnownCrossings* known = nullptr,
+                                 int degreeAcrossProfiles = 3);
 
 }  // namespace airshape::geometry

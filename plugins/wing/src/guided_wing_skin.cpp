@@ -1,0 +1,183 @@
+#include "guided_wing_skin.h"
+
+#include <algorithm>
+#include <map>
+
+#include <BSplCLib.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <TColStd_Array1OfReal.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/curve_concatenation.h"
+#include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/gordon_surface.h"
+#include "airshape/model/guide_curves.h"
+#include "wing_geometry.h"
+
+namespace airshape::wing {
+
+namespace {
+
+/// Linear between neighbouring airfoils, as the reference's guided wing skins are: the
+/// guides shape the skin, the airfoils are joined without overshoot (see docs/wing.md).
+constexpr int kDegreeAcrossProfiles = 1;
+
+/// A placed airfoil as one curve: lower side reversed over [0, 1], upper side over [1, 2].
+Handle(Geom_BSplineCurve) wholeAirfoil(const SegmentEnd& end) {
+  Handle(Geom_BSplineCurve) lower = geometry::transformed(end.profile->lowerCurve(), end.transform);
+  lower->Reverse();
+  Handle(Geom_BSplineCurve) upper = geometry::transformed(end.profile->upperCurve(), end.transform);
+  TColStd_Array1OfReal knots(1, upper->NbKnots());
+  upper->Knots(knots);
+  BSplCLib::Reparametrize(1.0, 2.0, knots);
+  upper->SetKnots(knots);
+  return geometry::concatenateCurves({lower, upper});
+}
+
+/// The parameter on a whole airfoil at relative circumference rc (−1 lower TE end, 0 LE,
+/// +1 upper TE end), each side measured by its own length.
+double parameterAtRelativeCircumference(const Handle(Geom_BSplineCurve) & airfoil, double rc) {
+  if (rc < -1.0 - 1e-9 || rc > 1.0 + 1e-9)
+    throw Error(ErrorCode::InvalidModel, "a wing guide curve's relative circumference lies outside [-1, 1]");
+  GeomAdaptor_Curve curve(airfoil);
+  const double from = rc <= 0.0 ? 0.0 : 1.0, to = rc <= 0.0 ? 1.0 : 2.0;
+  const double side = GCPnts_AbscissaPoint::Length(curve, from, to);
+  const double along = (rc <= 0.0 ? rc + 1.0 : rc) * side;
+  if (along <= 0.0) return from;
+  if (along >= side) return to;
+  return GCPnts_AbscissaPoint(curve, along, from).Parameter();
+}
+
+/// A curve through the airfoils' points at whole-airfoil parameter `at`, passing airfoil k
+/// at parameter sections[k]: a stand-in guide along a trailing-edge end.
+Handle(Geom_BSplineCurve) interpolateThrough(const std::vector<Handle(Geom_BSplineCurve)>& airfoils, double at,
+                                             const std::vector<double>& sections) {
+  std::vector<gp_Pnt> points;
+  for (const auto& airfoil : airfoils) points.push_back(airfoil->Value(at));
+  return geometry::interpolateCurve(points, sections, 3);
+}
+
+}  // namespace
+
+std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration& configuration,
+                                                            const schema::WingType& wing,
+                                                            const std::vector<WingSegment>& segments) {
+  std::vector<const schema::GuideCurvesType*> perSegment;
+  std::map<std::string, const schema::WingSegmentType*> definitions;
+  if (wing.segments)
+    for (const auto& definition : wing.segments->segment) definitions[definition.uID] = &definition;
+  for (const WingSegment& segment : segments) {
+    const auto* definition = definitions.at(segment.uid);
+    perSegment.push_back(definition->guideCurves ? &*definition->guideCurves : nullptr);
+  }
+  if (!model::hasGuideCurves(perSegment)) return nullptr;
+
+  auto skin = std::make_shared<GuidedWingSkin>();
+  std::vector<const SegmentEnd*> sections;
+  for (const WingSegment& segment : segments) sections.push_back(&segment.inner);
+  sections.push_back(&segments.back().outer);
+  for (const SegmentEnd* end : sections) skin->airfoils_.push_back(wholeAirfoil(*end));
+  skin->blunt_ = sections.front()->profile->bluntTrailingEdge();
+
+  model::GuideCurveSections described;
+  described.count = sections.size();
+  described.pointAt = [&](std::size_t k, double rc) {
+    return skin->airfoils_[k]->Value(parameterAtRelativeCircumference(skin->airfoils_[k], rc));
+  };
+  described.scale = [&](std::size_t k) { return sections[k]->leadingEdge().Distance(sections[k]->trailingEdge()); };
+  described.centre = [&](std::size_t k) {
+    return gp_Pnt(0.5 * (sections[k]->leadingEdge().XYZ() + sections[k]->trailingEdge().XYZ()));
+  };
+  const Eigen::Vector3d x = model::componentTransform(configuration, wing.uID).linear() * Eigen::Vector3d::UnitX();
+  described.defaultXDirection = gp_Vec(x.x(), x.y(), x.z());
+
+  // Each guide with where it crosses every airfoil (whole-airfoil parameter, ascending
+  // along the airfoil: the order the Gordon surface sorts them in).
+  struct Crossing {
+    Handle(Geom_BSplineCurve) curve;
+    std::vector<double> airfoilParameters, guideParameters;
+  };
+  std::vector<Crossing> crossingGuides;
+  for (const model::GuideCurve& guide : model::buildGuideCurves(configuration.cpacs(), perSegment, described)) {
+    Crossing crossing{guide.curve, {}, guide.sectionParameters};
+    for (std::size_t k = 0; k < sections.size(); ++k)
+      crossing.airfoilParameters.push_back(
+          parameterAtRelativeCircumference(skin->airfoils_[k], guide.relativeCircumferences[k]));
+    crossingGuides.push_back(crossing);
+  }
+  // The skin must reach both trailing-edge ends. On a sharp trailing edge one guide there
+  // serves both ends; a missing one runs through the airfoils' ends at the section parameters.
+  const std::vector<double> sectionParameters = crossingGuides.front().guideParameters;
+  auto guideAt = [&](double end) -> const Crossing* {
+    for (const Crossing& c : crossingGuides)
+      if (std::abs(c.airfoilParameters.front() - end) < 1e-9) return &c;
+    return nullptr;
+  };
+  for (double end : {0.0, 2.0}) {
+    if (guideAt(end)) continue;
+    const Crossing* other = skin->blunt_ ? nullptr : guideAt(2.0 - end);
+    Crossing added{other ? other->curve : interpolateThrough(skin->airfoils_, end, sectionParameters),
+                   std::vector<double>(sections.size(), end), sectionParameters};
+    crossingGuides.push_back(added);
+  }
+  std::sort(crossingGuides.begin(), crossingGuides.end(), [](const Crossing& a, const Crossing& b) {
+    return a.airfoilParameters.front() < b.airfoilParameters.front();
+  });
+  std::vector<Handle(Geom_BSplineCurve)> guideCurves;
+  geometry::KnownCrossings crossings;
+  const auto K = static_cast<Eigen::Index>(sections.size()), L = static_cast<Eigen::Index>(crossingGuides.size());
+  crossings.profileParameters.resize(K, L);
+  crossings.guideParameters.resize(K, L);
+  skin->crossingParameters_.assign(sections.size(), {});
+  for (Eigen::Index l = 0; l < L; ++l) {
+    const Crossing& guide = crossingGuides[static_cast<std::size_t>(l)];
+    guideCurves.push_back(guide.curve);
+    for (Eigen::Index k = 0; k < K; ++k) {
+      crossings.profileParameters(k, l) = guide.airfoilParameters[static_cast<std::size_t>(k)];
+      crossings.guideParameters(k, l) = guide.guideParameters[static_cast<std::size_t>(k)];
+      skin->crossingParameters_[static_cast<std::size_t>(k)].push_back(
+          guide.airfoilParameters[static_cast<std::size_t>(k)]);
+    }
+  }
+  const geometry::GordonSurface gordon =
+      geometry::buildGordonSurface(skin->airfoils_, guideCurves, {}, &crossings, kDegreeAcrossProfiles);
+  if (gordon.profileSites.size() != skin->airfoils_.size() || gordon.guideSites.size() != guideCurves.size())
+    throw Error(ErrorCode::InvalidModel, "the guide curves do not cross every airfoil of wing '" + wing.uID + "' once");
+  skin->surface_ = gordon.surface;
+  skin->sectionSites_ = gordon.profileSites;
+  skin->guideSites_ = gordon.guideSites;
+  return skin;
+}
+
+double GuidedWingSkin::uAt(std::size_t section, double wholeParameter) const {
+  // Linear between the guides: the parameter the airfoil has at each guide is the u the
+  // guide runs at on the skin.
+  const std::vector<double>& at = crossingParameters_[section];
+  std::size_t l = 1;
+  while (l + 1 < at.size() && wholeParameter > at[l]) ++l;
+  const double share = (wholeParameter - at[l - 1]) / (at[l] - at[l - 1]);
+  return guideSites_[l - 1] + share * (guideSites_[l] - guideSites_[l - 1]);
+}
+
+gp_Pnt GuidedWingSkin::pointAt(std::size_t segment, double eta, double wholeParameter) const {
+  const double u = (1.0 - eta) * uAt(segment, wholeParameter) + eta * uAt(segment + 1, wholeParameter);
+  const double v = (1.0 - eta) * sectionSites_[segment] + eta * sectionSites_[segment + 1];
+  return surface_->Value(u, v);
+}
+
+gp_Pnt GuidedWingSkin::upperPoint(std::size_t segment, double eta, double xsi) const {
+  return pointAt(segment, eta, 1.0 + xsi);
+}
+
+gp_Pnt GuidedWingSkin::lowerPoint(std::size_t segment, double eta, double xsi) const {
+  return pointAt(segment, eta, 1.0 - xsi);
+}
+
+geometry::LoftPiece GuidedWingSkin::segmentPiece(std::size_t segment) const {
+  return geometry::loftPiece(surface_, sectionSites_[segment], sectionSites_[segment + 1], !blunt_);
+}
+
+}  // namespace airshape::wing
