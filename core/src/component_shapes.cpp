@@ -5,14 +5,14 @@
 
 namespace airshape {
 
-TopoDS_Shape ComponentShapes::shapeOf(const Configuration& configuration, const std::string& uid) const {
+const NamedShape& ComponentShapes::namedShapeOf(const Configuration& configuration, const std::string& uid) const {
   const long index = configuration.components().find(uid);
   if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
   const std::string& nodeType = configuration.components().components()[static_cast<std::size_t>(index)].nodeType;
   const auto builder = builders_.find(nodeType);
   if (builder == builders_.end()) throw Error(ErrorCode::NotImplemented, "no builder yet for " + nodeType);
-  return *configuration.cache().obtain<TopoDS_Shape>(
-      "shape:" + uid, [&] { return std::make_shared<const TopoDS_Shape>(builder->second(configuration, uid)); });
+  return *configuration.cache().obtain<NamedShape>(
+      "shape:" + uid, [&] { return std::make_shared<const NamedShape>(builder->second(configuration, uid)); });
 }
 
 }  // namespace airshape

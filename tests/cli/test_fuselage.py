@@ -184,3 +184,15 @@ def test_fuselage_conformance_does_not_regress():
     # Not every case passes yet (superellipse approximation, guide-curve files beyond the
     # case tolerance; see docs/fuselage.md). This floor guards what works.
     assert passed >= 184, output[-3000:]
+
+
+def test_faces_are_named(tmp_path):
+    path = tmp_path / "cylinders.xml"
+    write_cylinders(path)
+    full, half = ask(path, {"op": "component_faces", "uid": "Full"}, {"op": "component_faces", "uid": "HalfCylinder"})
+    areas = {face["name"]: face["area"] for face in full}
+    assert set(areas) == {"Full/front", "Full/rear", "FullG0/skin", "FullG1/skin"}, areas
+    assert math.isclose(areas["FullG0/skin"], 2 * math.pi * 5, rel_tol=1e-5)
+    assert math.isclose(areas["Full/front"], math.pi, rel_tol=1e-5)
+    names = {face["name"] for face in half}
+    assert {"HalfCylinderG0/symmetry", "HalfCylinderG1/symmetry"} <= names, names

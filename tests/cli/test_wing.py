@@ -187,3 +187,13 @@ def test_c1_from_previous_carries_the_tangent_across_the_section(tmp_path):
     guided_wing(path, "C1 from previous")
     before, after = leading_edge_slopes_at_the_section(path)
     assert abs(before) > 0.01 and abs(before - after) < 2e-3, (before, after)
+
+
+def test_faces_are_named():
+    (faces,) = ask({"op": "component_faces", "uid": "Rect"})
+    areas = {face["name"]: face["area"] for face in faces}
+    assert set(areas) == {"Rect/root", "Rect/tip", "RS/upper", "RS/lower"}, areas
+    chord, span, b = 2.0, 5.0, 0.15
+    side = parabola_arc(chord, b * chord / 4)
+    assert math.isclose(areas["RS/upper"], side * span, rel_tol=1e-7)
+    assert math.isclose(areas["Rect/root"], 2 * b * chord * chord / 6, rel_tol=1e-7)

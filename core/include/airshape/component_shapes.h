@@ -4,14 +4,14 @@
 #include <map>
 #include <string>
 
-#include <TopoDS_Shape.hxx>
+#include "airshape/named_shape.h"
 
 namespace airshape {
 
 class Configuration;
 
-/// Builds the solid of one component (by uID) of a configuration.
-using ShapeBuilder = std::function<TopoDS_Shape(const Configuration& configuration, const std::string& uid)>;
+/// Builds the solid of one component (by uID) of a configuration, its faces named.
+using ShapeBuilder = std::function<NamedShape(const Configuration& configuration, const std::string& uid)>;
 
 /// The shape builders plugins register, by CPACS node type, so that any code (a wing asking
 /// for its parent fuselage, the bounding box, exports) gets a component's solid without
@@ -25,9 +25,14 @@ class ComponentShapes {
     return entry == builders_.end() ? nullptr : &entry->second;
   }
 
-  /// The solid of the component with this uID, built once and cached in the configuration.
-  /// Throws Error when no component has the uID or no plugin builds its type.
-  TopoDS_Shape shapeOf(const Configuration& configuration, const std::string& uid) const;
+  /// The solid of the component with this uID and its face names, built once and cached
+  /// in the configuration. Throws Error when no component has the uID or no plugin builds
+  /// its type.
+  const NamedShape& namedShapeOf(const Configuration& configuration, const std::string& uid) const;
+  /// The solid alone.
+  const TopoDS_Shape& shapeOf(const Configuration& configuration, const std::string& uid) const {
+    return namedShapeOf(configuration, uid).shape;
+  }
 
  private:
   std::map<std::string, ShapeBuilder> builders_;

@@ -65,7 +65,7 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   return face.Face();
 }
 
-TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces) {
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces) {
   BRepBuilderAPI_Sewing sewing(kSewingTolerance);
   for (const TopoDS_Face& face : faces)
     if (!face.IsNull()) sewing.Add(face);
@@ -74,6 +74,11 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces) {
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
   TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
   BRepLib::OrientClosedSolid(solid);  // outward normals, so that Boolean operations see the inside
+  if (sewnFaces) {
+    sewnFaces->clear();
+    for (const TopoDS_Face& face : faces)
+      sewnFaces->push_back(face.IsNull() || !sewing.IsModified(face) ? face : TopoDS::Face(sewing.Modified(face)));
+  }
   return solid;
 }
 

@@ -34,22 +34,26 @@ TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, do
   return BRepBuilderAPI_MakeFace(loft, u0, u1, vStart, vEnd, kFaceTolerance).Face();
 }
 
-LoftPiece loftPiece(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd, bool closedProfiles) {
+TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd) {
   double u0, u1, v0, v1;
   loft->Bounds(u0, u1, v0, v1);
-  const auto startProfile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(vStart));
-  const auto endProfile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(vEnd));
+  return ruledFace(alongV(*loft, u0, vStart, vEnd), alongV(*loft, u1, vStart, vEnd));
+}
+
+TopoDS_Face loftCap(const Handle(Geom_BSplineSurface) & loft, double v, bool closedProfiles) {
+  const auto profile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(v));
+  if (isPoint(*profile)) return {};
+  if (closedProfiles) return planarFace({profile});
+  return planarFace({profile, straightLine(profile->EndPoint(), profile->StartPoint())});
+}
+
+LoftPiece loftPiece(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd, bool closedProfiles) {
   LoftPiece piece;
   piece.skin = loftFace(loft, vStart, vEnd);
-  std::vector<Handle(Geom_BSplineCurve)> startBoundary = {startProfile}, endBoundary = {endProfile};
-  if (!closedProfiles) {
-    piece.closingFace = ruledFace(alongV(*loft, u0, vStart, vEnd), alongV(*loft, u1, vStart, vEnd));
-    startBoundary.push_back(straightLine(startProfile->EndPoint(), startProfile->StartPoint()));
-    endBoundary.push_back(straightLine(endProfile->EndPoint(), endProfile->StartPoint()));
-  }
+  if (!closedProfiles) piece.closingFace = loftClosingFace(loft, vStart, vEnd);
   try {
-    if (!isPoint(*startProfile)) piece.startCap = planarFace(startBoundary);
-    if (!isPoint(*endProfile)) piece.endCap = planarFace(endBoundary);
+    piece.startCap = loftCap(loft, vStart, closedProfiles);
+    piece.endCap = loftCap(loft, vEnd, closedProfiles);
     piece.solid = sewnSolid({piece.skin, piece.closingFace, piece.startCap, piece.endCap});
   } catch (const Error& error) {
     piece.solidProblem = error.message();

@@ -6,7 +6,9 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/model/symmetry.h"
+#include "airshape/query/arguments.h"
 
 namespace airshape::query {
 
@@ -38,11 +40,8 @@ Json asJson(const Bnd_Box& box) {
 }
 
 Json boundingBox(Configuration& configuration, const Json& query) {
-  if (query.contains("uid")) {
-    const auto& uid = query.at("uid");
-    if (!uid.is_string()) throw Error(ErrorCode::InvalidArgument, "argument 'uid' must be a string");
-    return asJson(tightBox(configuration.shapes().shapeOf(configuration, uid.get<std::string>())));
-  }
+  if (query.contains("uid"))
+    return asJson(tightBox(configuration.shapes().shapeOf(configuration, stringArgument(query, "uid"))));
   // The whole configuration, mirrored halves included: every component a plugin builds.
   Bnd_Box all;
   for (const auto& component : configuration.components().components()) {
@@ -58,10 +57,21 @@ Json boundingBox(Configuration& configuration, const Json& query) {
 
 }  // namespace
 
+/// The named faces of a component's solid with their areas, in the builder's order.
+Json componentFaces(Configuration& configuration, const Json& query) {
+  Json faces = Json::array();
+  for (const auto& [name, face] :
+       configuration.shapes().namedShapeOf(configuration, stringArgument(query, "uid")).faces)
+    faces.push_back({{"name", name}, {"area", geometry::areaOf(face)}});
+  return faces;
+}
+
 void registerCoreQueries(QueryRegistry& registry) {
   registry.add({"bounding_box", "core",
                 "[uid] -> {min, max}: tight box of a component, or of the whole configuration with mirrored halves",
                 boundingBox});
+  registry.add(
+      {"component_faces", "core", "uid -> [{name, area}]: the named faces of a component's solid", componentFaces});
 }
 
 }  // namespace airshape::query

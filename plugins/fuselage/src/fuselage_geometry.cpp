@@ -187,24 +187,47 @@ double FuselageGeometry::segmentSurfaceArea(std::size_t segment) const {
   return geometry::areaOf(segmentPiece(segment).skin);
 }
 
-double FuselageGeometry::volume() const { return geometry::volumeOf(solid()); }
+double FuselageGeometry::volume() const {
+  if (segments_.empty()) return 0.0;
+  // One skin face over the whole loft and its two caps: quicker than the named solid.
+  const geometry::LoftPiece whole = piece(0, segments_.size(), "the fuselage");
+  if (!whole.solid.IsNull()) return geometry::volumeOf(whole.solid);
+  double total = 0.0;  // sewing can fail on one face with many degenerate spans; segments do not
+  for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentVolume(k);
+  return total;
+}
 
 double FuselageGeometry::surfaceArea() const {
   return segments_.empty() ? 0.0 : geometry::areaOf(skinFace(0, segments_.size()));
 }
 
-TopoDS_Shape FuselageGeometry::solid() const {
+NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid");
-  // One skin face over the whole loft: no seams between segments to sew. Where that does not
-  // close (sewing can fail on a face with many degenerate spans), the segments' faces do.
-  const geometry::LoftPiece whole = piece(0, segments_.size(), "the fuselage");
-  if (!whole.solid.IsNull()) return whole.solid;
-  std::vector<TopoDS_Face> faces = {segmentPiece(0).startCap, segmentPiece(segments_.size() - 1).endCap};
-  for (std::size_t k = 0; k < segments_.size(); ++k) {
-    faces.push_back(segmentPiece(k).skin);
-    faces.push_back(segmentPiece(k).closingFace);
+  const double vFirst = sectionSites_.front(), vLast = sectionSites_.back();
+  std::vector<std::pair<std::string, TopoDS_Face>> named;
+  try {
+    named = {{fuselageUid + "/front", geometry::loftCap(loft_, vFirst, closedProfiles_)},
+             {fuselageUid + "/rear", geometry::loftCap(loft_, vLast, closedProfiles_)}};
+  } catch (const Error& error) {
+    throw Error(error.code(), "the fuselage: " + error.message());
   }
-  return geometry::sewnSolid(faces);
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    named.emplace_back(segments_[k].uid + "/skin", skinFace(k, k + 1));
+    if (!closedProfiles_)
+      named.emplace_back(segments_[k].uid + "/symmetry",
+                         geometry::loftClosingFace(loft_, sectionSites_[k], sectionSites_[k + 1]));
+  }
+  std::vector<TopoDS_Face> faces, sewn;
+  for (const auto& entry : named) faces.push_back(entry.second);
+  NamedShape result;
+  try {
+    result.shape = geometry::sewnSolid(faces, &sewn);
+  } catch (const Error& error) {
+    throw Error(error.code(), "the fuselage: " + error.message());
+  }
+  for (std::size_t i = 0; i < named.size(); ++i)
+    if (!sewn[i].IsNull()) result.faces.emplace_back(named[i].first, sewn[i]);
+  return result;
 }
 
 }  // namespace airshape::fuselage

@@ -12,6 +12,7 @@
 
 #include "airshape/geometry/loft_piece.h"
 #include "airshape/model/placement.h"
+#include "airshape/named_shape.h"
 #include "fuselage_guide_curves.h"
 #include "fuselage_profile.h"
 
@@ -46,8 +47,9 @@ class FuselageGeometry {
   /// The skin only: no caps, no symmetry faces.
   double surfaceArea() const;
 
-  /// The whole fuselage as one solid: skins, symmetry faces, front and rear caps.
-  TopoDS_Shape solid() const;
+  /// The whole fuselage as one solid: skins, symmetry faces, front and rear caps, named
+  /// "<segment uID>/skin", "<segment uID>/symmetry", "<fuselage uID>/front" and "/rear".
+  NamedShape solid(const std::string& fuselageUid) const;
 
  private:
   /// Skins the placed profiles (chain order): the loft without guide curves.

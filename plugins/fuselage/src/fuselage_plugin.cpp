@@ -26,7 +26,8 @@ class FuselagePlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
-      return FuselageGeometry::of(c, model::findByUid(c, model::primaryModel(c).fuselages, uid, "fuselage"))->solid();
+      return FuselageGeometry::of(c, model::findByUid(c, model::primaryModel(c).fuselages, uid, "fuselage"))
+          ->solid(uid);
     });
   }
 

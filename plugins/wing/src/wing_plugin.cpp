@@ -67,7 +67,8 @@ class WingPlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("wing", [](const Configuration& c, const std::string& uid) {
-      return WingShape::of(c, model::findByUid(c, model::primaryModel(c).wings, uid, "wing"))->solid();
+      const schema::WingType& wing = model::findByUid(c, model::primaryModel(c).wings, uid, "wing");
+      return WingShape::of(c, wing)->solid(wing.uID, WingGeometry::of(c, wing)->segmentUids());
     });
   }
 

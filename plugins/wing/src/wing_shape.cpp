@@ -97,15 +97,24 @@ double WingShape::surfaceArea() const {
   return total;
 }
 
-TopoDS_Shape WingShape::solid() const {
+NamedShape WingShape::solid(const std::string& wingUid, const std::vector<std::string>& segmentUids) const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the wing has no segments, so no solid");
-  std::vector<TopoDS_Face> faces = {segments_.front().innerCap, segments_.back().outerCap};
-  for (const SegmentShape& segment : segments_) {
-    faces.push_back(segment.upper);
-    faces.push_back(segment.lower);
-    faces.push_back(segment.trailingEdge);
+  std::vector<std::pair<std::string, TopoDS_Face>> named = {{wingUid + "/root", segments_.front().innerCap},
+                                                            {wingUid + "/tip", segments_.back().outerCap}};
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    const SegmentShape& segment = segments_[k];
+    // A guided skin is one face for both sides.
+    named.emplace_back(segmentUids[k] + (segment.lower.IsNull() ? "/skin" : "/upper"), segment.upper);
+    named.emplace_back(segmentUids[k] + "/lower", segment.lower);
+    named.emplace_back(segmentUids[k] + "/trailingEdge", segment.trailingEdge);
   }
-  return geometry::sewnSolid(faces);
+  std::vector<TopoDS_Face> faces, sewn;
+  for (const auto& entry : named) faces.push_back(entry.second);
+  NamedShape result;
+  result.shape = geometry::sewnSolid(faces, &sewn);
+  for (std::size_t i = 0; i < named.size(); ++i)
+    if (!sewn[i].IsNull()) result.faces.emplace_back(named[i].first, sewn[i]);
+  return result;
 }
 
 }  // namespace airshape::wing

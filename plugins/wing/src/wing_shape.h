@@ -7,6 +7,7 @@
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
 
+#include "airshape/named_shape.h"
 #include "wing_geometry.h"
 
 namespace airshape {
@@ -37,8 +38,10 @@ class WingShape {
   /// Every face of the wing solid: skins, trailing-edge strips, root and tip caps.
   double surfaceArea() const;
 
-  /// The whole wing as one solid: every segment's skins and strips, the root and tip caps.
-  TopoDS_Shape solid() const;
+  /// The whole wing as one solid: every segment's skins and strips, the root and tip caps,
+  /// named "<segment uID>/upper", "/lower", "/trailingEdge" ("/skin" where guide curves make
+  /// both sides one face), "<wing uID>/root" and "/tip".
+  NamedShape solid(const std::string& wingUid, const std::vector<std::string>& segmentUids) const;
 
  private:
   std::vector<SegmentShape> segments_;

@@ -26,6 +26,7 @@ TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom
 TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 
 /// Sews faces into a closed shell and makes it a solid. Throws Error when they do not close.
-TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces);
+/// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
 
 }  // namespace airshape::geometry

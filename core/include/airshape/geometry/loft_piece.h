@@ -21,6 +21,13 @@ struct LoftPiece {
 /// The skin of the loft over [vStart, vEnd] as one face, the whole u range.
 TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd);
 
+/// The face closing open profiles over [vStart, vEnd]: ruled between the skin's u-boundaries.
+TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd);
+
+/// The planar cap on the loft's profile at v (with its closing edge when the profiles are
+/// open); null where the profile is a point. Throws Error when the profile is not planar.
+TopoDS_Face loftCap(const Handle(Geom_BSplineSurface) & loft, double v, bool closedProfiles);
+
 /// The B-rep of the loft over [vStart, vEnd]. A failure to close it into a solid is kept
 /// in solidProblem rather than thrown, so the faces can still be measured.
 LoftPiece loftPiece(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd, bool closedProfiles);
