@@ -197,3 +197,17 @@ def test_faces_are_named():
     side = parabola_arc(chord, b * chord / 4)
     assert math.isclose(areas["RS/upper"], side * span, rel_tol=1e-7)
     assert math.isclose(areas["Rect/root"], 2 * b * chord * chord / 6, rel_tol=1e-7)
+
+
+def test_the_mirrored_half_is_its_own_named_shape():
+    result = airshape("query", WINGS, stdin='{"op":"component_faces","uid":"Swept"}\n'
+                                           '{"op":"component_faces","uid":"Swept","mirrored":true}\n'
+                                           '{"op":"component_faces","uid":"Rect","mirrored":true}\n')
+    original, mirrored, no_symmetry = [json.loads(line) for line in result.stdout.splitlines()]
+    assert "no symmetry plane" in no_symmetry["error"]
+    for face, image in zip(original["ok"], mirrored["ok"]):
+        # x-z-plane symmetry: same name with " (mirrored)", same area, centre with y negated.
+        assert image["name"] == face["name"] + " (mirrored)"
+        assert math.isclose(image["area"], face["area"], rel_tol=1e-12)
+        x, y, z = face["centre"]
+        assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(image["centre"], [x, -y, z])), (face, image)

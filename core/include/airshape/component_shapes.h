@@ -29,6 +29,10 @@ class ComponentShapes {
   /// in the configuration. Throws Error when no component has the uID or no plugin builds
   /// its type.
   const NamedShape& namedShapeOf(const Configuration& configuration, const std::string& uid) const;
+  /// The mirrored half of a component with a symmetry plane (CPACS `symmetry`, inherited
+  /// through parentUID): its solid mirrored, faces named as the original's plus
+  /// " (mirrored)". Throws Error when the component has no symmetry.
+  const NamedShape& mirroredShapeOf(const Configuration& configuration, const std::string& uid) const;
   /// The solid alone.
   const TopoDS_Shape& shapeOf(const Configuration& configuration, const std::string& uid) const {
     return namedShapeOf(configuration, uid).shape;

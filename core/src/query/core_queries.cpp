@@ -1,7 +1,9 @@
 #include "airshape/query/core_queries.h"
 
 #include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
 #include <tuple>
 
 #include "airshape/configuration.h"
@@ -57,12 +59,22 @@ Json boundingBox(Configuration& configuration, const Json& query) {
 
 }  // namespace
 
-/// The named faces of a component's solid with their areas, in the builder's order.
+/// The named faces of a component's solid (or its mirrored half) with their areas and
+/// centres, in the builder's order.
 Json componentFaces(Configuration& configuration, const Json& query) {
+  const std::string uid = stringArgument(query, "uid");
+  const bool mirrored =
+      query.contains("mirrored") && query.at("mirrored").is_boolean() && query.at("mirrored").get<bool>();
+  const NamedShape& shape = mirrored ? configuration.shapes().mirroredShapeOf(configuration, uid)
+                                     : configuration.shapes().namedShapeOf(configuration, uid);
   Json faces = Json::array();
-  for (const auto& [name, face] :
-       configuration.shapes().namedShapeOf(configuration, stringArgument(query, "uid")).faces)
-    faces.push_back({{"name", name}, {"area", geometry::areaOf(face)}});
+  for (const auto& [name, face] : shape.faces) {
+    GProp_GProps properties;
+    BRepGProp::SurfaceProperties(face, properties);
+    const gp_Pnt centre = properties.CentreOfMass();
+    faces.push_back(
+        {{"name", name}, {"area", geometry::areaOf(face)}, {"centre", {centre.X(), centre.Y(), centre.Z()}}});
+  }
   return faces;
 }
 
@@ -70,8 +82,9 @@ void registerCoreQueries(QueryRegistry& registry) {
   registry.add({"bounding_box", "core",
                 "[uid] -> {min, max}: tight box of a component, or of the whole configuration with mirrored halves",
                 boundingBox});
-  registry.add(
-      {"component_faces", "core", "uid -> [{name, area}]: the named faces of a component's solid", componentFaces});
+  registry.add({"component_faces", "core",
+                "uid, [mirrored] -> [{name, area, centre}]: the named faces of a component's solid or mirrored half",
+                componentFaces});
 }
 
 }  // namespace airshape::query
