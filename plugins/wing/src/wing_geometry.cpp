@@ -77,20 +77,28 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
       geometry->segments_.push_back(
           {segment.uID, end(segment.fromElementUID, "fromElementUID"), end(segment.toElementUID, "toElementUID")});
     }
-    if (!geometry->segments_.empty())
-      geometry->guidedSkin_ = GuidedWingSkin::build(configuration, wing, geometry->segments_);
+    geometry->configuration_ = &configuration;
+    geometry->wing_ = &wing;
     return std::shared_ptr<const WingGeometry>(geometry);
   });
 }
 
+const GuidedWingSkin* WingGeometry::guidedSkin() const {
+  std::lock_guard<std::mutex> lock(guidedSkinMutex_);
+  // A failure throws before the flag is set, so it is reported again by the next query.
+  if (!guidedSkinBuilt_ && !segments_.empty()) guidedSkin_ = GuidedWingSkin::build(*configuration_, *wing_, segments_);
+  guidedSkinBuilt_ = true;
+  return guidedSkin_.get();
+}
+
 gp_Pnt WingGeometry::upperPoint(std::size_t segment, double eta, double xsi) const {
-  if (guidedSkin_) return guidedSkin_->upperPoint(segment, eta, xsi);
+  if (const GuidedWingSkin* skin = guidedSkin()) return skin->upperPoint(segment, eta, xsi);
   const WingSegment& s = segments_[segment];
   return lerp(s.inner.upper(xsi), s.outer.upper(xsi), eta);
 }
 
 gp_Pnt WingGeometry::lowerPoint(std::size_t segment, double eta, double xsi) const {
-  if (guidedSkin_) return guidedSkin_->lowerPoint(segment, eta, xsi);
+  if (const GuidedWingSkin* skin = guidedSkin()) return skin->lowerPoint(segment, eta, xsi);
   const WingSegment& s = segments_[segment];
   return lerp(s.inner.lower(xsi), s.outer.lower(xsi), eta);
 }

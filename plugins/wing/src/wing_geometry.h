@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,10 @@ class WingGeometry {
   /// The segments' uIDs in chain order, for addressing them by index or uID.
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
-  /// The skin shaped by guide curves, or null when the wing has none (ruled skins).
-  const GuidedWingSkin* guidedSkin() const { return guidedSkin_.get(); }
+  /// The skin shaped by guide curves, or null when the wing has none (ruled skins). Built
+  /// on first use, so that queries that need no skin (MAC, areas of the chord surface) work
+  /// even when the guide curves are broken.
+  const GuidedWingSkin* guidedSkin() const;
 
   gp_Pnt upperPoint(std::size_t segment, double eta, double xsi) const;
   gp_Pnt lowerPoint(std::size_t segment, double eta, double xsi) const;
@@ -57,7 +60,11 @@ class WingGeometry {
  private:
   std::vector<WingSegment> segments_;
   std::vector<std::string> segmentUids_;
-  std::shared_ptr<const GuidedWingSkin> guidedSkin_;
+  const Configuration* configuration_ = nullptr;
+  const schema::WingType* wing_ = nullptr;
+  mutable std::mutex guidedSkinMutex_;
+  mutable std::shared_ptr<const GuidedWingSkin> guidedSkin_;
+  mutable bool guidedSkinBuilt_ = false;
 };
 
 }  // namespace airshape::wing
