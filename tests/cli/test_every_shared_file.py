@@ -14,7 +14,6 @@ KNOWN = [
     "has neither pointList nor cst2D",  # nacaProfile airfoils (not CPACS 3.5)
     "segments do not form one continuous chain",                     # left out on loading, as the reference does
     "the wing has no segments",                                      # multiple_wings.xml: W13_EmptyWing
-    "needs fromRelativeCircumference",  # kinks_withGC_ParameterDef: the reference's own fromParameter
 ]
 
 

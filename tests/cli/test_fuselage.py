@@ -196,3 +196,19 @@ def test_faces_are_named(tmp_path):
     assert math.isclose(areas["Full/front"], math.pi, rel_tol=1e-5)
     names = {face["name"] for face in half}
     assert {"HalfCylinderG0/symmetry", "HalfCylinderG1/symmetry"} <= names, names
+
+
+def test_guides_may_start_at_a_profile_parameter(tmp_path):
+    """The reference's fromParameter/toParameter (outside the schema) place a guide at a
+    parameter of the profile curve: on an evenly spaced circle, zeta 0.25 is rc 0.25."""
+    by_circumference, by_parameter = tmp_path / "rc.xml", tmp_path / "parameter.xml"
+    guided_cylinder(by_circumference, "C0")
+    text = by_circumference.read_text()
+    by_parameter.write_text(
+        text.replace("<fromRelativeCircumference>0.25</fromRelativeCircumference>", "<fromParameter>0.25</fromParameter>")
+            .replace("<toRelativeCircumference>0.25</toRelativeCircumference>",
+                     "<toParameter>0.25</toParameter><toRelativeCircumference>0</toRelativeCircumference>"))
+    query = {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0.3, "zeta": 0.25}
+    (a,) = ask(by_circumference, query)
+    (b,) = ask(by_parameter, query)
+    assert all(math.isclose(x, y, abs_tol=1e-6) for x, y in zip(a, b)), (a, b)

@@ -17,6 +17,7 @@
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/model/placement.h"
+#include "airshape/xml/text.h"
 
 namespace airshape::model {
 
@@ -50,18 +51,41 @@ GuideProfile readGuideProfile(const schema::CpacsType& cpacs, const GuideCurveTy
               curve.xpath + "/guideCurveProfileUID");
 }
 
+/// A number the schema has no place for, read from the element itself (the reference's
+/// fromParameter/toParameter extension).
+std::optional<double> extensionNumber(const GuideCurveType& curve, const char* name) {
+  if (!curve.binding) return std::nullopt;
+  const auto* element = xml::firstChild(*curve.binding, name);
+  if (!element) return std::nullopt;
+  const std::vector<double> values = parseVector(xml::text(*element), curve.xpath + "/" + name);
+  if (values.size() != 1) throw Error(ErrorCode::InvalidModel, "expected one number", {}, curve.xpath + "/" + name);
+  return values.front();
+}
+
+/// Where a root guide curve starts on its first profile.
+ProfilePosition startOf(const GuideCurveType& curve) {
+  if (curve.fromRelativeCircumference) return {*curve.fromRelativeCircumference, false};
+  return {*extensionNumber(curve, "fromParameter"), true};
+}
+
+/// Where a guide curve piece ends on its outer profile.
+ProfilePosition endOf(const GuideCurveType& curve) {
+  if (const auto parameter = extensionNumber(curve, "toParameter")) return {*parameter, true};
+  return {curve.toRelativeCircumference, false};
+}
+
 /// One piece of a guide curve: the curve definition in segment `segment` and its points.
 struct Piece {
   const GuideCurveType* definition = nullptr;
   std::size_t segment = 0;
-  double fromRc = 0.0;
+  ProfilePosition from;
   std::vector<gp_Pnt> points;
   std::vector<double> parameters;
 };
 
 /// The chain of pieces of one root, one per segment.
 std::vector<Piece> chainOf(const GuideCurveType& root, const std::vector<const schema::GuideCurvesType*>& perSegment) {
-  std::vector<Piece> chain = {{&root, 0, *root.fromRelativeCircumference, {}, {}}};
+  std::vector<Piece> chain = {{&root, 0, startOf(root), {}, {}}};
   for (std::size_t segment = 1; segment < perSegment.size(); ++segment) {
     const GuideCurveType* next = nullptr;
     if (perSegment[segment])
@@ -77,7 +101,7 @@ std::vector<Piece> chainOf(const GuideCurveType& root, const std::vector<const s
                   "no guide curve of the next segment continues this one (every guide curve must run through all "
                   "segments)",
                   {}, chain.back().definition->xpath);
-    chain.push_back({next, segment, chain.back().definition->toRelativeCircumference, {}, {}});
+    chain.push_back({next, segment, endOf(*chain.back().definition), {}, {}});
   }
   return chain;
 }
@@ -86,7 +110,7 @@ std::vector<Piece> chainOf(const GuideCurveType& root, const std::vector<const s
 void placePiece(Piece& piece, const GuideProfile& profile, const GuideCurveSections& sections, double from, double to) {
   const GuideCurveType& curve = *piece.definition;
   const std::size_t k = piece.segment;
-  const gp_Pnt p0 = sections.pointAt(k, piece.fromRc), p1 = sections.pointAt(k + 1, curve.toRelativeCircumference);
+  const gp_Pnt p0 = sections.pointAt(k, piece.from), p1 = sections.pointAt(k + 1, endOf(curve));
   gp_Vec x = curve.rXDirection ? gp_Vec(curve.rXDirection->x, curve.rXDirection->y, curve.rXDirection->z)
                                : sections.defaultXDirection;
   const gp_Vec chord(p0, p1);
@@ -220,7 +244,7 @@ std::vector<GuideCurve> buildGuideCurves(const schema::CpacsType& cpacs,
                       {}, curve.xpath);
 
   for (const auto& root : perSegment.front()->guideCurve) {
-    if (!root.fromRelativeCircumference)
+    if (!root.fromRelativeCircumference && !extensionNumber(root, "fromParameter"))
       throw Error(ErrorCode::InvalidModel, "a guide curve of the first segment needs fromRelativeCircumference", {},
                   root.xpath);
     std::vector<Piece> pieces = chainOf(root, perSegment);
@@ -231,10 +255,10 @@ std::vector<GuideCurve> buildGuideCurves(const schema::CpacsType& cpacs,
       if (p == 0 || pieces[p].definition->continuity) parts.push_back({p, p + 1, {}, {}, {}});
       parts.back().endPiece = p + 1;
     }
-    std::vector<double> circumferences;
-    for (const Piece& piece : pieces) circumferences.push_back(piece.fromRc);
-    circumferences.push_back(pieces.back().definition->toRelativeCircumference);
-    result.push_back({root.uID, joinParts(pieces, parts), sectionParameters, circumferences});
+    std::vector<ProfilePosition> positions;
+    for (const Piece& piece : pieces) positions.push_back(piece.from);
+    positions.push_back(endOf(*pieces.back().definition));
+    result.push_back({root.uID, joinParts(pieces, parts), sectionParameters, positions});
   }
   return result;
 }

@@ -36,13 +36,25 @@ ProfilePosition positionAtRelativeCircumference(const PlacedProfile& section, do
   return {end.Translated(gp_Vec(end, start).Normalized() * (length - curveLength)), {}};
 }
 
+/// Where a guide meets a profile: by relative circumference, or directly by the profile
+/// curve's parameter (the reference's fromParameter/toParameter).
+ProfilePosition positionOn(const PlacedProfile& section, const model::ProfilePosition& at) {
+  if (!at.isCurveParameter) return positionAtRelativeCircumference(section, at.value);
+  const Geom_BSplineCurve& curve = *section.curve;
+  if (at.value < curve.FirstParameter() || at.value > curve.LastParameter())
+    throw Error(ErrorCode::InvalidModel, "a guide curve's profile parameter lies outside the profile's range");
+  return {curve.Value(at.value), at.value};
+}
+
 }  // namespace
 
 FuselageGuides fuselageGuideCurves(const schema::CpacsType& cpacs, const std::vector<PlacedProfile>& sections,
                                    const std::vector<const schema::GuideCurvesType*>& perSegment) {
   model::GuideCurveSections described;
   described.count = sections.size();
-  described.pointAt = [&](std::size_t k, double rc) { return positionAtRelativeCircumference(sections[k], rc).point; };
+  described.pointAt = [&](std::size_t k, const model::ProfilePosition& at) {
+    return positionOn(sections[k], at).point;
+  };
   described.scale = [&](std::size_t k) { return sections[k].profile->guideScale(sections[k].transform); };
   described.centre = [&](std::size_t k) {
     const Eigen::Vector3d origin = sections[k].transform.translation();
@@ -58,8 +70,8 @@ FuselageGuides fuselageGuideCurves(const schema::CpacsType& cpacs, const std::ve
     const model::GuideCurve& guide = built[static_cast<std::size_t>(l)];
     guides.curves.push_back(guide.curve);
     for (Eigen::Index k = 0; k < K; ++k) {
-      const auto position = positionAtRelativeCircumference(sections[static_cast<std::size_t>(k)],
-                                                            guide.relativeCircumferences[static_cast<std::size_t>(k)]);
+      const auto position =
+          positionOn(sections[static_cast<std::size_t>(k)], guide.positions[static_cast<std::size_t>(k)]);
       if (!position.parameter)
         throw Error(ErrorCode::InvalidModel, "guide curve '" + guide.rootUid +
                                                  "' leaves the profile's curve (relative circumference beyond it)");

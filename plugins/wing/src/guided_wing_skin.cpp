@@ -60,6 +60,16 @@ Handle(Geom_BSplineCurve) interpolateThrough(const std::vector<Handle(Geom_BSpli
   return geometry::interpolateCurve(points, sections, 3);
 }
 
+/// The whole-airfoil parameter where a guide meets it; the reference's fromParameter and
+/// toParameter have no defined meaning on wings.
+double parameterAt(const Handle(Geom_BSplineCurve) & airfoil, const model::ProfilePosition& at) {
+  if (at.isCurveParameter)
+    throw Error(ErrorCode::InvalidModel,
+                "wing guide curves need relative circumferences (fromParameter and "
+                "toParameter are not defined for wings)");
+  return parameterAtRelativeCircumference(airfoil, at.value);
+}
+
 }  // namespace
 
 std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration& configuration,
@@ -84,8 +94,8 @@ std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration&
 
   model::GuideCurveSections described;
   described.count = sections.size();
-  described.pointAt = [&](std::size_t k, double rc) {
-    return skin->airfoils_[k]->Value(parameterAtRelativeCircumference(skin->airfoils_[k], rc));
+  described.pointAt = [&](std::size_t k, const model::ProfilePosition& at) {
+    return skin->airfoils_[k]->Value(parameterAt(skin->airfoils_[k], at));
   };
   described.scale = [&](std::size_t k) { return sections[k]->leadingEdge().Distance(sections[k]->trailingEdge()); };
   described.centre = [&](std::size_t k) {
@@ -104,8 +114,7 @@ std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration&
   for (const model::GuideCurve& guide : model::buildGuideCurves(configuration.cpacs(), perSegment, described)) {
     Crossing crossing{guide.curve, {}, guide.sectionParameters};
     for (std::size_t k = 0; k < sections.size(); ++k)
-      crossing.airfoilParameters.push_back(
-          parameterAtRelativeCircumference(skin->airfoils_[k], guide.relativeCircumferences[k]));
+      crossing.airfoilParameters.push_back(parameterAt(skin->airfoils_[k], guide.positions[k]));
     crossingGuides.push_back(crossing);
   }
   // The skin must reach both trailing-edge ends. On a sharp trailing edge one guide there

@@ -12,12 +12,20 @@
 
 namespace airshape::model {
 
+/// Where a guide curve meets a profile: at a relative circumference, or, with the reference
+/// library's own fromParameter/toParameter (outside the schema), at a parameter of the
+/// profile curve itself.
+struct ProfilePosition {
+  double value = 0.0;
+  bool isCurveParameter = false;
+};
+
 /// What a component (wing or fuselage) tells the guide-curve builder about its sections,
 /// in chain order (section k starts segment k; the last one ends the last segment).
 struct GuideCurveSections {
   std::size_t count = 0;
-  /// The global point of section k's profile at relative circumference rc.
-  std::function<gp_Pnt(std::size_t section, double rc)> pointAt;
+  /// The global point of section k's profile at a position.
+  std::function<gp_Pnt(std::size_t section, const ProfilePosition& position)> pointAt;
   /// The length by which a guide profile's alpha and gamma are scaled at section k.
   std::function<double(std::size_t section)> scale;
   /// The section's centre; guides pass the sections at centripetal parameters of these.
@@ -27,13 +35,13 @@ struct GuideCurveSections {
 };
 
 /// One guide curve running through every segment: its first piece's uID, and the curve,
-/// which passes section k at parameter sectionParameters[k], where it is at relative
-/// circumference relativeCircumferences[k] on the section's profile.
+/// which passes section k at parameter sectionParameters[k], where it is at positions[k]
+/// on the section's profile.
 struct GuideCurve {
   std::string rootUid;
   Handle(Geom_BSplineCurve) curve;
   std::vector<double> sectionParameters;
-  std::vector<double> relativeCircumferences;
+  std::vector<ProfilePosition> positions;
 };
 
 /// Builds the guide curves of a component from its segments' <guideCurves> (chain order;
