@@ -70,19 +70,84 @@ double parameterAt(const Handle(Geom_BSplineCurve) & airfoil, const model::Profi
   return parameterAtRelativeCircumference(airfoil, at.value);
 }
 
+/// The <guideCurves> of each segment (chain order; null where it has none).
+std::vector<const schema::GuideCurvesType*> guideCurvesPerSegment(const schema::WingType& wing,
+                                                                  const std::vector<WingSegment>& segments) {
+  std::map<std::string, const schema::WingSegmentType*> definitions;
+  if (wing.segments)
+    for (const auto& definition : wing.segments->segment) definitions[definition.uID] = &definition;
+  std::vector<const schema::GuideCurvesType*> perSegment;
+  for (const WingSegment& segment : segments) {
+    const auto* definition = definitions.at(segment.uid);
+    perSegment.push_back(definition->guideCurves ? &*definition->guideCurves : nullptr);
+  }
+  return perSegment;
+}
+
+/// A guide with where it crosses every airfoil: whole-airfoil parameters and its own.
+struct GuideCrossing {
+  Handle(Geom_BSplineCurve) curve;
+  std::vector<double> airfoilParameters, guideParameters;
+};
+
+/// The wing's guides, completed so that the skin reaches both trailing-edge ends (on a
+/// sharp trailing edge one guide there serves both; a missing one runs through the
+/// airfoils' ends), in the order they cross the airfoils.
+std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& guides,
+                                          const std::vector<Handle(Geom_BSplineCurve)>& airfoils, bool blunt) {
+  std::vector<GuideCrossing> result;
+  for (const model::GuideCurve& guide : guides) {
+    GuideCrossing crossing{guide.curve, {}, guide.sectionParameters};
+    for (std::size_t k = 0; k < airfoils.size(); ++k)
+      crossing.airfoilParameters.push_back(parameterAt(airfoils[k], guide.positions[k]));
+    result.push_back(crossing);
+  }
+  const std::vector<double> sectionParameters = result.front().guideParameters;
+  auto guideAt = [&](double end) -> const GuideCrossing* {
+    for (const GuideCrossing& c : result)
+      if (std::abs(c.airfoilParameters.front() - end) < 1e-9) return &c;
+    return nullptr;
+  };
+  for (double end : {0.0, 2.0}) {
+    if (guideAt(end)) continue;
+    const GuideCrossing* other = blunt ? nullptr : guideAt(2.0 - end);
+    result.push_back({other ? other->curve : interpolateThrough(airfoils, end, sectionParameters),
+                      std::vector<double>(airfoils.size(), end), sectionParameters});
+  }
+  std::sort(result.begin(), result.end(), [](const GuideCrossing& a, const GuideCrossing& b) {
+    return a.airfoilParameters.front() < b.airfoilParameters.front();
+  });
+  return result;
+}
+
+/// What the guide-curve builder needs of the wing's sections (CONVENTIONS §9.1): points by
+/// relative circumference on the whole airfoils, the global chord as scale, chord midpoints
+/// as centres, the wing's x axis as the default rXDirection.
+model::GuideCurveSections describeSections(const Configuration& configuration, const schema::WingType& wing,
+                                           const std::vector<const SegmentEnd*>& sections,
+                                           const std::vector<Handle(Geom_BSplineCurve)>& airfoils) {
+  model::GuideCurveSections described;
+  described.count = sections.size();
+  described.pointAt = [&airfoils](std::size_t k, const model::ProfilePosition& at) {
+    return airfoils[k]->Value(parameterAt(airfoils[k], at));
+  };
+  described.scale = [sections](std::size_t k) {
+    return sections[k]->leadingEdge().Distance(sections[k]->trailingEdge());
+  };
+  described.centre = [sections](std::size_t k) {
+    return gp_Pnt(0.5 * (sections[k]->leadingEdge().XYZ() + sections[k]->trailingEdge().XYZ()));
+  };
+  const Eigen::Vector3d x = model::componentTransform(configuration, wing.uID).linear() * Eigen::Vector3d::UnitX();
+  described.defaultXDirection = gp_Vec(x.x(), x.y(), x.z());
+  return described;
+}
+
 }  // namespace
 
 std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration& configuration,
                                                             const schema::WingType& wing,
                                                             const std::vector<WingSegment>& segments) {
-  std::vector<const schema::GuideCurvesType*> perSegment;
-  std::map<std::string, const schema::WingSegmentType*> definitions;
-  if (wing.segments)
-    for (const auto& definition : wing.segments->segment) definitions[definition.uID] = &definition;
-  for (const WingSegment& segment : segments) {
-    const auto* definition = definitions.at(segment.uid);
-    perSegment.push_back(definition->guideCurves ? &*definition->guideCurves : nullptr);
-  }
+  const std::vector<const schema::GuideCurvesType*> perSegment = guideCurvesPerSegment(wing, segments);
   if (!model::hasGuideCurves(perSegment)) return nullptr;
 
   auto skin = std::make_shared<GuidedWingSkin>();
@@ -92,63 +157,24 @@ std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration&
   for (const SegmentEnd* end : sections) skin->airfoils_.push_back(wholeAirfoil(*end));
   skin->blunt_ = sections.front()->profile->bluntTrailingEdge();
 
-  model::GuideCurveSections described;
-  described.count = sections.size();
-  described.pointAt = [&](std::size_t k, const model::ProfilePosition& at) {
-    return skin->airfoils_[k]->Value(parameterAt(skin->airfoils_[k], at));
-  };
-  described.scale = [&](std::size_t k) { return sections[k]->leadingEdge().Distance(sections[k]->trailingEdge()); };
-  described.centre = [&](std::size_t k) {
-    return gp_Pnt(0.5 * (sections[k]->leadingEdge().XYZ() + sections[k]->trailingEdge().XYZ()));
-  };
-  const Eigen::Vector3d x = model::componentTransform(configuration, wing.uID).linear() * Eigen::Vector3d::UnitX();
-  described.defaultXDirection = gp_Vec(x.x(), x.y(), x.z());
-
-  // Each guide with where it crosses every airfoil (whole-airfoil parameter, ascending
-  // along the airfoil: the order the Gordon surface sorts them in).
-  struct Crossing {
-    Handle(Geom_BSplineCurve) curve;
-    std::vector<double> airfoilParameters, guideParameters;
-  };
-  std::vector<Crossing> crossingGuides;
-  for (const model::GuideCurve& guide : model::buildGuideCurves(configuration.cpacs(), perSegment, described)) {
-    Crossing crossing{guide.curve, {}, guide.sectionParameters};
-    for (std::size_t k = 0; k < sections.size(); ++k)
-      crossing.airfoilParameters.push_back(parameterAt(skin->airfoils_[k], guide.positions[k]));
-    crossingGuides.push_back(crossing);
-  }
-  // The skin must reach both trailing-edge ends. On a sharp trailing edge one guide there
-  // serves both ends; a missing one runs through the airfoils' ends at the section parameters.
-  const std::vector<double> sectionParameters = crossingGuides.front().guideParameters;
-  auto guideAt = [&](double end) -> const Crossing* {
-    for (const Crossing& c : crossingGuides)
-      if (std::abs(c.airfoilParameters.front() - end) < 1e-9) return &c;
-    return nullptr;
-  };
-  for (double end : {0.0, 2.0}) {
-    if (guideAt(end)) continue;
-    const Crossing* other = skin->blunt_ ? nullptr : guideAt(2.0 - end);
-    Crossing added{other ? other->curve : interpolateThrough(skin->airfoils_, end, sectionParameters),
-                   std::vector<double>(sections.size(), end), sectionParameters};
-    crossingGuides.push_back(added);
-  }
-  std::sort(crossingGuides.begin(), crossingGuides.end(), [](const Crossing& a, const Crossing& b) {
-    return a.airfoilParameters.front() < b.airfoilParameters.front();
-  });
+  const std::vector<GuideCrossing> guides =
+      crossingGuides(model::buildGuideCurves(configuration.cpacs(), perSegment,
+                                             describeSections(configuration, wing, sections, skin->airfoils_)),
+                     skin->airfoils_, skin->blunt_);
   std::vector<Handle(Geom_BSplineCurve)> guideCurves;
   geometry::KnownCrossings crossings;
-  const auto K = static_cast<Eigen::Index>(sections.size()), L = static_cast<Eigen::Index>(crossingGuides.size());
+  const auto K = static_cast<Eigen::Index>(sections.size()), L = static_cast<Eigen::Index>(guides.size());
   crossings.profileParameters.resize(K, L);
   crossings.guideParameters.resize(K, L);
   skin->crossingParameters_.assign(sections.size(), {});
   for (Eigen::Index l = 0; l < L; ++l) {
-    const Crossing& guide = crossingGuides[static_cast<std::size_t>(l)];
+    const GuideCrossing& guide = guides[static_cast<std::size_t>(l)];
     guideCurves.push_back(guide.curve);
     for (Eigen::Index k = 0; k < K; ++k) {
-      crossings.profileParameters(k, l) = guide.airfoilParameters[static_cast<std::size_t>(k)];
-      crossings.guideParameters(k, l) = guide.guideParameters[static_cast<std::size_t>(k)];
-      skin->crossingParameters_[static_cast<std::size_t>(k)].push_back(
-          guide.airfoilParameters[static_cast<std::size_t>(k)]);
+      const auto kk = static_cast<std::size_t>(k);
+      crossings.profileParameters(k, l) = guide.airfoilParameters[kk];
+      crossings.guideParameters(k, l) = guide.guideParameters[kk];
+      skin->crossingParameters_[kk].push_back(guide.airfoilParameters[kk]);
     }
   }
   const geometry::GordonSurface gordon =
