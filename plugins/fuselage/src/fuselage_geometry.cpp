@@ -1,5 +1,7 @@
 #include "fuselage_geometry.h"
 
+#include <algorithm>
+#include <optional>
 #include <unordered_map>
 
 #include <GCPnts_AbscissaPoint.hxx>
@@ -51,6 +53,24 @@ class ProfileLibrary {
 const TopoDS_Shape& solidOf(const geometry::LoftPiece& segment) {
   if (segment.solid.IsNull()) throw Error(ErrorCode::InvalidModel, segment.solidProblem);
   return segment.solid;
+}
+
+/// The parameter of the point of `curve` at `target` (within 1e-7), found by Newton's method
+/// from `start`; nothing when it does not get there.
+std::optional<double> nearbyParameter(const Geom_BSplineCurve& curve, const gp_Pnt& target, double start) {
+  constexpr double kOnCurve = 1e-7;
+  double t = std::clamp(start, curve.FirstParameter(), curve.LastParameter());
+  for (int step = 0; step < 20; ++step) {
+    gp_Pnt p;
+    gp_Vec d1, d2;
+    curve.D2(t, p, d1, d2);
+    if (p.Distance(target) <= kOnCurve) return t;
+    const gp_Vec offset(target, p);
+    const double slope = offset.Dot(d1), curvature = offset.Dot(d2) + d1.SquareMagnitude();
+    if (!(curvature > 0.0)) return std::nullopt;
+    t = std::clamp(t - slope / curvature, curve.FirstParameter(), curve.LastParameter());
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -118,6 +138,7 @@ void FuselageGeometry::loftWithGuides(const std::vector<PlacedProfile>& sections
   loft_ = gordon.surface;
   sectionSites_ = gordon.profileSites;
   guided_ = true;
+  for (double v : sectionSites_) sectionIsoCurves_.push_back(Handle(Geom_BSplineCurve)::DownCast(loft_->VIso(v)));
 }
 
 void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXpaths) {
@@ -140,8 +161,13 @@ Handle(Geom_BSplineCurve) FuselageGeometry::profileOnLoft(std::size_t section) c
 double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const {
   if (!guided_) return zeta;
   // The Gordon surface runs the profiles at parameters of its own: find where this
-  // profile's point at zeta lies on the surface's iso-curve there.
-  GeomAPI_ProjectPointOnCurve projection(profiles_[section]->Value(zeta), loft_->VIso(sectionSites_[section]));
+  // profile's point at zeta lies on the surface's iso-curve there. The two parameters are
+  // close where a guide sits at the profile's start, so Newton's method from zeta usually
+  // lands in a few steps; where it does not, a global projection decides.
+  const gp_Pnt target = profiles_[section]->Value(zeta);
+  const Geom_BSplineCurve& iso = *sectionIsoCurves_[section];
+  if (const auto near = nearbyParameter(iso, target, zeta)) return *near;
+  GeomAPI_ProjectPointOnCurve projection(target, sectionIsoCurves_[section]);
   return projection.NbPoints() > 0 ? projection.LowerDistanceParameter() : zeta;
 }
 

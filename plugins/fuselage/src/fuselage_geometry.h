@@ -73,6 +73,7 @@ class FuselageGeometry {
   std::vector<Handle(Geom_BSplineCurve)> profiles_;  ///< placed, in chain order
   std::vector<double> sectionSites_;                 ///< the loft's v at each profile
   bool guided_ = false;
+  std::vector<Handle(Geom_BSplineCurve)> sectionIsoCurves_;  ///< with guides: the loft's curve at each profile
   bool closedProfiles_ = true;
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;
