@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <type_traits>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -15,7 +16,7 @@ double degrees(double value) { return value * M_PI / 180.0; }
 
 double coordinate(const std::optional<double>& value) { return value.value_or(0.0); }
 
-/// The own transformation and parentUID of a wing or fuselage of any model.
+/// The own transformation and parentUID of a wing, fuselage or rotor blade of any model.
 struct Placed {
   const schema::TransformationType* transformation = nullptr;
   std::string parentUid;
@@ -35,6 +36,12 @@ bool findIn(const Model& model, const std::string& uid, Placed& found) {
   if (model.fuselages)
     for (const auto& fuselage : model.fuselages->fuselage)
       if (visit(fuselage)) return true;
+  // Rotor blades count as wings of a rotorcraft model (primary_model.h).
+  if constexpr (std::is_same_v<Model, schema::RotorcraftModelType>) {
+    if (model.rotorBlades)
+      for (const auto& blade : model.rotorBlades->rotorBlade)
+        if (visit(blade)) return true;
+  }
   return false;
 }
 
