@@ -11,7 +11,6 @@ FILES = sorted(glob.glob(os.path.join(SHARED, "data", "cpacs", "*.xml")) +
                glob.glob(os.path.join(SHARED, "data", "cpacs-examples", "*.xml")))
 # What does not build yet, and why (docs/wing.md and docs/fuselage.md list the same).
 KNOWN = [
-    "has neither pointList nor cst2D",  # nacaProfile airfoils (not CPACS 3.5)
     "segments do not form one continuous chain",                     # left out on loading, as the reference does
     "the wing has no segments",                                      # multiple_wings.xml: W13_EmptyWing
     "fromParameter and toParameter are not defined for wings",  # simple_test_guide_curves_wrong_gc_Def

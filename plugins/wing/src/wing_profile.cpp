@@ -11,6 +11,7 @@
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/model/placement.h"
+#include "airshape/xml/text.h"
 
 namespace airshape::wing {
 
@@ -65,8 +66,54 @@ std::optional<double> planeCrossing(const Geom_BSplineCurve& curve, double a, do
 WingProfile WingProfile::fromDefinition(const schema::ProfileGeometryType& definition) {
   if (definition.pointList) return fromPointList(*definition.pointList, definition.xpath + "/pointList");
   if (definition.cst2D) return fromCst(*definition.cst2D, definition.xpath + "/cst2D");
-  throw Error(ErrorCode::InvalidModel, "wing airfoil '" + definition.uID + "' has neither pointList nor cst2D", {},
+  if (const auto* naca = definition.binding ? xml::firstChild(*definition.binding, "nacaProfile") : nullptr)
+    return fromNaca(*naca, definition.xpath + "/nacaProfile");
+  throw Error(ErrorCode::InvalidModel,
+              "wing airfoil '" + definition.uID + "' has neither pointList nor cst2D nor a 4-digit nacaProfile", {},
               definition.xpath);
+}
+
+WingProfile WingProfile::fromNaca(const xercesc::DOMElement& naca, const std::string& xpath) {
+  const auto* codeElement = xml::firstChild(naca, "naca4DigitCode");
+  const std::string code = codeElement ? xml::text(*codeElement) : "";
+  if (code.size() != 4 || !std::all_of(code.begin(), code.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    throw Error(ErrorCode::InvalidModel, "only 4-digit NACA codes are supported (got '" + code + "')", {}, xpath);
+  const double camber = (code[0] - '0') / 100.0, camberAt = (code[1] - '0') / 10.0;
+  const double thickness = std::stoi(code.substr(2)) / 100.0;
+  double trailingEdge = 0.0;  // closed unless a thickness is given
+  if (const auto* te = xml::firstChild(naca, "trailingEdgeThickness"))
+    trailingEdge = model::parseVector(xml::text(*te), xpath + "/trailingEdgeThickness").at(0);
+  if (!(thickness > 0.0)) throw Error(ErrorCode::InvalidModel, "a NACA airfoil needs a thickness", {}, xpath);
+  // The standard thickness law, its last coefficient set so that the trailing edge has the
+  // given thickness (-0.1015 gives the classic 0.00252 of a NACA 0012).
+  const double a4 = trailingEdge / (10.0 * thickness) - 0.1036;
+  auto halfThickness = [&](double x) {
+    return 5.0 * thickness *
+           (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x + a4 * x * x * x * x);
+  };
+  auto camberLine = [&](double x) {  // height and slope
+    if (camber == 0.0 || camberAt == 0.0) return std::make_pair(0.0, 0.0);
+    if (x < camberAt)
+      return std::make_pair(camber / (camberAt * camberAt) * (2 * camberAt * x - x * x),
+                            2 * camber / (camberAt * camberAt) * (camberAt - x));
+    const double q = (1 - camberAt) * (1 - camberAt);
+    return std::make_pair(camber / q * ((1 - 2 * camberAt) + 2 * camberAt * x - x * x),
+                          2 * camber / q * (camberAt - x));
+  };
+  // Cosine-spaced stations, dense at both edges; from the TE along the lower side to the LE
+  // and back along the upper side.
+  constexpr int kStations = 161;
+  std::vector<gp_Pnt> points;
+  for (int side : {-1, 1})
+    for (int i = 0; i < kStations; ++i) {
+      const int j = side < 0 ? kStations - 1 - i : i;
+      if (side > 0 && j == 0) continue;  // the LE once
+      const double x = 0.5 * (1.0 - std::cos(M_PI * j / (kStations - 1)));
+      const auto [yc, slope] = camberLine(x);
+      const double angle = std::atan(slope), t = halfThickness(x);
+      points.emplace_back(x - side * t * std::sin(angle), 0.0, yc + side * t * std::cos(angle));
+    }
+  return fromPoints(std::move(points), xpath);
 }
 
 WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list, const std::string& xpath) {
@@ -76,6 +123,10 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
     throw Error(ErrorCode::InvalidModel, "x, y and z have different lengths", {}, xpath);
   std::vector<gp_Pnt> points;
   for (std::size_t i = 0; i < x.size(); ++i) points.emplace_back(x[i], y[i], z[i]);
+  return fromPoints(std::move(points), xpath);
+}
+
+WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::string& xpath) {
   if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
 
   // Orientation: TE → lower side → LE → upper side → TE.

@@ -2,6 +2,9 @@
 
 #include <functional>
 #include <string>
+#include <vector>
+
+#include <xercesc/dom/DOMElement.hpp>
 
 #include <Geom_BSplineCurve.hxx>
 #include <gp_Pnt.hxx>
@@ -35,6 +38,11 @@ class WingProfile {
  private:
   static WingProfile fromPointList(const schema::CurvePointListXYZType& points, const std::string& xpath);
   static WingProfile fromCst(const schema::Cst2DType& cst, const std::string& xpath);
+  /// The reference library's nacaProfile (outside CPACS 3.5): a 4-digit NACA airfoil from
+  /// the standard thickness and camber laws, sampled densely and interpolated as a point list.
+  static WingProfile fromNaca(const xercesc::DOMElement& naca, const std::string& xpath);
+  /// An airfoil through points (any orientation), as a point list gives them.
+  static WingProfile fromPoints(std::vector<gp_Pnt> points, const std::string& xpath);
 
   // Each side as a function of xsi (0 at the LE).
   std::function<gp_Pnt(double)> upper_, lower_;
