@@ -1,4 +1,5 @@
 """Shared fixtures of the command-line tests: where the binary, the sources and ../shared are."""
+import json
 import os
 import subprocess
 import sys
@@ -35,3 +36,13 @@ def conformance_passed(case_file):
     result = subprocess.run([sys.executable, runner, "--airshape", BINARY, "--data", shared_path("data", "cpacs"), cases],
                             capture_output=True, text=True, timeout=900)
     return int(result.stdout.strip().splitlines()[-1].split()[0]), result.stdout
+
+
+def query_answers(path, *queries):
+    """Runs `airshape query` on a file with the queries and returns their results; every
+    query must succeed."""
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    assert result.returncode == 0, result.stderr
+    answers = [json.loads(line) for line in result.stdout.splitlines()]
+    assert all("ok" in a for a in answers), answers
+    return [a["ok"] for a in answers]

@@ -2,7 +2,7 @@
 import json
 import math
 
-from conftest import airshape, conformance_passed
+from conftest import airshape, conformance_passed, query_answers as ask
 
 HEADER = """<cpacs><header><name>t</name><version>1</version><versionInfos><versionInfo version="1"><creator>t</creator>
 <timestamp>2026-01-01T00:00:00</timestamp><description>t</description><cpacsVersion>3.5</cpacsVersion></versionInfo>
@@ -34,14 +34,6 @@ def write_cylinders(path):
                 f'<fuselageProfile uID="Half"><name>h</name>{circle(32, half=True)}</fuselageProfile></fuselageProfiles>')
     path.write_text(HEADER + fuselage("Full", "Circle", 10.0) + fuselage("HalfCylinder", "Half", 10.0) +
                     f"</fuselages></model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
-
-
-def ask(path, *queries):
-    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
-    assert result.returncode == 0, result.stderr
-    answers = [json.loads(line) for line in result.stdout.splitlines()]
-    assert all("ok" in a for a in answers), answers
-    return [a["ok"] for a in answers]
 
 
 def test_cylinder_in_closed_form(tmp_path):

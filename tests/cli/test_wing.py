@@ -3,17 +3,13 @@ import json
 import math
 import os
 
-from conftest import DATA, airshape, conformance_passed
+from conftest import DATA, airshape, conformance_passed, query_answers as ask_file
 
 WINGS = os.path.join(DATA, "wing-cst-rectangular.xml")
 
 
 def ask(*queries):
-    result = airshape("query", WINGS, stdin="".join(json.dumps(q) + "\n" for q in queries))
-    assert result.returncode == 0, result.stderr
-    answers = [json.loads(line) for line in result.stdout.splitlines()]
-    assert all("ok" in a for a in answers), answers
-    return [a["ok"] for a in answers]
+    return ask_file(WINGS, *queries)
 
 
 def parabola_arc(chord, height):
@@ -146,14 +142,6 @@ def guided_wing(path, second_segment_continuity):
     text = text.replace("<wings>", "<wings>" + wing).replace("</wingAirfoils>",
                                                              f"</wingAirfoils><guideCurves>{guide_profiles}</guideCurves>")
     path.write_text(text)
-
-
-def ask_file(path, *queries):
-    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
-    assert result.returncode == 0, result.stderr
-    answers = [json.loads(line) for line in result.stdout.splitlines()]
-    assert all("ok" in a for a in answers), answers
-    return [a["ok"] for a in answers]
 
 
 def leading_edge_slopes_at_the_section(path):
