@@ -17,4 +17,8 @@ struct NamedShape {
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
 };
 
+/// Sews named faces (null faces are left out) into one solid whose faces keep their names.
+/// Throws Error when they do not close.
+NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>& namedFaces);
+
 }  // namespace airshape

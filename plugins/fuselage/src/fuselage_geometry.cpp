@@ -154,10 +154,6 @@ void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXp
   segmentPieces_.resize(segments_.size());
 }
 
-Handle(Geom_BSplineCurve) FuselageGeometry::profileOnLoft(std::size_t section) const {
-  return Handle(Geom_BSplineCurve)::DownCast(loft_->VIso(sectionSites_[section]));
-}
-
 double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const {
   if (!guided_) return zeta;
   // The Gordon surface runs the profiles at parameters of its own: find where this
@@ -243,17 +239,11 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
       named.emplace_back(segments_[k].uid + "/symmetry",
                          geometry::loftClosingFace(loft_, sectionSites_[k], sectionSites_[k + 1]));
   }
-  std::vector<TopoDS_Face> faces, sewn;
-  for (const auto& entry : named) faces.push_back(entry.second);
-  NamedShape result;
   try {
-    result.shape = geometry::sewnSolid(faces, &sewn);
+    return sewnNamedSolid(named);
   } catch (const Error& error) {
     throw Error(error.code(), "the fuselage: " + error.message());
   }
-  for (std::size_t i = 0; i < named.size(); ++i)
-    if (!sewn[i].IsNull()) result.faces.emplace_back(named[i].first, sewn[i]);
-  return result;
 }
 
 }  // namespace airshape::fuselage

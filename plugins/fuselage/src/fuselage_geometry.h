@@ -57,8 +57,6 @@ class FuselageGeometry {
   /// The Gordon surface through the placed profiles and the guide curves.
   void loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides);
   void cutIntoSegments(const std::vector<std::string>& segmentXpaths);
-  /// The loft's iso-curve where section k lies (its profile, as the loft has it).
-  Handle(Geom_BSplineCurve) profileOnLoft(std::size_t section) const;
   /// The loft's u where section k's profile has parameter zeta.
   double loftParameterOf(std::size_t section, double zeta) const;
   double vAt(std::size_t segment, double eta) const;

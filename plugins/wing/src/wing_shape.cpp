@@ -108,13 +108,7 @@ NamedShape WingShape::solid(const std::string& wingUid, const std::vector<std::s
     named.emplace_back(segmentUids[k] + "/lower", segment.lower);
     named.emplace_back(segmentUids[k] + "/trailingEdge", segment.trailingEdge);
   }
-  std::vector<TopoDS_Face> faces, sewn;
-  for (const auto& entry : named) faces.push_back(entry.second);
-  NamedShape result;
-  result.shape = geometry::sewnSolid(faces, &sewn);
-  for (std::size_t i = 0; i < named.size(); ++i)
-    if (!sewn[i].IsNull()) result.faces.emplace_back(named[i].first, sewn[i]);
-  return result;
+  return sewnNamedSolid(named);
 }
 
 }  // namespace airshape::wing
