@@ -1,11 +1,7 @@
-#include <algorithm>
 #include <chrono>
-#include <future>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <sstream>
-#include <thread>
 
 #include <BRepCheck_Analyzer.hxx>
 #include <Standard_Failure.hxx>
@@ -13,6 +9,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/graph/parallel_build.h"
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
 #include "open_configuration.h"
@@ -48,23 +45,13 @@ BuildReport buildOne(const Configuration& configuration, const graph::Component&
   return {line.str(), false};
 }
 
-/// Builds the components in dependency order, those at one depth of the graph (which do
-/// not depend on each other) in parallel, at most one per processor at a time.
+/// Builds every component, independent ones in parallel.
 std::vector<BuildReport> buildAll(const Configuration& configuration) {
   const graph::ComponentGraph& graph = configuration.components();
-  std::map<std::size_t, std::vector<std::size_t>> byDepth;
-  for (std::size_t index : graph.buildOrder()) byDepth[graph.depth(index)].push_back(index);
-  const std::size_t workers = std::max(1u, std::thread::hardware_concurrency());
   std::vector<BuildReport> reports(graph.components().size());
-  for (const auto& [depth, indices] : byDepth)
-    for (std::size_t first = 0; first < indices.size(); first += workers) {
-      std::vector<std::future<BuildReport>> running;
-      for (std::size_t i = first; i < std::min(indices.size(), first + workers); ++i)
-        running.push_back(std::async(std::launch::async, buildOne, std::cref(configuration),
-                                     std::cref(graph.components()[indices[i]])));
-      for (std::size_t i = first; i < std::min(indices.size(), first + workers); ++i)
-        reports[indices[i]] = running[i - first].get();
-    }
+  graph::forEachByDepth(graph, graph.buildOrder(), [&](std::size_t index) {
+    reports[index] = buildOne(configuration, graph.components()[index]);
+  });
   return reports;
 }
 

@@ -23,5 +23,6 @@ int runSave(const Arguments& arguments, plugin::PluginHost& host);
 int runPlugins(const Arguments& arguments, plugin::PluginHost& host);
 int runGordon(const Arguments& arguments, plugin::PluginHost& host);
 int runBuild(const Arguments& arguments, plugin::PluginHost& host);
+int runExport(const Arguments& arguments, plugin::PluginHost& host);
 
 }  // namespace airshape::cli

@@ -41,6 +41,25 @@ const std::map<std::string, Command>& commands() {
         "Builds the solid of every component a plugin builds, in build order, and checks it\n"
         "(BRepCheck); prints validity, volume and time per component. Exit status 1 if any\n"
         "fails or is invalid."}},
+      {"export",
+       {runExport,
+        "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"
+        "                 [--deflection LINEAR[,ANGULAR]] [--force] [--quiet]",
+        "Builds the components and writes them, in the format each OUT's extension names:\n"
+        "  .step .stp   STEP AP214, an assembly with one product per component (named by uID),\n"
+        "               face names as STEP names            .iges .igs  IGES, names and levels\n"
+        "  .brep        OCCT BREP                           .stl        binary STL\n"
+        "  .vtp         VTK PolyData, per-cell arrays 'component' and 'face'\n"
+        "  .gltf .glb   glTF 2.0, one node per component    .obj        Wavefront OBJ\n"
+        "--components   only these uIDs (default: every component a plugin builds)\n"
+        "--mirror       add the mirrored halves of components with a symmetry plane\n"
+        "--fused        write one solid, the Boolean union of all (face names kept)\n"
+        "--deflection   triangulation of STL/VTK/glTF/OBJ: largest distance to the surface\n"
+        "               in metres (default per component: 1 % of volume/area), and the\n"
+        "               largest angle between normals in radians (default 0.2)\n"
+        "--force        replace existing outputs       --quiet  no progress or summary\n"
+        "Each file is written under a temporary name and moved into place when complete.\n"
+        "Prints progress on stderr and a summary (volume and area per solid) on stdout."}},
       {"gordon",
        {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep",
         "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"

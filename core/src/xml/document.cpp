@@ -19,6 +19,7 @@
 #include <xercesc/util/PlatformUtils.hpp>
 
 #include "airshape/error.h"
+#include "airshape/output_file.h"
 #include "airshape/xml/text.h"
 
 namespace airshape::xml {
@@ -66,15 +67,6 @@ std::string readWholeFile(const std::string& path) {
   if (error || in.gcount() != static_cast<std::streamsize>(content.size()))
     throw Error(ErrorCode::FileNotFound, "cannot be read", path);
   return content;
-}
-
-void writeAll(int fd, const char* data, std::size_t size, const std::string& path) {
-  while (size > 0) {
-    const ssize_t written = ::write(fd, data, size);
-    if (written < 0) throw Error(ErrorCode::WriteFailed, std::string("cannot write: ") + std::strerror(errno), path);
-    data += written;
-    size -= static_cast<std::size_t>(written);
-  }
 }
 
 }  // namespace
@@ -138,32 +130,6 @@ std::string Document::toString() const {
   return std::string(reinterpret_cast<const char*>(target.getRawBuffer()), target.getLen());
 }
 
-void Document::save(const std::string& path) const {
-  const std::string content = toString();
-  const fs::path target(path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code error;
-  if (!fs::is_directory(folder, error))
-    throw Error(ErrorCode::WriteFailed, "cannot write: folder " + folder.string() + " does not exist", path);
-  std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
-  const int fd = ::mkstemp(temporary.data());
-  if (fd < 0) throw Error(ErrorCode::WriteFailed, std::string("cannot write: ") + std::strerror(errno), path);
-  try {
-    writeAll(fd, content.data(), content.size(), path);
-    if (::fsync(fd) != 0)
-      throw Error(ErrorCode::WriteFailed, std::string("cannot write: ") + std::strerror(errno), path);
-    ::fchmod(fd, 0644);
-    ::close(fd);
-  } catch (...) {
-    ::close(fd);
-    ::unlink(temporary.c_str());
-    throw;
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    throw Error(ErrorCode::WriteFailed, "cannot write: " + reason, path);
-  }
-}
+void Document::save(const std::string& path) const { writeTextFileSafely(path, toString()); }
 
 }  // namespace airshape::xml

@@ -11,7 +11,9 @@ namespace airshape::geometry {
 /// 1e-9). A null shape measures 0.
 double volumeOf(const TopoDS_Shape& solid);
 
-/// Area of faces by adaptive Gauss–Kronrod integration (relative accuracy 1e-9); 0 for null.
+/// Area of faces: rectangular B-spline patches by Gauss–Legendre per knot span (2p + 4
+/// points per direction; the integrand is smooth there), other faces by OCCT's adaptive
+/// integration (relative accuracy 1e-9); 0 for null.
 double areaOf(const TopoDS_Shape& faces);
 
 }  // namespace airshape::geometry

@@ -1,0 +1,142 @@
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "airshape/error.h"
+#include "airshape/export/exporter.h"
+#include "airshape/geometry/brep_measures.h"
+#include "airshape/plugin/plugin_host.h"
+#include "commands.h"
+#include "open_configuration.h"
+
+namespace airshape::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct ExportCommandOptions {
+  std::string input;
+  std::vector<std::string> outputs;
+  exporting::ExportOptions exportOptions;
+  bool force = false;
+  bool quiet = false;
+};
+
+std::vector<std::string> commaSeparated(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  for (std::string item; std::getline(stream, item, ',');)
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+double positiveNumber(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value > 0))
+    throw Error(ErrorCode::InvalidArgument, option + ": '" + text + "' is not a positive number");
+  return value;
+}
+
+/// --deflection LINEAR[,ANGULAR]: metres, and radians for the angle.
+void parseDeflection(const std::string& text, exporting::ExportOptions& options) {
+  const std::vector<std::string> parts = commaSeparated(text);
+  if (parts.empty() || parts.size() > 2)
+    throw Error(ErrorCode::InvalidArgument, "--deflection: expected LINEAR or LINEAR,ANGULAR, got '" + text + "'");
+  options.linearDeflection = positiveNumber(parts[0], "--deflection");
+  if (parts.size() == 2) options.angularDeflection = positiveNumber(parts[1], "--deflection");
+}
+
+ExportCommandOptions parseExportOptions(const Arguments& arguments) {
+  ExportCommandOptions options;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& argument = arguments[i];
+    const bool hasValue = i + 1 < arguments.size();
+    if ((argument == "-o" || argument == "--output") && hasValue) {
+      options.outputs.push_back(arguments[++i]);
+    } else if (argument == "--components" && hasValue) {
+      options.exportOptions.components = commaSeparated(arguments[++i]);
+    } else if (argument == "--deflection" && hasValue) {
+      parseDeflection(arguments[++i], options.exportOptions);
+    } else if (argument == "--mirror") {
+      options.exportOptions.mirror = true;
+    } else if (argument == "--fused") {
+      options.exportOptions.fused = true;
+    } else if (argument == "--force") {
+      options.force = true;
+    } else if (argument == "--quiet" || argument == "-q") {
+      options.quiet = true;
+    } else if (!argument.empty() && argument[0] != '-' && options.input.empty()) {
+      options.input = argument;
+    } else {
+      throw Error(ErrorCode::InvalidArgument,
+                  "export: unexpected argument '" + argument + "' (see airshape help export)");
+    }
+  }
+  if (options.input.empty() || options.outputs.empty())
+    throw Error(ErrorCode::InvalidArgument, "usage: airshape export FILE -o OUT [-o OUT ...] [options]");
+  return options;
+}
+
+/// Refuses, before anything is built, outputs of unknown formats and existing files
+/// (unless --force).
+void checkOutputs(const ExportCommandOptions& options) {
+  for (const std::string& output : options.outputs) {
+    exporting::formatOfPath(output);
+    std::error_code error;
+    if (!options.force && std::filesystem::exists(output, error))
+      throw Error(ErrorCode::WriteFailed, "exists already; use --force to replace it", output);
+  }
+}
+
+void printProgress(const exporting::ExportProgress& progress) {
+  std::cerr << "export: ";
+  if (progress.componentsTotal > 0) std::cerr << progress.componentsBuilt << '/' << progress.componentsTotal << ' ';
+  std::cerr << progress.step << ", " << std::fixed << std::setprecision(2) << progress.seconds << " s\n";
+}
+
+/// The one-screen summary: each solid written with its volume and area.
+void printSummary(const exporting::ExportScene& scene) {
+  std::cout << std::left << std::setw(36) << "component" << std::right << std::setw(14) << "volume [m3]"
+            << std::setw(14) << "area [m2]" << '\n';
+  for (const exporting::SceneComponent& component : scene.components)
+    std::cout << std::left << std::setw(36) << component.name << std::right << std::fixed << std::setprecision(4)
+              << std::setw(14) << geometry::volumeOf(component.shape.shape) << std::setw(14)
+              << geometry::areaOf(component.shape.shape) << '\n';
+}
+
+}  // namespace
+
+int runExport(const Arguments& arguments, plugin::PluginHost& host) {
+  ExportCommandOptions options = parseExportOptions(arguments);
+  checkOutputs(options);
+  const Clock::time_point start = Clock::now();
+  const Configuration configuration = openConfiguration(options.input, host);
+  if (!options.quiet) options.exportOptions.progress = printProgress;
+  const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);
+  for (const std::string& output : options.outputs) {
+    const exporting::Format format = exporting::formatOfPath(output);
+    const Clock::time_point writing = Clock::now();
+    exporting::writeScene(scene, output, format, options.exportOptions);
+    if (!options.quiet)
+      std::cerr << "export: wrote " << output << " (" << exporting::formatName(format) << ", "
+                << std::filesystem::file_size(output) / 1024 << " KiB, " << std::fixed << std::setprecision(2)
+                << std::chrono::duration<double>(Clock::now() - writing).count() << " s)\n";
+  }
+  if (!options.quiet) {
+    printSummary(scene);
+    std::cout << "total time " << std::fixed << std::setprecision(2)
+              << std::chrono::duration<double>(Clock::now() - start).count() << " s\n";
+  }
+  return kSuccess;
+}
+
+}  // namespace airshape::cli

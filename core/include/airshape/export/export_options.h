@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace airshape::exporting {
+
+/// How far an export has come, reported while components are built and files written.
+struct ExportProgress {
+  std::size_t componentsBuilt = 0;
+  std::size_t componentsTotal = 0;
+  double seconds = 0;  ///< since the export started
+  std::string step;    ///< what is being done now, e.g. "built Wing", "meshing", "writing STEP"
+};
+
+/// What an export writes and how finely it triangulates.
+struct ExportOptions {
+  /// uIDs of the components to write; empty: every component a plugin builds.
+  std::vector<std::string> components;
+  /// Also write the mirrored halves of components with a symmetry plane.
+  bool mirror = false;
+  /// Write one solid: the Boolean union of all components (and halves, with `mirror`).
+  bool fused = false;
+  /// Largest distance (model units, metres) between a triangle and the surface for the
+  /// triangulated formats; 0 chooses it per component as 1 % of its volume / area
+  /// ratio (a measure of its thickness), which keeps the enclosed volume within a few
+  /// tenths of a percent for wings and fuselages alike.
+  double linearDeflection = 0;
+  /// Largest angle (radians) between the normals along a triangle edge.
+  double angularDeflection = 0.2;
+  /// Called as work goes on; may be empty.
+  std::function<void(const ExportProgress&)> progress;
+};
+
+}  // namespace airshape::exporting

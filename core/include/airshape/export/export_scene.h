@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "airshape/export/export_options.h"
+#include "airshape/named_shape.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::exporting {
+
+/// One solid to write: a component, its mirrored half, or the fused aircraft.
+struct SceneComponent {
+  std::string name;  ///< the component's uID; "<uID> (mirrored)" for a mirrored half
+  NamedShape shape;  ///< its own copy, so meshing it never touches the cached geometry
+};
+
+/// What an export writes, in build order: the selected components' solids (built in
+/// parallel where the component graph allows), their mirrored halves on request, or
+/// their union.
+struct ExportScene {
+  std::string name;  ///< the configuration's file name, the STEP assembly's name
+  std::vector<SceneComponent> components;
+};
+
+/// Builds the scene of a configuration. Throws Error naming the component when a selected
+/// uID names nothing, or when a component fails to build; components no plugin builds
+/// yet are left out unless selected by uID (then it is an error).
+ExportScene buildScene(const Configuration& configuration, const ExportOptions& options);
+
+}  // namespace airshape::exporting

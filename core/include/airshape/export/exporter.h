@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "airshape/export/export_options.h"
+#include "airshape/export/export_scene.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::exporting {
+
+/// The file formats an export writes, chosen by the output's extension.
+enum class Format { Step, Iges, Brep, Stl, Vtp, Gltf, Glb, Obj };
+
+/// The format of an output path by its extension (.step/.stp, .iges/.igs, .brep, .stl,
+/// .vtp, .gltf, .glb, .obj, any case). Throws Error(InvalidArgument) for any other.
+Format formatOfPath(const std::string& path);
+/// "STEP", "IGES", ... for messages.
+std::string formatName(Format format);
+/// The extensions formatOfPath knows, for help texts.
+std::string knownExtensions();
+
+/// Writes a scene to `path` in `format`, safely (complete or not at all, see
+/// writeFileSafely). Throws Error(WriteFailed) naming the file when it cannot be written.
+void writeScene(const ExportScene& scene, const std::string& path, Format format, const ExportOptions& options);
+
+/// Builds the scene of a configuration and writes it to `path` in the format its
+/// extension names.
+void exportConfiguration(const Configuration& configuration, const std::string& path, const ExportOptions& options);
+
+}  // namespace airshape::exporting

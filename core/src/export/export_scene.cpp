@@ -1,0 +1,127 @@
+#include "airshape/export/export_scene.h"
+
+#include <chrono>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+
+#include <BRepBuilderAPI_Copy.hxx>
+#include <Standard_Failure.hxx>
+#include <TopoDS.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/export/fused_shape.h"
+#include "airshape/graph/parallel_build.h"
+#include "airshape/model/symmetry.h"
+
+namespace airshape::exporting {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Indices of the components to export, in build order: those named, or every one a
+/// plugin builds.
+std::vector<std::size_t> selectedComponents(const Configuration& configuration, const ExportOptions& options) {
+  const graph::ComponentGraph& graph = configuration.components();
+  std::vector<bool> wanted(graph.components().size(), options.components.empty());
+  for (const std::string& uid : options.components) {
+    const long index = graph.find(uid);
+    if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
+    const graph::Component& component = graph.components()[static_cast<std::size_t>(index)];
+    if (configuration.shapes().find(component.nodeType) == nullptr)
+      throw Error(ErrorCode::NotImplemented, "no builder yet for " + component.nodeType + " '" + uid + "'");
+    wanted[static_cast<std::size_t>(index)] = true;
+  }
+  std::vector<std::size_t> selected;
+  for (std::size_t index : graph.buildOrder())
+    if (wanted[index] && configuration.shapes().find(graph.components()[index].nodeType) != nullptr)
+      selected.push_back(index);
+  if (selected.empty()) throw Error(ErrorCode::NotImplemented, "no builder yet for any component of the configuration");
+  return selected;
+}
+
+bool hasMirror(const Configuration& configuration, const std::string& uid) {
+  return model::resolvedSymmetry(configuration, uid) != "none";
+}
+
+/// Builds one component (and its mirrored half with `mirror`) into the configuration's
+/// cache; returns why it failed, if it did.
+std::optional<std::string> buildComponent(const Configuration& configuration, const std::string& uid, bool mirror) {
+  try {
+    configuration.shapes().namedShapeOf(configuration, uid);
+    if (mirror && hasMirror(configuration, uid)) configuration.shapes().mirroredShapeOf(configuration, uid);
+    return std::nullopt;
+  } catch (const Error& error) {
+    return error.message();
+  } catch (const Standard_Failure& failure) {
+    return std::string("geometry kernel failure: ") + failure.GetMessageString();
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+}
+
+/// Builds the selected components, independent ones in parallel, reporting progress.
+void buildSelected(const Configuration& configuration, const std::vector<std::size_t>& selected,
+                   const ExportOptions& options, Clock::time_point start) {
+  const graph::ComponentGraph& graph = configuration.components();
+  std::vector<std::optional<std::string>> failures(graph.components().size());
+  std::mutex reporting;
+  std::size_t built = 0;
+  graph::forEachByDepth(graph, selected, [&](std::size_t index) {
+    const std::string& uid = graph.components()[index].uid;
+    failures[index] = buildComponent(configuration, uid, options.mirror);
+    const std::lock_guard<std::mutex> lock(reporting);
+    ++built;
+    if (options.progress)
+      options.progress(
+          {built, selected.size(), std::chrono::duration<double>(Clock::now() - start).count(), "built " + uid});
+  });
+  for (std::size_t index : selected)
+    if (failures[index])
+      throw Error(ErrorCode::InvalidModel,
+                  "component '" + graph.components()[index].uid + "' could not be built: " + *failures[index],
+                  configuration.source(), graph.components()[index].xpath);
+}
+
+/// An own copy of a named shape (new topology, shared curves and surfaces), so that
+/// triangulating it leaves the cached solid as it is.
+SceneComponent copied(const std::string& name, const NamedShape& shape) {
+  BRepBuilderAPI_Copy copy(shape.shape, false, false);
+  SceneComponent component{name, {copy.Shape(), {}}};
+  for (const auto& [faceName, face] : shape.faces)
+    component.shape.faces.emplace_back(faceName, TopoDS::Face(copy.ModifiedShape(face)));
+  return component;
+}
+
+}  // namespace
+
+ExportScene buildScene(const Configuration& configuration, const ExportOptions& options) {
+  const Clock::time_point start = Clock::now();
+  const std::vector<std::size_t> selected = selectedComponents(configuration, options);
+  buildSelected(configuration, selected, options, start);
+
+  std::vector<std::pair<std::string, const NamedShape*>> solids;
+  for (std::size_t index : selected) {
+    const std::string& uid = configuration.components().components()[index].uid;
+    solids.emplace_back(uid, &configuration.shapes().namedShapeOf(configuration, uid));
+    if (options.mirror && hasMirror(configuration, uid))
+      solids.emplace_back(uid + " (mirrored)", &configuration.shapes().mirroredShapeOf(configuration, uid));
+  }
+
+  ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}};
+  if (options.fused) {
+    if (options.progress)
+      options.progress(
+          {selected.size(), selected.size(), std::chrono::duration<double>(Clock::now() - start).count(), "fusing"});
+    std::vector<const NamedShape*> shapes;
+    for (const auto& solid : solids) shapes.push_back(solid.second);
+    scene.components.push_back(copied(scene.name + " (fused)", fuseNamedShapes(shapes)));
+  } else {
+    for (const auto& [name, shape] : solids) scene.components.push_back(copied(name, *shape));
+  }
+  return scene;
+}
+
+}  // namespace airshape::exporting

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+
+#include <TopoDS_Compound.hxx>
+
+#include "airshape/export/export_scene.h"
+
+// One writer per file format. Each writes a scene to `path` (a temporary name the caller
+// moves into place) and throws Error(WriteFailed) naming `target`, the user's file name,
+// when it cannot. The triangulated formats expect the scene triangulated (scene_mesh.h).
+
+namespace airshape::exporting {
+
+/// Every component solid of a scene in one compound, in scene order.
+TopoDS_Compound sceneCompound(const ExportScene& scene);
+
+void writeStep(const ExportScene& scene, const std::string& path, const std::string& target);
+void writeIges(const ExportScene& scene, const std::string& path, const std::string& target);
+void writeBrep(const ExportScene& scene, const std::string& path, const std::string& target);
+void writeStl(const ExportScene& scene, const std::string& path, const std::string& target);
+void writeVtp(const ExportScene& scene, const std::string& path, const std::string& target);
+void writeGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary);
+void writeObj(const ExportScene& scene, const std::string& path, const std::string& target);
+
+}  // namespace airshape::exporting

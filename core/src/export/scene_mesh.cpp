@@ -1,0 +1,56 @@
+#include "scene_mesh.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <IMeshTools_Parameters.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include "airshape/error.h"
+#include "airshape/geometry/brep_measures.h"
+
+namespace airshape::exporting {
+
+namespace {
+
+/// 1 % of the volume / area ratio, a thickness: the sagitta this leaves on a wing of
+/// relative thickness t or a round fuselage loses a few tenths of a percent of volume.
+/// Shapes without volume fall back to 0.1 % of their box diagonal.
+double automaticDeflection(const TopoDS_Shape& shape) {
+  const double volume = geometry::volumeOf(shape);
+  const double area = geometry::areaOf(shape);
+  if (volume > 0 && area > 0) return 0.01 * volume / area;
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return box.IsVoid() ? 1e-3 : 1e-3 * std::sqrt(box.SquareExtent());
+}
+
+/// Whether every face has a triangulation.
+
+bool isTriangulated(const TopoDS_Shape& shape) {
+  for (TopExp_Explorer face(shape, TopAbs_FACE); face.More(); face.Next()) {
+    TopLoc_Location location;
+    if (BRep_Tool::Triangulation(TopoDS::Face(face.Current()), location).IsNull()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void triangulate(const ExportScene& scene, const ExportOptions& options) {
+  for (const SceneComponent& component : scene.components) {
+    if (isTriangulated(component.shape.shape)) continue;  // by an earlier output of the same scene
+    IMeshTools_Parameters parameters;
+    parameters.Deflection =
+        options.linearDeflection > 0 ? options.linearDeflection : automaticDeflection(component.shape.shape);
+    parameters.Angle = options.angularDeflection;
+    parameters.InParallel = true;
+    BRepMesh_IncrementalMesh mesher(component.shape.shape, parameters);
+    if (!isTriangulated(component.shape.shape))
+      throw Error(ErrorCode::InvalidModel, "a face of '" + component.name + "' could not be triangulated");
+  }
+}
+
+}  // namespace airshape::exporting

@@ -1,0 +1,14 @@
+#pragma once
+
+#include "airshape/export/export_options.h"
+#include "airshape/export/export_scene.h"
+
+namespace airshape::exporting {
+
+/// Triangulates every face of every component of a scene (the triangulation is stored in
+/// the scene's own copies of the faces), with the options' deflections; components already
+/// triangulated (for an earlier output) are left as they are. Throws Error
+/// naming the face when one cannot be triangulated.
+void triangulate(const ExportScene& scene, const ExportOptions& options);
+
+}  // namespace airshape::exporting
