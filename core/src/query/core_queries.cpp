@@ -11,6 +11,7 @@
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/query/arguments.h"
+#include "intersection_curves.h"
 
 namespace airshape::query {
 
@@ -85,6 +86,10 @@ void registerCoreQueries(QueryRegistry& registry) {
   registry.add({"component_faces", "core",
                 "uid, [mirrored] -> [{name, area, centre}]: the named faces of a component's solid or mirrored half",
                 componentFaces});
+  registry.add({"intersection_curves", "core",
+                "uid, other, [other_mirrored], [deflection] -> [[[x,y,z], ...], ...]: where two solids meet, "
+                "as polylines",
+                intersectionCurves});
 }
 
 }  // namespace airshape::query
