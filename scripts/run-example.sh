@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds, and runs airshape on the example aircraft.
+# The main job: installs what is missing, builds, and runs airshape on the example airliner:
+# checks it, builds every component with the mirrored halves, writes STEP, STL and glTF next
+# to it with a summary (volumes, areas, time), and asks a few queries.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-example=examples/example-aircraft.xml
-./build/bin/airshape info "$example"
+example=examples/generic-airliner.xml
 ./build/bin/airshape validate "$example"
-./build/bin/airshape build "$example"
-printf '%s\n' '{"op":"wing_count"}' '{"op":"wing_uid","wing":1}' '{"op":"wing_symmetry","wing":"MainWing"}' \
-  '{"op":"wing_segment_count","wing":1}' '{"op":"fuselage_segment_count","fuselage":1}' \
-  '{"op":"wing_upper_point","wing":1,"segment":1,"eta":0.5,"xsi":0.3}' '{"op":"wing_volume","wing":1}' \
-  '{"op":"wing_surface_area","wing":1}' '{"op":"wing_reference_area","wing":1,"plane":"x-y"}' \
-  '{"op":"wing_span","wing":1}' '{"op":"wing_mac","wing":1}' |
+./build/bin/airshape export "$example" --mirror --force \
+  -o examples/generic-airliner.step -o examples/generic-airliner.stl -o examples/generic-airliner.glb
+printf '%s\n' '{"op":"wing_reference_area","wing":"Wing","plane":"x-y"}' '{"op":"wing_span","wing":"Wing"}' \
+  '{"op":"wing_mac","wing":"Wing"}' '{"op":"wing_upper_point","wing":"Wing","segment":1,"eta":0.5,"xsi":0.3}' \
+  '{"op":"fuselage_point","fuselage":1,"segment":4,"eta":0.5,"zeta":0.25}' |
   ./build/bin/airshape query "$example"
