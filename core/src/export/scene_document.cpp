@@ -18,7 +18,6 @@ TCollection_ExtendedString extended(const std::string& text) { return TCollectio
 
 SceneDocument::SceneDocument(const ExportScene& scene) {
   XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document_);
-  XCAFDoc_DocumentTool::SetLengthUnit(document_, 1.0);
   const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document_->Main());
   const Handle(XCAFDoc_LayerTool) layers = XCAFDoc_DocumentTool::LayerTool(document_->Main());
   const TDF_Label assembly = shapes->NewShape();

@@ -9,7 +9,7 @@ namespace airshape::exporting {
 /// An XCAF document of a scene, for the OCCT writers that carry names: one assembly named
 /// after the scene, one part per component named by its uID (its instance too), each
 /// named face a named sub-shape of its part, each part on a layer of its own name.
-/// Lengths are in metres. The document is closed when the holder goes.
+/// The document is closed when the holder goes.
 class SceneDocument {
  public:
   explicit SceneDocument(const ExportScene& scene);

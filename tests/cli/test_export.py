@@ -1,0 +1,171 @@
+"""`airshape export`: every format reopens in a reader that is not ours, names survive,
+volumes agree, triangulations are closed, and a file that cannot be written is a clear
+error that leaves nothing behind. Also the fused aircraft and `intersection_curves`."""
+import json
+import math
+import os
+import re
+
+import pytest
+
+from conftest import EXAMPLE, SOURCE, airshape, query_answers, shared_path
+from independent_readers import admesh_report, gltf_report, gmsh_volumes, stl_volume, vtk_polydata
+
+AIRLINER = os.path.join(SOURCE, "examples", "generic-airliner.xml")
+FORMATS = ("step", "iges", "brep", "stl", "vtp", "glb", "gltf", "obj")
+
+
+def source_file(name):
+    return AIRLINER if name == "generic-airliner.xml" else shared_path("data", "cpacs", name)
+
+
+def export(source, folder, *options, formats=FORMATS):
+    """Exports to every format in one run; returns the paths and the summary's exact volume
+    of each solid, by name."""
+    paths = {f: os.path.join(folder, f"out.{f}") for f in formats}
+    arguments = [a for f in formats for a in ("-o", paths[f])]
+    result = airshape("export", source, *arguments, *options)
+    assert result.returncode == 0, result.stderr
+    summary = result.stdout.split("area [m2]\n", 1)[1].split("total time")[0]
+    volumes = {}
+    for line in summary.strip().splitlines():
+        name, volume, _area = line.rsplit(None, 2)
+        volumes[name.strip()] = float(volume)
+    return paths, volumes
+
+
+@pytest.mark.parametrize("name", ["generic-airliner.xml", "CPACS_30_D150.xml", "D150WithGuides.xml",
+                                  "simpletest.cpacs.xml"])
+def test_every_format_reopens_with_names_and_volumes(tmp_path, name):
+    paths, volumes = export(source_file(name), tmp_path)
+    uids = set(volumes)
+
+    # BREP is OCCT's own dump of the solids in memory: gmsh's volumes of it stand for ours.
+    brep = gmsh_volumes(paths["brep"])
+    assert len(brep) == len(uids)
+    in_memory = [volume for _, volume in brep]
+    # gmsh measures with OCCT's fixed Gauss rule per face (not per knot span, not adaptive):
+    # up to a few percent off the exact volumes on wing skins whatever file the solid came
+    # from, so the exact volumes are only compared loosely; the file-to-file checks below
+    # compare like with like.
+    for measured, exact in zip(in_memory, volumes.values()):
+        assert measured == pytest.approx(exact, rel=0.05)
+
+    # STEP: one product per component named by its uID, face names as STEP names, and the
+    # same solids as in memory.
+    step = gmsh_volumes(paths["step"])
+    assert [entity.rsplit("/", 1)[-1] for entity, _ in step] == list(volumes)
+    for (_, volume), memory in zip(step, in_memory):
+        assert volume == pytest.approx(memory, rel=1e-6)
+    text = open(paths["step"]).read()
+    assert set(re.findall(r"PRODUCT\('([^']*)'", text)) == uids | {os.path.splitext(os.path.basename(name))[0]}
+    assert re.search(r"ADVANCED_FACE\('[^']+/(upper|skin)'", text)
+
+    iges = gmsh_volumes(paths["iges"])
+    assert len(iges) == len(uids)
+    for (_, volume), memory in zip(iges, in_memory):
+        assert volume == pytest.approx(memory, rel=1e-6)
+
+    # STL: closed, and its enclosed volume within 1 % of the exact one.
+    report = admesh_report(paths["stl"])
+    assert report["disconnected"] == [0, 0, 0], report
+    enclosed, _ = stl_volume(paths["stl"])
+    assert enclosed == pytest.approx(sum(volumes.values()), rel=0.01)
+
+    polydata = vtk_polydata(paths["vtp"])
+    assert polydata["cells"] > 0
+    assert set(polydata["arrays"]["component"]) == uids
+    assert all(face.split("/")[0] for face in polydata["arrays"]["face"])
+
+    for gltf in (paths["glb"], paths["gltf"]):
+        report = gltf_report(gltf)
+        assert report["errors"] == 0, report
+    nodes = {node.get("name") for node in json.load(open(paths["gltf"]))["nodes"]}
+    assert uids <= nodes
+
+    groups = re.findall(r"^g .*/(.+)$", open(paths["obj"]).read(), re.M)
+    assert set(groups) == uids
+
+
+def test_mirrored_halves_and_chosen_components(tmp_path):
+    _, volumes = export(AIRLINER, tmp_path, "--mirror", "--components", "Wing,VTP", formats=("brep",))
+    assert list(volumes) == ["Wing", "Wing (mirrored)", "VTP"]
+    assert volumes["Wing (mirrored)"] == pytest.approx(volumes["Wing"], rel=1e-12)
+
+
+def test_fused_aircraft_keeps_face_names(tmp_path):
+    paths, volumes = export(AIRLINER, tmp_path, "--fused", "--mirror", formats=("step", "stl", "vtp"))
+    (name, fused), = volumes.items()
+    _, separate = export(AIRLINER, tmp_path / ".." / tmp_path.name, "--mirror", "--force", formats=("brep",))
+    assert name == "generic-airliner (fused)"
+    # The union is smaller than the sum (the wings' roots lie inside the fuselage) and larger
+    # than its largest part.
+    assert separate["Fuselage"] < fused < sum(separate.values())
+    step = gmsh_volumes(paths["step"])
+    assert len(step) == 1
+    faces = set(vtk_polydata(paths["vtp"])["arrays"]["face"])
+    assert {"Fus_Seg4/skin", "Wing_Seg2/upper", "Wing_Seg2/upper (mirrored)", "VTP_Seg1/lower", "HTP/tip"} <= faces
+    assert "Wing/root" not in faces  # inside the fuselage: gone in the union
+    assert admesh_report(paths["stl"])["disconnected"] == [0, 0, 0]
+
+
+def test_triangulation_follows_the_deflection(tmp_path):
+    (tmp_path / "coarse").mkdir()
+    (tmp_path / "fine").mkdir()
+    coarse, volumes = export(AIRLINER, tmp_path / "coarse", "--components", "Wing", "--deflection", "0.02,0.5",
+                             formats=("stl",))
+    fine, _ = export(AIRLINER, tmp_path / "fine", "--components", "Wing", "--deflection", "0.001,0.1",
+                     formats=("stl",))
+    coarse_volume, coarse_count = stl_volume(coarse["stl"])
+    fine_volume, fine_count = stl_volume(fine["stl"])
+    assert fine_count > 2 * coarse_count
+    assert abs(fine_volume - volumes["Wing"]) < abs(coarse_volume - volumes["Wing"])
+
+
+def test_intersection_curves_of_wing_and_fuselage(tmp_path):
+    # The small example aircraft with every fuselage section a circle of radius 1: its
+    # fuselage is the cylinder y² + z² = 1 (up to the 25-point profile's interpolation,
+    # 3e-5), which the wing's root pierces.
+    cylinder = tmp_path / "cylinder.xml"
+    text = open(EXAMPLE).read()
+    cylinder.write_text(re.sub(r"<y>0\.[46]</y><z>0\.[46]</z>", "<y>2.0</y><z>2.0</z>", text))
+    curves, mirrored = query_answers(cylinder, {"op": "intersection_curves", "uid": "Fuselage", "other": "MainWing",
+                                                "deflection": 1e-3},
+                                     {"op": "intersection_curves", "uid": "Fuselage", "other": "MainWing",
+                                      "other_mirrored": True})
+    for loops, side in ((curves, 1), (mirrored, -1)):
+        assert len(loops) == 1
+        junction = loops[0]
+        assert len(junction) > 20
+        assert junction[0] == pytest.approx(junction[-1], abs=1e-6)  # a closed loop round the wing root
+        for x, y, z in junction:
+            assert 9 - 1e-6 <= x <= 14 + math.tan(math.radians(25))  # root chord, swept out to |y| < 1
+            assert side * y > 0
+            assert math.hypot(y, z) == pytest.approx(1.0, abs=1e-4)
+    apart, = query_answers(AIRLINER, {"op": "intersection_curves", "uid": "HTP", "other": "Wing"})
+    assert apart == []
+
+
+def test_unwritable_outputs_are_clear_errors_and_leave_nothing(tmp_path):
+    missing = airshape("export", AIRLINER, "-o", str(tmp_path / "no" / "such" / "folder" / "x.step"))
+    assert missing.returncode == 2
+    assert "x.step" in missing.stderr and "does not exist" in missing.stderr
+
+    existing = tmp_path / "taken.stl"
+    existing.write_text("keep me")
+    refused = airshape("export", AIRLINER, "-o", str(existing))
+    assert refused.returncode == 2 and "--force" in refused.stderr
+    assert existing.read_text() == "keep me"
+
+    unknown = airshape("export", AIRLINER, "-o", str(tmp_path / "x.dwg"))
+    assert unknown.returncode == 2 and ".dwg" in unknown.stderr
+
+    nobody = airshape("export", AIRLINER, "--components", "Nobody", "-o", str(tmp_path / "x.step"))
+    assert nobody.returncode == 2 and "Nobody" in nobody.stderr
+
+    a_folder = tmp_path / "folder.step"
+    a_folder.mkdir()
+    over_folder = airshape("export", AIRLINER, "--force", "-o", str(a_folder))
+    assert over_folder.returncode == 2 and "folder" in over_folder.stderr
+
+    assert sorted(os.listdir(tmp_path)) == ["folder.step", "taken.stl"]  # no temporary left behind
