@@ -86,12 +86,15 @@ ExportCommandOptions parseExportOptions(const Arguments& arguments) {
   return options;
 }
 
-/// Refuses, before anything is built, outputs of unknown formats and existing files
-/// (unless --force).
+/// Refuses, before anything is built, outputs of unknown formats, in missing folders, and
+/// existing files (unless --force).
 void checkOutputs(const ExportCommandOptions& options) {
   for (const std::string& output : options.outputs) {
     exporting::formatOfPath(output);
     std::error_code error;
+    const std::filesystem::path folder = std::filesystem::path(output).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+      throw Error(ErrorCode::WriteFailed, "cannot write: folder " + folder.string() + " does not exist", output);
     if (!options.force && std::filesystem::exists(output, error))
       throw Error(ErrorCode::WriteFailed, "exists already; use --force to replace it", output);
   }
