@@ -63,6 +63,11 @@ def test_every_format_reopens_with_names_and_volumes(tmp_path, name):
 
     iges = gmsh_volumes(paths["iges"])
     assert len(iges) == len(uids)
+    # IGES labels each manifold solid (entity 186, the second line of its directory entry)
+    # with the component's name, cut to the format's 8 characters.
+    entries = re.findall(r"^ {5}186.{48}(.{8}).{8}D(\d{7})$", open(paths["iges"]).read(), re.M)
+    labels = [label.strip() for label, number in entries if int(number) % 2 == 0]
+    assert sorted(labels) == sorted(uid[:8] for uid in uids)
     for (_, volume), memory in zip(iges, in_memory):
         assert volume == pytest.approx(memory, rel=1e-6)
 
