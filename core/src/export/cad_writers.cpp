@@ -15,14 +15,6 @@
 
 namespace airshape::exporting {
 
-namespace {
-
-Error cannotWrite(const std::string& format, const std::string& target) {
-  return Error(ErrorCode::WriteFailed, "cannot write " + format + " (disk full or not writable?)", target);
-}
-
-}  // namespace
-
 TopoDS_Compound sceneCompound(const ExportScene& scene) {
   TopoDS_Compound compound;
   BRep_Builder builder;

@@ -4,6 +4,7 @@
 
 #include <TopoDS_Compound.hxx>
 
+#include "airshape/error.h"
 #include "airshape/export/export_scene.h"
 
 // One writer per file format. Each writes a scene to `path` (a temporary name the caller
@@ -11,6 +12,11 @@
 // when it cannot. The triangulated formats expect the scene triangulated (scene_mesh.h).
 
 namespace airshape::exporting {
+
+/// The error of a writer that failed, naming the user's file.
+inline Error cannotWrite(const std::string& format, const std::string& target) {
+  return Error(ErrorCode::WriteFailed, "cannot write " + format + " (disk full or not writable?)", target);
+}
 
 /// Every component solid of a scene in one compound, in scene order.
 TopoDS_Compound sceneCompound(const ExportScene& scene);

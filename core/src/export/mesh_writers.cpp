@@ -15,10 +15,6 @@ namespace airshape::exporting {
 
 namespace {
 
-Error cannotWrite(const std::string& format, const std::string& target) {
-  return Error(ErrorCode::WriteFailed, "cannot write " + format + " (disk full or not writable?)", target);
-}
-
 TColStd_IndexedDataMapOfStringString fileInfo() {
   TColStd_IndexedDataMapOfStringString info;
   info.Add("generator", "airshape");

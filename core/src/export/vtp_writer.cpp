@@ -105,7 +105,7 @@ void writeVtp(const ExportScene& scene, const std::string& path, const std::stri
   std::ofstream out(path, std::ios::binary);
   writeDocument(out, data);
   out.close();
-  if (!out) throw Error(ErrorCode::WriteFailed, "cannot write VTK PolyData (disk full or not writable?)", target);
+  if (!out) throw cannotWrite("VTK PolyData", target);
 }
 
 }  // namespace airshape::exporting

@@ -58,8 +58,8 @@ Json intersectionCurves(Configuration& configuration, const Json& query) {
   section.Approximation(true);
   section.Build();
   if (!section.IsDone() || section.HasErrors())
-    throw Error(ErrorCode::InvalidModel, "the intersection of '" + stringArgument(query, "uid") + "' and '" + other +
-                                             "' could not be computed");
+    throw Error(ErrorCode::InvalidModel,
+                "the intersection of '" + stringArgument(query, "uid") + "' and '" + other + "' could not be computed");
   Json curves = Json::array();
   const Handle(TopTools_HSequenceOfShape) pieces = connectedPieces(section.Shape());
   for (int i = 1; i <= pieces->Length(); ++i) curves.push_back(polyline(TopoDS::Wire(pieces->Value(i)), deflection));
