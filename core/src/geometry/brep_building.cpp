@@ -7,7 +7,6 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
-#include <BRepLib.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -17,6 +16,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include "airshape/error.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/skinning.h"
 
 namespace airshape::geometry {
@@ -73,7 +73,7 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
   TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
   TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
-  BRepLib::OrientClosedSolid(solid);  // outward normals, so that Boolean operations see the inside
+  if (!hasOutwardNormals(solid)) solid.Reverse();  // so that Boolean operations see the inside
   if (sewnFaces) {
     sewnFaces->clear();
     for (const TopoDS_Face& face : faces)

@@ -9,7 +9,9 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Plane.hxx>
@@ -41,16 +43,32 @@ struct RectangularPatch {
   double u0, u1, v0, v1;
 };
 
+/// Whether a parameter-space curve runs along u or along v: a line parallel to an axis, or
+/// (as sewing leaves them) a B-spline whose poles all share one coordinate.
+bool isIsoLine(Handle(Geom2d_Curve) pcurve) {
+  while (const auto trimmed = Handle(Geom2d_TrimmedCurve)::DownCast(pcurve)) pcurve = trimmed->BasisCurve();
+  if (const auto line = Handle(Geom2d_Line)::DownCast(pcurve)) {
+    const gp_Dir2d direction = line->Direction();
+    return std::abs(direction.X()) <= 1e-12 || std::abs(direction.Y()) <= 1e-12;
+  }
+  const auto spline = Handle(Geom2d_BSplineCurve)::DownCast(pcurve);
+  if (spline.IsNull()) return false;
+  bool sameU = true, sameV = true;
+  const gp_Pnt2d start = spline->Pole(1);
+  for (int i = 2; i <= spline->NbPoles(); ++i) {
+    sameU = sameU && std::abs(spline->Pole(i).X() - start.X()) <= 1e-12;
+    sameV = sameV && std::abs(spline->Pole(i).Y() - start.Y()) <= 1e-12;
+  }
+  return sameU || sameV;
+}
+
 std::optional<RectangularPatch> rectangularPatch(const TopoDS_Face& face) {
   Handle(Geom_BSplineSurface) surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
   if (surface.IsNull() || surface->IsURational() || surface->IsVRational()) return std::nullopt;
   for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
     double first, last;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(edges.Current()), face, first, last);
-    const Handle(Geom2d_Line) line = Handle(Geom2d_Line)::DownCast(pcurve);
-    if (line.IsNull()) return std::nullopt;
-    const gp_Dir2d direction = line->Direction();
-    if (std::abs(direction.X()) > 1e-12 && std::abs(direction.Y()) > 1e-12) return std::nullopt;  // not an iso-line
+    if (!isIsoLine(pcurve)) return std::nullopt;
   }
   RectangularPatch patch{surface, 0, 0, 0, 0};
   BRepTools::UVBounds(face, patch.u0, patch.u1, patch.v0, patch.v1);
@@ -94,10 +112,16 @@ double integrateOverSpans(const RectangularPatch& patch, int uPoints, int vPoint
   return sum;
 }
 
+/// How a volume is integrated: exactly, or roughly (enough to tell its sign).
+enum class Accuracy { Exact, Rough };
+
 /// (1/3)∫∫ P·(S_u × S_v) du dv over the patch: polynomial on every knot span, so a Gauss rule
-/// with ceil(3p/2) points in a direction of degree p integrates it exactly.
-double patchVolume(const RectangularPatch& patch) {
-  const int uPoints = (3 * patch.surface->UDegree() + 2) / 2, vPoints = (3 * patch.surface->VDegree() + 2) / 2;
+/// with ceil(3p/2) points in a direction of degree p integrates it exactly; two points per
+/// span and direction when rough.
+double patchVolume(const RectangularPatch& patch, Accuracy accuracy) {
+  const bool exact = accuracy == Accuracy::Exact;
+  const int uPoints = exact ? (3 * patch.surface->UDegree() + 2) / 2 : 2;
+  const int vPoints = exact ? (3 * patch.surface->VDegree() + 2) / 2 : 2;
   return integrateOverSpans(
              patch, uPoints, vPoints,
              [](const gp_Pnt& p, const gp_Vec& du, const gp_Vec& dv) { return gp_Vec(p.XYZ()).Dot(du.Crossed(dv)); }) /
@@ -113,36 +137,53 @@ double patchArea(const RectangularPatch& patch) {
   });
 }
 
-double adaptiveVolume(const TopoDS_Shape& shape) {
+/// OCCT's volume of a solid: adaptive to 1e-9 when exact, its fixed Gauss rule when rough.
+double occtVolume(const TopoDS_Shape& shape, Accuracy accuracy) {
   GProp_GProps properties;
-  BRepGProp::VolumeProperties(shape, properties, kIntegrationAccuracy);
+  if (accuracy == Accuracy::Exact)
+    BRepGProp::VolumeProperties(shape, properties, kIntegrationAccuracy);
+  else
+    BRepGProp::VolumeProperties(shape, properties);
   return properties.Mass();
 }
 
-}  // namespace
+/// The area of a plane face: adaptive when exact, OCCT's fixed Gauss rule when rough.
+double planeArea(const TopoDS_Face& face, Accuracy accuracy) {
+  if (accuracy == Accuracy::Exact) return areaOf(face);
+  GProp_GProps properties;
+  BRepGProp::SurfaceProperties(face, properties);
+  return properties.Mass();
+}
 
-double volumeOf(const TopoDS_Shape& solid) {
+/// (1/3)∮ P·n dA over every face, with the sign of the solid's orientation: exact on
+/// rectangular patches and on planes (where P·n is constant). The terms of one formula only
+/// add up to the volume together, so a solid with any other face is integrated by OCCT as a
+/// whole.
+double signedVolume(const TopoDS_Shape& solid, Accuracy accuracy) {
   if (solid.IsNull()) return 0.0;
-  // (1/3)∫ P·n dA over every face: exact on rectangular patches and on planes (where P·n is
-  // constant). The terms of one formula only add up to the volume together, so a solid with
-  // any other face is integrated by OCCT as a whole.
   double volume = 0.0;
   for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
     const TopoDS_Face& face = TopoDS::Face(faces.Current());
     const double sense = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
     if (const auto patch = rectangularPatch(face)) {
-      volume += sense * patchVolume(*patch);
+      volume += sense * patchVolume(*patch, accuracy);
     } else if (const auto plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face)); !plane.IsNull()) {
       const gp_Ax3& frame = plane->Position();
       const double offset = gp_Vec(frame.Location().XYZ()).Dot(gp_Vec(frame.Direction()));
       const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
-      volume += sense * orientation * offset * areaOf(face) / 3.0;
+      volume += sense * orientation * offset * planeArea(face, accuracy) / 3.0;
     } else {
-      return std::abs(adaptiveVolume(solid));
+      return occtVolume(solid, accuracy);
     }
   }
-  return std::abs(volume);
+  return volume;
 }
+
+}  // namespace
+
+double volumeOf(const TopoDS_Shape& solid) { return std::abs(signedVolume(solid, Accuracy::Exact)); }
+
+bool hasOutwardNormals(const TopoDS_Shape& solid) { return signedVolume(solid, Accuracy::Rough) > 0; }
 
 double areaOf(const TopoDS_Shape& faces) {
   double area = 0.0;
