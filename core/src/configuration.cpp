@@ -1,39 +1,58 @@
 #include "airshape/configuration.h"
 
+#include <set>
+
 #include <xercesc/dom/DOM.hpp>
 
 #include "airshape/cpacs_version.h"
 #include "airshape/error.h"
+#include "airshape/model/component_fingerprints.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/schema/dom_reader.h"
 #include "airshape/schema/dom_writer.h"
 #include "airshape/schema/generated/cpacs_model.h"
 #include "airshape/uid/repeated_uids.h"
+#include "airshape/xml/path.h"
+#include "airshape/xml/text.h"
+#include "airshape/xml/xpath.h"
 
 namespace airshape {
 
 Configuration::Configuration(xml::Document document, const std::vector<graph::ComponentLocation>& locations)
-    : document_(std::move(document)), cpacs_(std::make_unique<schema::CpacsType>()) {
+    : document_(std::move(document)), locations_(locations) {
   xercesc::DOMElement& root = *document_.root();
   requireCpacs3(root, document_.source());
   cpacsVersion_ = declaredCpacsVersion(root);
+  load();
+}
 
+void Configuration::load() {
+  xercesc::DOMElement& root = *document_.root();
+  auto cpacs = std::make_shared<schema::CpacsType>();
   schema::ReadReport report;
-  schema::readNode(root, *cpacs_, "/cpacs", report);
-  schemaProblems_ = std::move(report.problems);
+  schema::readNode(root, *cpacs, "/cpacs", report);
 
-  uids_.build(root, report.references);
-  uid::setAsideRepeatedUids(*cpacs_, uids_);
-  for (const Problem& problem : uids_.problems())
-    warnings_.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
-
-  const Problems skipped = model::primaryModel(*cpacs_).skipped;
-  warnings_.insert(warnings_.end(), skipped.begin(), skipped.end());
+  uid::UidRegistry uids;
+  uids.build(root, report.references);
+  uid::setAsideRepeatedUids(*cpacs, uids);
+  Problems warnings;
+  for (const Problem& problem : uids.problems())
+    warnings.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
+  const Problems skipped = model::primaryModel(*cpacs).skipped;
+  warnings.insert(warnings.end(), skipped.begin(), skipped.end());
+  graph::ComponentGraph components;
   try {
-    components_ = graph::ComponentGraph::build(root, locations, warnings_);
+    components = graph::ComponentGraph::build(root, locations_, warnings);
   } catch (const Error& error) {
     throw error.inFile(document_.source());
   }
+  // Only now, when nothing can fail any more, does the configuration change.
+  cpacs_ = std::move(cpacs);
+  schemaProblems_ = std::move(report.problems);
+  uids_ = std::move(uids);
+  warnings_ = std::move(warnings);
+  components_ = std::move(components);
+  cache_->setAnchor(cpacs_);
 }
 
 Configuration Configuration::open(const std::string& path, const std::vector<graph::ComponentLocation>& locations) {
@@ -55,6 +74,66 @@ const ComponentShapes& Configuration::noShapes() {
 }
 
 void Configuration::writeModel() { schema::writeNode(*cpacs_, *document_.root()); }
+
+std::string Configuration::value(const std::string& xpath) const {
+  const xml::XPathTarget target = xml::resolveXPath(*document_.root(), xpath);
+  return target.attribute.empty() ? xml::text(*target.element) : xml::attribute(*target.element, target.attribute);
+}
+
+void Configuration::setValue(const std::string& xpath, const std::string& value) {
+  const xml::XPathTarget target = xml::resolveXPath(*document_.root(), xpath);
+  if (target.attribute.empty() && xml::firstElement(*target.element) != nullptr)
+    throw Error(ErrorCode::InvalidArgument, "XPath " + xpath + ": addresses an element holding elements, not a value");
+  const std::string previous = this->value(xpath);
+  const auto write = [&](const std::string& text) {
+    if (target.attribute.empty())
+      xml::setText(*target.element, text);
+    else
+      target.element->setAttribute(xml::toXml(target.attribute).c_str(), xml::toXml(text).c_str());
+  };
+  // Problems name paths with [1] on every step, pathOf only where siblings share a name.
+  const auto withoutFirstPositions = [](std::string path) {
+    for (std::size_t at = path.find("[1]"); at != std::string::npos; at = path.find("[1]", at)) path.erase(at, 3);
+    return path;
+  };
+  const std::string edited = withoutFirstPositions(xml::pathOf(*target.element));
+  const auto problemsThere = [&] {
+    std::set<std::string> messages;
+    for (const Problem& problem : schemaProblems_)
+      if (withoutFirstPositions(problem.xpath).rfind(edited, 0) == 0) messages.insert(problem.message);
+    return messages;
+  };
+  const std::set<std::string> problemsBefore = problemsThere();
+  if (fingerprints_.empty()) fingerprints_ = model::componentFingerprints(*this);
+  write(value);
+  try {
+    load();
+    for (const std::string& problem : problemsThere())
+      if (problemsBefore.count(problem) == 0)
+        throw Error(ErrorCode::InvalidArgument, "'" + value + "' refused: " + problem, document_.source(), xpath);
+  } catch (...) {
+    write(previous);
+    load();
+    throw;
+  }
+  invalidateChangedComponents();
+}
+
+void Configuration::modelChanged() {
+  if (fingerprints_.empty()) fingerprints_ = model::componentFingerprints(*this);
+  const std::shared_ptr<schema::CpacsType> edited = cpacs_;
+  writeModel();
+  load();
+  cpacs_ = edited;  // the caller's model stays the one in use
+  cache_->setAnchor(cpacs_);
+  invalidateChangedComponents();
+}
+
+void Configuration::invalidateChangedComponents() {
+  std::map<std::string, std::uint64_t> fingerprints = model::componentFingerprints(*this);
+  cache_->invalidate(model::changedComponents(*this, fingerprints_, fingerprints));
+  fingerprints_ = std::move(fingerprints);
+}
 
 void Configuration::save(const std::string& path) {
   writeModel();

@@ -1,15 +1,28 @@
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <unordered_map>
 
 namespace airshape {
 
-/// What plugins built for a configuration, by key (usually the component's uID and what
-/// was built): built on first use, then reused by every later query.
+/// How a cache has been used since the configuration was opened.
+struct CacheStatistics {
+  std::size_t built = 0;        ///< objects built (first use, or again after an edit)
+  std::size_t reused = 0;       ///< requests answered from the cache
+  std::size_t invalidated = 0;  ///< objects forgotten because the model changed
+  /// Builds per key ("wing-geometry:W1", "shape:F1", ...), to see what an edit rebuilt.
+  std::map<std::string, std::size_t> buildsByKey;
+};
+
+/// What plugins built for a configuration, by key: "<what>:<component uID>" for what
+/// belongs to one component, a plain name for what belongs to the whole model. Built on
+/// first use, then reused by every later query, until an edit invalidates it.
 class ComponentCache {
  public:
   /// The object stored under `key`, built by `build` if there is none yet.
@@ -17,23 +30,39 @@ class ComponentCache {
   std::shared_ptr<const T> obtain(const std::string& key, const std::function<std::shared_ptr<const T>()>& build) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (const auto found = entries_.find(key); found != entries_.end())
-        return std::static_pointer_cast<const T>(found->second);
+      if (const auto found = entries_.find(key); found != entries_.end()) {
+        ++statistics_.reused;
+        return std::static_pointer_cast<const T>(found->second.value);
+      }
     }
     std::shared_ptr<const T> built = build();  // outside the lock: builders may obtain other entries
     std::lock_guard<std::mutex> lock(mutex_);
-    return std::static_pointer_cast<const T>(entries_.emplace(key, built).first->second);
+    const auto [entry, inserted] = entries_.emplace(key, Entry{built, anchor_});
+    if (inserted) {
+      ++statistics_.built;
+      ++statistics_.buildsByKey[key];
+    }
+    return std::static_pointer_cast<const T>(entry->second.value);
   }
 
-  /// Forgets everything (after the model changed).
-  void clear() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    entries_.clear();
-  }
+  /// Forgets everything.
+  void clear();
+  /// Forgets what was built for these components and everything built for the whole model.
+  void invalidate(const std::set<std::string>& componentUids);
+  /// Objects built from now on keep `anchor` alive (the typed model they may point into),
+  /// so that what an edit leaves cached stays valid when the model is read anew.
+  void setAnchor(std::shared_ptr<const void> anchor);
+  CacheStatistics statistics() const;
 
  private:
-  std::mutex mutex_;
-  std::unordered_map<std::string, std::shared_ptr<const void>> entries_;
+  struct Entry {
+    std::shared_ptr<const void> value;
+    std::shared_ptr<const void> anchor;
+  };
+  mutable std::mutex mutex_;
+  std::unordered_map<std::string, Entry> entries_;
+  std::shared_ptr<const void> anchor_;
+  CacheStatistics statistics_;
 };
 
 }  // namespace airshape

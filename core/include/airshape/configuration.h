@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,20 +62,44 @@ class Configuration {
 
   /// Writes the model's values into the document (only what differs from it).
   void writeModel();
+
+  // Editing. Each edit leaves the document, the typed model, the uIDs and the component
+  // graph consistent, and invalidates in the cache exactly what was built for the
+  // components the edit can change (their fingerprints, model/component_fingerprints.h)
+  // and for those attached below them; the rest is reused.
+
+  /// The text of the element, or the value of the attribute, an XPath addresses
+  /// (xml/xpath.h). Throws Error(InvalidArgument) naming the path when it addresses nothing.
+  std::string value(const std::string& xpath) const;
+  /// Sets the text of the element (a leaf: it must hold no elements) or the attribute an
+  /// XPath addresses, and reads the model anew. A value the schema refuses there (text
+  /// for a number, say), or one that breaks the model (a parentUID cycle), is an Error and
+  /// the document is left as it was.
+  void setValue(const std::string& xpath, const std::string& value);
+  /// After editing the typed model (cpacs()) directly: writes it into the document and
+  /// brings uIDs, components and cache up to date. The typed model is kept as it is.
+  void modelChanged();
   /// Writes the model into the document and saves it atomically to `path`.
   void save(const std::string& path);
 
  private:
   Configuration(xml::Document document, const std::vector<graph::ComponentLocation>& locations);
+  /// Reads the typed model, the uIDs and the component graph from the document.
+  void load();
+  /// Invalidates in the cache what was built for components whose fingerprint changed
+  /// since the last edit (and for those attached below them).
+  void invalidateChangedComponents();
 
   xml::Document document_;
-  std::unique_ptr<schema::CpacsType> cpacs_;
+  std::vector<graph::ComponentLocation> locations_;
+  std::shared_ptr<schema::CpacsType> cpacs_;
   std::string cpacsVersion_;
   uid::UidRegistry uids_;
   graph::ComponentGraph components_;
   Problems schemaProblems_;
   Problems warnings_;
   std::unique_ptr<ComponentCache> cache_ = std::make_unique<ComponentCache>();
+  std::map<std::string, std::uint64_t> fingerprints_;  // of the components, as of the last edit
   const ComponentShapes* shapes_ = &noShapes();
   static const ComponentShapes& noShapes();
 };
