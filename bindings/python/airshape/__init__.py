@@ -1,0 +1,307 @@
+"""Airshape: CPACS aircraft descriptions as exact B-spline geometry.
+
+    import airshape
+    config = airshape.Configuration.open("examples/generic-airliner.xml")
+    wing = config.wings["Wing"]
+    wing.volume, wing.reference_area()
+    wing.upper_point(segment=1, eta=0.5, xsi=0.3)
+    wing.sections[2].elements[0].transformation.scaling.x = 1.4   # edit; rebuilt on next use
+    config.export("airliner.step", mirror=True)
+
+Every failure raises an `airshape.Error` subclass (airshape.errors) with the file and the
+CPACS path it concerns.
+"""
+from __future__ import annotations
+
+from typing import Any, Iterator, List, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _airshape
+from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetError, PluginError,
+                     WriteError)
+
+__all__ = ["Configuration", "Wing", "Fuselage", "Node", "NodeList", "Error", "FileError", "ModelError",
+           "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError"]
+
+Number = Union[int, float]
+
+
+def _text(value: Any) -> str:
+    """A value as CPACS text: numbers with every digit, booleans as true/false."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+class Node:
+    """An element of the CPACS document, reached by attribute names and indices, for reading
+    and editing values: `wing.sections[0].elements[0].transformation.scaling.x = 1.2`.
+
+    An attribute name ending in "s" is a list of the elements named without it
+    (`sections` -> `section`); others are single child elements. Setting an attribute sets
+    that child's text. `float(node)`, `node.text` and `node.value` read it."""
+
+    __slots__ = ("_config", "_xpath")
+
+    def __init__(self, config: "Configuration", xpath: str) -> None:
+        object.__setattr__(self, "_config", config)
+        object.__setattr__(self, "_xpath", xpath)
+
+    @property
+    def xpath(self) -> str:
+        return self._xpath
+
+    @property
+    def text(self) -> str:
+        return self._config.value(self._xpath)
+
+    @property
+    def value(self) -> Union[float, str]:
+        """The text as a number where it is one."""
+        text = self.text
+        try:
+            return float(text)
+        except ValueError:
+            return text
+
+    def __float__(self) -> float:
+        return float(self.text)
+
+    def __getattr__(self, name: str) -> Union["Node", "NodeList"]:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name.endswith("s") and len(name) > 1:
+            return NodeList(self._config, f"{self._xpath}/{name}/{name[:-1]}")
+        return Node(self._config, f"{self._xpath}/{name}")
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        self._config.set(f"{self._xpath}/{name}", value)
+
+    def attribute(self, name: str) -> str:
+        """The value of an XML attribute of this element (uID, symmetry, ...)."""
+        return self._config.value(f"{self._xpath}/@{name}")
+
+    def __repr__(self) -> str:
+        return f"Node({self._xpath!r})"
+
+
+class NodeList(Sequence[Node]):
+    """The elements of one name under a parent, indexed from 0."""
+
+    def __init__(self, config: "Configuration", xpath: str) -> None:
+        self._config = config
+        self._xpath = xpath
+
+    def __len__(self) -> int:
+        return self._config._core.count(self._xpath)
+
+    def __getitem__(self, index):  # type: ignore[override]
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        count = len(self)
+        if index < 0:
+            index += count
+        if not 0 <= index < count:
+            raise ArgumentError(f"index {index} is out of range ({count} elements at {self._xpath})")
+        return Node(self._config, f"{self._xpath}[{index + 1}]")
+
+    def __repr__(self) -> str:
+        return f"NodeList({self._xpath!r}, {len(self)} elements)"
+
+
+class _Component:
+    """What wings and fuselages share: a uID, the node of its element, the ops."""
+
+    _kind = ""
+
+    def __init__(self, config: "Configuration", uid: str) -> None:
+        self._config = config
+        self.uid = uid
+
+    def _op(self, name: str, **arguments: Any) -> Any:
+        return self._config.query(f"{self._kind}_{name}", **{self._kind: self.uid}, **arguments)
+
+    @property
+    def node(self) -> Node:
+        """The component's element, for reading and editing its values."""
+        kind = self._kind
+        return Node(self._config, f"/cpacs/vehicles/aircraft/model/{kind}s/{kind}[@uID='{self.uid}']")
+
+    def __getattr__(self, name: str) -> Union[Node, NodeList]:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return getattr(self.node, name)
+
+    @property
+    def segment_count(self) -> int:
+        return self._op("segment_count")
+
+    @property
+    def volume(self) -> float:
+        return self._op("volume")
+
+    @property
+    def surface_area(self) -> float:
+        return self._op("surface_area")
+
+    def segment_volume(self, segment: Union[int, str]) -> float:
+        return self._op("segment_volume", segment=segment)
+
+    def segment_surface_area(self, segment: Union[int, str]) -> float:
+        return self._op("segment_surface_area", segment=segment)
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.uid!r})"
+
+
+class Wing(_Component):
+    """A wing: points on its skins by segment, eta and xsi, and its measures."""
+
+    _kind = "wing"
+
+    def upper_point(self, segment: Union[int, str], eta: float, xsi: float) -> np.ndarray:
+        return np.array(self._op("upper_point", segment=segment, eta=eta, xsi=xsi))
+
+    def lower_point(self, segment: Union[int, str], eta: float, xsi: float) -> np.ndarray:
+        return np.array(self._op("lower_point", segment=segment, eta=eta, xsi=xsi))
+
+    def chord_point(self, segment: Union[int, str], eta: float, xsi: float) -> np.ndarray:
+        return np.array(self._op("chord_point", segment=segment, eta=eta, xsi=xsi))
+
+    def points(self, side: str, segment: Union[int, str], eta: Any, xsi: Any) -> np.ndarray:
+        """Points of one side ("upper", "lower" or "chord") for arrays of eta and xsi
+        (scalars broadcast): an (n, 3) array, computed in one call."""
+        eta, xsi = np.broadcast_arrays(np.asarray(eta, dtype=float).ravel(), np.asarray(xsi, dtype=float).ravel())
+        return self._config._core.points(f"wing_{side}_point", {"wing": self.uid, "segment": segment}, "eta",
+                                         np.ascontiguousarray(eta), "xsi", np.ascontiguousarray(xsi))
+
+    @property
+    def section_count(self) -> int:
+        return self._op("section_count")
+
+    @property
+    def symmetry(self) -> str:
+        return self._op("symmetry")
+
+    def reference_area(self, plane: str = "x-y") -> float:
+        return self._op("reference_area", plane=plane)
+
+    @property
+    def wetted_area(self) -> float:
+        return self._op("wetted_area")
+
+    @property
+    def span(self) -> float:
+        return self._op("span")
+
+    @property
+    def mac(self) -> dict:
+        """{"mac": length, "point": [x, y, z]}"""
+        return self._op("mac")
+
+
+class Fuselage(_Component):
+    """A fuselage: points by segment, eta and zeta, and its measures."""
+
+    _kind = "fuselage"
+
+    def point(self, segment: Union[int, str], eta: float, zeta: float) -> np.ndarray:
+        return np.array(self._op("point", segment=segment, eta=eta, zeta=zeta))
+
+    def points(self, segment: Union[int, str], eta: Any, zeta: Any) -> np.ndarray:
+        """Points for arrays of eta and zeta (scalars broadcast): an (n, 3) array."""
+        eta, zeta = np.broadcast_arrays(np.asarray(eta, dtype=float).ravel(), np.asarray(zeta, dtype=float).ravel())
+        return self._config._core.points("fuselage_point", {"fuselage": self.uid, "segment": segment}, "eta",
+                                         np.ascontiguousarray(eta), "zeta", np.ascontiguousarray(zeta))
+
+    def circumference(self, segment: Union[int, str], eta: float) -> float:
+        return self._op("circumference", segment=segment, eta=eta)
+
+
+class _Components(Sequence):
+    """Wings or fuselages, by 0-based index or by uID."""
+
+    def __init__(self, config: "Configuration", kind: str, cls: type) -> None:
+        self._config, self._kind, self._cls = config, kind, cls
+
+    def __len__(self) -> int:
+        return self._config.query(f"{self._kind}_count")
+
+    def __getitem__(self, key):  # type: ignore[override]
+        if isinstance(key, str):
+            return self._cls(self._config, self._config.query(f"{self._kind}_uid", **{self._kind: key}))
+        count = len(self)
+        if key < 0:
+            key += count
+        if not 0 <= key < count:
+            raise ArgumentError(f"{self._kind} index {key} is out of range ({count} {self._kind}s)")
+        return self._cls(self._config, self._config.query(f"{self._kind}_uid", **{self._kind: key + 1}))
+
+    def __iter__(self) -> Iterator:
+        return (self[i] for i in range(len(self)))
+
+
+class Configuration:
+    """A CPACS 3 file opened for geometry. Geometry is built on first use and cached; an
+    edit rebuilds only the components it can change (see cache_statistics())."""
+
+    def __init__(self, core: "_airshape.Configuration") -> None:
+        self._core = core
+
+    @classmethod
+    def open(cls, path: str) -> "Configuration":
+        """Opens a CPACS 3 file; raises FileError naming it when it cannot."""
+        return cls(_airshape.Configuration.open(str(path)))
+
+    @classmethod
+    def from_string(cls, xml: str, name: str = "<string>") -> "Configuration":
+        """Opens a CPACS 3 document held in a string."""
+        return cls(_airshape.Configuration.from_string(xml, name))
+
+    @property
+    def source(self) -> str:
+        return self._core.source
+
+    @property
+    def wings(self) -> _Components:
+        return _Components(self, "wing", Wing)
+
+    @property
+    def fuselages(self) -> _Components:
+        return _Components(self, "fuselage", Fuselage)
+
+    def query(self, op: str, **arguments: Any) -> Any:
+        """Runs any op of the query protocol (docs/query.md): query("wing_span", wing=1)."""
+        return self._core.query(op, arguments)
+
+    def value(self, xpath: str) -> str:
+        """The text (or attribute value) an XPath addresses."""
+        return self._core.value(xpath)
+
+    def set(self, xpath: str, value: Any) -> None:
+        """Sets a value by XPath; raises ArgumentError (and changes nothing) for a value the
+        schema refuses there or a path that addresses nothing."""
+        self._core.set(xpath, _text(value))
+
+    def node(self, xpath: str) -> Node:
+        """The element at an XPath, for reading and editing by attribute names."""
+        return Node(self, xpath)
+
+    def save(self, path: str) -> None:
+        """Writes the document, edits included (complete or not at all)."""
+        self._core.save(str(path))
+
+    def export(self, path: str, components: Optional[List[str]] = None, mirror: bool = False, fused: bool = False,
+               linear_deflection: float = 0.0, angular_deflection: float = 0.0) -> None:
+        """Writes the geometry in the format the extension names (docs/export.md)."""
+        self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection)
+
+    def cache_statistics(self) -> dict:
+        """{"built", "reused", "invalidated", "builds_by_key"}: what the geometry cache did."""
+        return self._core.cache_statistics()
+
+    def __repr__(self) -> str:
+        return f"Configuration({self.source!r})"

@@ -1,0 +1,156 @@
+"""The Python module `airshape`: opening, pythonic wings and fuselages, vectorised points,
+editing with incremental rebuilds, saving, exporting, errors, threads."""
+import json
+import os
+import subprocess
+import sys
+import threading
+
+import numpy as np
+import pytest
+
+import airshape
+from conftest import AIRLINER, BUILD, SOURCE
+
+
+@pytest.fixture
+def config():
+    return airshape.Configuration.open(AIRLINER)
+
+
+def cli_answers(path, *queries):
+    binary = os.path.join(BUILD, "bin", "airshape")
+    result = subprocess.run([binary, "query", path], input="".join(json.dumps(q) + "\n" for q in queries),
+                            capture_output=True, text=True, check=True)
+    return [json.loads(line)["ok"] for line in result.stdout.splitlines()]
+
+
+def test_components_answer_as_the_query_service_does(config):
+    assert [wing.uid for wing in config.wings] == ["Wing", "HTP", "VTP"]
+    assert [f.uid for f in config.fuselages] == ["Fuselage"]
+    wing, fuselage = config.wings["Wing"], config.fuselages[0]
+    volume, area, point, fpoint, span = cli_answers(
+        AIRLINER, {"op": "wing_volume", "wing": "Wing"}, {"op": "wing_reference_area", "wing": 1, "plane": "x-y"},
+        {"op": "wing_upper_point", "wing": 1, "segment": 2, "eta": 0.3, "xsi": 0.6},
+        {"op": "fuselage_point", "fuselage": 1, "segment": 3, "eta": 0.5, "zeta": 0.1},
+        {"op": "wing_span", "wing": 1})
+    assert wing.volume == volume
+    assert wing.reference_area("x-y") == area
+    assert wing.upper_point(2, 0.3, 0.6).tolist() == point
+    assert fuselage.point(3, 0.5, 0.1).tolist() == fpoint
+    assert wing.span == span
+    assert wing.symmetry == "x-z" and wing.segment_count == 2 and wing.section_count == 3
+    assert config.query("wing_mac", wing="Wing") == wing.mac
+
+
+def test_points_are_vectorised(config):
+    wing = config.wings[0]
+    eta = np.linspace(0, 1, 7)
+    xsi = np.linspace(0.1, 0.9, 7)
+    points = wing.points("lower", 1, eta, xsi)
+    assert points.shape == (7, 3)
+    for k in range(7):
+        assert points[k].tolist() == wing.lower_point(1, eta[k], xsi[k]).tolist()
+    ring = config.fuselages[0].points(4, 0.5, np.linspace(0, 1, 5))  # a scalar eta broadcasts
+    assert ring.shape == (5, 3)
+    assert ring[0].tolist() == pytest.approx(ring[-1].tolist(), abs=1e-9)  # zeta 0 and 1 meet
+
+
+def test_editing_rebuilds_only_the_edited_wing(config):
+    wing, fuselage, htp = config.wings["Wing"], config.fuselages[0], config.wings["HTP"]
+    before = (wing.volume, fuselage.volume, htp.volume)
+    tip = wing.sections[2].elements[0].transformation.scaling
+    assert float(tip.x) == pytest.approx(1.6)
+    tip.x = 2.4
+    assert tip.x.value == 2.4
+    assert wing.volume > before[0]
+    assert (fuselage.volume, htp.volume) == before[1:]
+    builds = config.cache_statistics()["builds_by_key"]
+    assert builds["wing-shape:Wing"] == 2
+    assert builds["fuselage-geometry:Fuselage"] == 1
+    assert builds["wing-shape:HTP"] == 1
+    # The same edit by XPath, and a read back.
+    xpath = "/cpacs/vehicles/aircraft/model/wings/wing[@uID='Wing']/sections/section[3]/elements/element/transformation/scaling/x"
+    config.set(xpath, 1.6)
+    assert config.value(xpath) == "1.6"
+    assert wing.volume == pytest.approx(before[0], rel=1e-12)
+
+
+def test_a_refused_edit_raises_with_the_path_and_changes_nothing(config):
+    node = config.wings["Wing"].sections[0].elements[0].transformation.scaling
+    with pytest.raises(airshape.ArgumentError) as refused:
+        node.x = "wide"
+    assert "scaling/x" in refused.value.cpacs_path
+    assert float(node.x) == pytest.approx(7.2)
+    with pytest.raises(airshape.ArgumentError):
+        config.wings["Wing"].sections[7]
+    with pytest.raises(airshape.ArgumentError):
+        config.set("/cpacs/vehicles/aircraft/model/wings/wing[9]/name", "x")
+
+
+def test_errors_are_airshape_errors(tmp_path):
+    with pytest.raises(airshape.FileError) as missing:
+        airshape.Configuration.open(tmp_path / "missing.xml")
+    assert missing.value.file.endswith("missing.xml")
+    with pytest.raises(airshape.FileError):
+        airshape.Configuration.from_string("<cpacs>", "broken")
+    config = airshape.Configuration.open(AIRLINER)
+    with pytest.raises(airshape.ArgumentError):
+        config.wings[0].upper_point(1, 1.5, 0.3)
+    with pytest.raises(airshape.WriteError):
+        config.export(tmp_path / "no" / "folder" / "x.step")
+    assert issubclass(airshape.WriteError, airshape.Error)
+
+
+def test_save_and_export_after_an_edit(config, tmp_path):
+    config.wings["HTP"].sections[1].elements[0].transformation.scaling.x = 1.8
+    config.save(tmp_path / "edited.xml")
+    reopened = airshape.Configuration.open(tmp_path / "edited.xml")
+    assert reopened.wings["HTP"].volume == pytest.approx(config.wings["HTP"].volume, rel=1e-12)
+    config.export(tmp_path / "htp.step", components=["HTP"])
+    assert "PRODUCT('HTP'" in (tmp_path / "htp.step").read_text()
+
+
+def test_configurations_work_from_several_threads():
+    results, errors = {}, []
+
+    def run(name):
+        try:
+            config = airshape.Configuration.open(AIRLINER)
+            results[name] = config.wings["Wing"].points("upper", 1, np.linspace(0, 1, 50), 0.5)
+        except Exception as error:  # noqa: BLE001 - reported below
+            errors.append(error)
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert not errors
+    for k in range(1, 4):
+        assert np.array_equal(results[k], results[0])
+
+
+def test_the_example_sweep_rebuilds_only_the_wing():
+    script = os.path.join(SOURCE, "examples", "python", "tip_chord_sweep.py")
+    output = subprocess.run([sys.executable, script], capture_output=True, text=True, check=True,
+                            env=os.environ).stdout
+    lines = output.splitlines()
+    rows = [line.split() for line in lines if len(line.split()) == 4 and line.split()[0][0].isdigit()]
+    assert len(rows) == 50
+    volumes = [float(row[1]) for row in rows]
+    assert volumes == sorted(volumes) and volumes[0] < volumes[-1]  # a longer tip chord, a larger wing
+    assert "fuselage-geometry:Fuselage       built 1 time" in output
+    assert "wing-shape:Wing                  built 50 times" in output
+
+
+def test_installs_with_cmake(tmp_path):
+    prefix = tmp_path / "prefix"
+    subprocess.run(["cmake", "--install", BUILD, "--prefix", str(prefix)], check=True, capture_output=True)
+    package = prefix / "lib" / "python3" / "dist-packages"
+    code = ("import airshape; c = airshape.Configuration.open(%r); print(c.wings[0].uid, airshape.__file__)"
+            % AIRLINER)
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            env={"PATH": os.environ["PATH"], "PYTHONPATH": str(package)})
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("Wing ") and str(prefix) in result.stdout
