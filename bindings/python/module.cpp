@@ -120,9 +120,8 @@ void translateErrors() {
     try {
       if (pointer) std::rethrow_exception(pointer);
     } catch (const airshape::Error& error) {
-      static const char* classes[] = {"FileError",   "FileError",    "FileError",    "FileError",
-                                      "ModelError",  "ArgumentError", "WriteError", "PluginError",
-                                      "NotBuiltYetError"};
+      static const char* classes[] = {"FileError",     "FileError",  "FileError",   "FileError",       "ModelError",
+                                      "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError"};
       const py::object errors = py::module_::import("airshape.errors");
       const py::object type = errors.attr(classes[static_cast<int>(error.code())]);
       const py::object instance = type(error.what(), error.file(), error.cpacsPath());

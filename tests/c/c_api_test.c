@@ -1,0 +1,182 @@
+/* The C interface, from C: statuses and messages for bad input (never a crash), every typed
+ * op against the generic query, editing, exports, and handles used from several threads. */
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "airshape.h"
+
+static int failures = 0;
+
+#define CHECK(condition)                                                                            \
+  do {                                                                                              \
+    if (!(condition)) {                                                                             \
+      fprintf(stderr, "%s:%d: CHECK failed: %s (last error: %s)\n", __FILE__, __LINE__, #condition, \
+              airshape_last_error());                                                               \
+      ++failures;                                                                                   \
+    }                                                                                               \
+  } while (0)
+
+static const char* airliner;
+
+/* The number a generic query answers. */
+static double queried(airshape_configuration* c, const char* query) {
+  char* result = NULL;
+  double value = NAN;
+  if (airshape_query(c, query, &result) == AIRSHAPE_OK) value = atof(result);
+  airshape_free(result);
+  return value;
+}
+
+static void bad_input_gives_statuses(void) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open("/no/such/file.xml", &c) == AIRSHAPE_FILE_NOT_FOUND);
+  CHECK(c == NULL);
+  CHECK(strstr(airshape_last_error(), "/no/such/file.xml") != NULL);
+  CHECK(airshape_open_string("<cpacs><header>", "broken", &c) == AIRSHAPE_NOT_XML);
+  CHECK(airshape_open_string("<html/>", "page", &c) == AIRSHAPE_NOT_CPACS);
+  CHECK(airshape_open(NULL, &c) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(airshape_open(airliner, NULL) == AIRSHAPE_INVALID_ARGUMENT);
+  double volume = 0;
+  CHECK(airshape_wing_volume(NULL, 1, &volume) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(strcmp(airshape_status_name(AIRSHAPE_WRITE_FAILED), "AIRSHAPE_WRITE_FAILED") == 0);
+}
+
+static void typed_ops_agree_with_the_query(void) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(airliner, &c) == AIRSHAPE_OK);
+  int wings = 0, fuselages = 0, segments = 0;
+  CHECK(airshape_wing_count(c, &wings) == AIRSHAPE_OK && wings == 3);
+  CHECK(airshape_fuselage_count(c, &fuselages) == AIRSHAPE_OK && fuselages == 1);
+  CHECK(airshape_wing_segment_count(c, 1, &segments) == AIRSHAPE_OK && segments == 2);
+  char* text = NULL;
+  CHECK(airshape_wing_uid(c, 2, &text) == AIRSHAPE_OK && strcmp(text, "HTP") == 0);
+  airshape_free(text);
+  CHECK(airshape_wing_symmetry(c, 1, &text) == AIRSHAPE_OK && strcmp(text, "x-z") == 0);
+  airshape_free(text);
+
+  double volume = 0, area = 0, span = 0, mac = 0, point[3], centre[3], minimum[3], maximum[3];
+  CHECK(airshape_wing_volume(c, 1, &volume) == AIRSHAPE_OK);
+  CHECK(volume == queried(c, "{\"op\":\"wing_volume\",\"wing\":\"Wing\"}"));
+  CHECK(airshape_wing_reference_area(c, 1, "x-y", &area) == AIRSHAPE_OK && area > 50);
+  CHECK(airshape_wing_span(c, 1, &span) == AIRSHAPE_OK && span > 30);
+  CHECK(airshape_wing_mac(c, 1, &mac, centre) == AIRSHAPE_OK && mac > 1);
+  CHECK(airshape_wing_surface_area(c, 1, &area) == AIRSHAPE_OK && area > 100);
+  CHECK(airshape_wing_wetted_area(c, 1, &area) == AIRSHAPE_OK && area > 100);
+  CHECK(airshape_wing_segment_volume(c, 1, 2, &volume) == AIRSHAPE_OK && volume > 0);
+  CHECK(airshape_wing_segment_surface_area(c, 1, 2, &area) == AIRSHAPE_OK && area > 0);
+  CHECK(airshape_wing_upper_point(c, 1, 1, 0.5, 0.3, point) == AIRSHAPE_OK);
+  char* segment = NULL;
+  double eta = 0, xsi = 0;
+  int on_top = 0;
+  CHECK(airshape_wing_segment_eta_xsi(c, 1, point, &segment, &eta, &xsi, &on_top) == AIRSHAPE_OK);
+  CHECK(segment != NULL && fabs(eta - 0.5) < 1e-6 && fabs(xsi - 0.3) < 1e-6 && on_top == 1);
+  airshape_free(segment);
+  CHECK(airshape_wing_lower_point(c, 1, 1, 0.5, 0.3, point) == AIRSHAPE_OK);
+  CHECK(airshape_wing_chord_point(c, 1, 1, 0.5, 0.3, point) == AIRSHAPE_OK);
+  CHECK(airshape_fuselage_point(c, 1, 4, 0.5, 0.25, point) == AIRSHAPE_OK && fabs(point[1] - 2.0) < 1e-3);
+  CHECK(airshape_fuselage_volume(c, 1, &volume) == AIRSHAPE_OK && volume > 300);
+  CHECK(airshape_fuselage_surface_area(c, 1, &area) == AIRSHAPE_OK && area > 300);
+  CHECK(airshape_fuselage_segment_volume(c, 1, 4, &volume) == AIRSHAPE_OK && volume > 200);
+  CHECK(airshape_fuselage_segment_surface_area(c, 1, 4, &area) == AIRSHAPE_OK && area > 200);
+  CHECK(airshape_fuselage_circumference(c, 1, 4, 0.5, &area) == AIRSHAPE_OK && fabs(area - 4 * M_PI) < 0.05);
+  CHECK(airshape_fuselage_segment_count(c, 1, &segments) == AIRSHAPE_OK && segments == 7);
+  CHECK(airshape_fuselage_uid(c, 1, &text) == AIRSHAPE_OK && strcmp(text, "Fuselage") == 0);
+  airshape_free(text);
+  CHECK(airshape_bounding_box(c, NULL, minimum, maximum) == AIRSHAPE_OK && maximum[1] == -minimum[1]);
+  CHECK(airshape_bounding_box(c, "VTP", minimum, maximum) == AIRSHAPE_OK && minimum[2] > 0);
+  int component_segments = -1;
+  CHECK(airshape_wing_component_segment_count(c, 1, &component_segments) == AIRSHAPE_OK && component_segments == 0);
+
+  /* Bad arguments: statuses and messages, and the handle goes on working. */
+  CHECK(airshape_wing_upper_point(c, 1, 1, 1.5, 0.3, point) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(strstr(airshape_last_error(), "eta") != NULL);
+  CHECK(airshape_wing_volume(c, 9, &volume) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(airshape_component_segment_to_segment(c, 1, 1, 0.5, 0.5, NULL, &eta, &xsi) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(airshape_query(c, "not json", &text) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(airshape_wing_volume(c, 1, &volume) == AIRSHAPE_OK);
+  airshape_close(c);
+}
+
+static void editing_and_exporting(const char* folder) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(airliner, &c) == AIRSHAPE_OK);
+  const char* chord =
+      "/cpacs/vehicles/aircraft/model/wings/wing[@uID='HTP']/sections/section[2]/elements/element/"
+      "transformation/scaling/x";
+  double before = 0, after = 0;
+  CHECK(airshape_wing_volume(c, 2, &before) == AIRSHAPE_OK);
+  CHECK(airshape_set_value(c, chord, "wide") == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(airshape_set_value(c, chord, "2.8") == AIRSHAPE_OK);
+  char* value = NULL;
+  CHECK(airshape_get_value(c, chord, &value) == AIRSHAPE_OK && strcmp(value, "2.8") == 0);
+  airshape_free(value);
+  CHECK(airshape_wing_volume(c, 2, &after) == AIRSHAPE_OK && after > before);
+  size_t built = 0, reused = 0, invalidated = 0;
+  CHECK(airshape_cache_statistics(c, &built, &reused, &invalidated) == AIRSHAPE_OK && invalidated > 0);
+
+  char path[1024];
+  snprintf(path, sizeof path, "%s/htp.stl", folder);
+  CHECK(airshape_export(c, path, "HTP", 1, 0, 0, 0) == AIRSHAPE_OK);
+  snprintf(path, sizeof path, "%s/no/such/folder/x.step", folder);
+  CHECK(airshape_export(c, path, NULL, 0, 0, 0, 0) == AIRSHAPE_WRITE_FAILED);
+  snprintf(path, sizeof path, "%s/edited.xml", folder);
+  CHECK(airshape_save(c, path) == AIRSHAPE_OK);
+  airshape_close(c);
+  CHECK(airshape_open(path, &c) == AIRSHAPE_OK);
+  CHECK(airshape_wing_volume(c, 2, &before) == AIRSHAPE_OK && fabs(before - after) < 1e-12 * after);
+  airshape_close(c);
+}
+
+struct job {
+  airshape_configuration* shared;
+  double own[20][3], through_shared[20][3];
+  airshape_status status;
+};
+
+static void* work(void* argument) {
+  struct job* job = argument;
+  airshape_configuration* own = NULL;
+  job->status = airshape_open(airliner, &own);
+  for (int i = 0; i < 20 && job->status == AIRSHAPE_OK; ++i) {
+    job->status = airshape_wing_upper_point(own, 1, 2, i / 19.0, 0.4, job->own[i]);
+    if (job->status == AIRSHAPE_OK)
+      job->status = airshape_wing_upper_point(job->shared, 1, 2, i / 19.0, 0.4, job->through_shared[i]);
+  }
+  airshape_close(own);
+  return NULL;
+}
+
+static void handles_work_from_several_threads(void) {
+  airshape_configuration* shared = NULL;
+  CHECK(airshape_open(airliner, &shared) == AIRSHAPE_OK);
+  struct job jobs[4];
+  pthread_t threads[4];
+  for (int t = 0; t < 4; ++t) {
+    jobs[t].shared = shared;
+    pthread_create(&threads[t], NULL, work, &jobs[t]);
+  }
+  for (int t = 0; t < 4; ++t) pthread_join(threads[t], NULL);
+  for (int t = 0; t < 4; ++t) {
+    CHECK(jobs[t].status == AIRSHAPE_OK);
+    CHECK(memcmp(jobs[t].own, jobs[0].own, sizeof jobs[t].own) == 0);
+    CHECK(memcmp(jobs[t].through_shared, jobs[0].own, sizeof jobs[t].own) == 0);
+  }
+  airshape_close(shared);
+}
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    fprintf(stderr, "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER\n");
+    return 2;
+  }
+  airliner = argv[1];
+  bad_input_gives_statuses();
+  typed_ops_agree_with_the_query();
+  editing_and_exporting(argv[2]);
+  handles_work_from_several_threads();
+  if (failures == 0) printf("c_api_test: all checks passed\n");
+  return failures == 0 ? 0 : 1;
+}
