@@ -54,6 +54,11 @@ airshape_status airshape_query(airshape_configuration* configuration, const char
 /* Editing by XPath (docs/python.md#editing): what depends on the edit is rebuilt on next use. */
 airshape_status airshape_get_value(airshape_configuration* configuration, const char* xpath, char** value);
 airshape_status airshape_set_value(airshape_configuration* configuration, const char* xpath, const char* value);
+/* Inserts XML elements under the element at parent_xpath, before its position-th child
+ * element (1-based; 0 appends); removes an element. Refused edits change nothing. */
+airshape_status airshape_insert_xml(airshape_configuration* configuration, const char* parent_xpath, const char* xml,
+                                    int position);
+airshape_status airshape_remove(airshape_configuration* configuration, const char* xpath);
 airshape_status airshape_cache_statistics(airshape_configuration* configuration, size_t* built, size_t* reused,
                                           size_t* invalidated);
 

@@ -206,6 +206,27 @@ airshape_status airshape_set_value(airshape_configuration* configuration, const 
   });
 }
 
+airshape_status airshape_insert_xml(airshape_configuration* configuration, const char* parent_xpath, const char* xml,
+                                    int position) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(parent_xpath, "parent_xpath");
+    require(xml, "xml");
+    if (position < 0) throw Error(ErrorCode::InvalidArgument, "position must not be negative");
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    configuration->configuration.insertXml(parent_xpath, xml, static_cast<std::size_t>(position));
+  });
+}
+
+airshape_status airshape_remove(airshape_configuration* configuration, const char* xpath) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(xpath, "xpath");
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    configuration->configuration.remove(xpath);
+  });
+}
+
 airshape_status airshape_cache_statistics(airshape_configuration* configuration, size_t* built, size_t* reused,
                                           size_t* invalidated) {
   return guarded([&] {

@@ -166,6 +166,28 @@ PYBIND11_MODULE(_airshape, m) {
           },
           py::arg("xpath"), py::arg("value"), "Sets a value by XPath; what depends on it is rebuilt on next use.")
       .def(
+          "xml",
+          [](PyConfiguration& self, const std::string& xpath) {
+            const std::lock_guard<std::mutex> guard(self.lock);
+            return self.configuration.xmlOf(xpath);
+          },
+          py::arg("xpath"), "The element at an XPath with all it holds, as XML text.")
+      .def(
+          "insert",
+          [](PyConfiguration& self, const std::string& parent, const std::string& xml, std::size_t position) {
+            const std::lock_guard<std::mutex> guard(self.lock);
+            self.configuration.insertXml(parent, xml, position);
+          },
+          py::arg("parent"), py::arg("xml"), py::arg("position") = 0,
+          "Inserts XML elements under the element at `parent`, before its position-th child (1-based; 0 appends).")
+      .def(
+          "remove",
+          [](PyConfiguration& self, const std::string& xpath) {
+            const std::lock_guard<std::mutex> guard(self.lock);
+            self.configuration.remove(xpath);
+          },
+          py::arg("xpath"), "Removes the element at an XPath with all it holds.")
+      .def(
           "count",
           [](PyConfiguration& self, const std::string& xpath) {
             const std::lock_guard<std::mutex> guard(self.lock);

@@ -91,28 +91,82 @@ void Configuration::setValue(const std::string& xpath, const std::string& value)
     else
       target.element->setAttribute(xml::toXml(target.attribute).c_str(), xml::toXml(text).c_str());
   };
+  applyEdit([&] { write(value); }, [&] { write(previous); }, xml::pathOf(*target.element), xpath);
+}
+
+std::string Configuration::xmlOf(const std::string& xpath) const {
+  const xml::XPathTarget target = xml::resolveXPath(*document_.root(), xpath);
+  if (!target.attribute.empty()) throw Error(ErrorCode::InvalidArgument, "XPath " + xpath + ": names an attribute");
+  std::string text = xml::serialized(*target.element);
+  if (text.rfind("<?xml", 0) == 0) text.erase(0, text.find("?>") + 2);  // no declaration for a fragment
+  return text;
+}
+
+void Configuration::insertXml(const std::string& parentXPath, const std::string& fragment, std::size_t position) {
+  xercesc::DOMElement& parent = *xml::resolveXPath(*document_.root(), parentXPath).element;
+  const xml::Document parsed = xml::Document::fromString("<fragment>" + fragment + "</fragment>", "the XML to insert");
+  xercesc::DOMNode* before = nullptr;
+  if (position > 0) {
+    before = xml::firstElement(parent);
+    for (std::size_t k = 1; k < position && before != nullptr; ++k) before = xml::nextElement(*before);
+    if (before == nullptr)
+      throw Error(ErrorCode::InvalidArgument,
+                  "XPath " + parentXPath + ": has fewer than " + std::to_string(position) + " child elements");
+  }
+  std::vector<xercesc::DOMNode*> inserted;
+  for (xercesc::DOMElement* element = xml::firstElement(*parsed.root()); element != nullptr;
+       element = xml::nextElement(*element))
+    inserted.push_back(document_.dom().importNode(element, true));
+  if (inserted.empty()) throw Error(ErrorCode::InvalidArgument, "the XML to insert holds no element");
+  applyEdit(
+      [&] {
+        for (xercesc::DOMNode* node : inserted) parent.insertBefore(node, before);
+      },
+      [&] {
+        for (xercesc::DOMNode* node : inserted) parent.removeChild(node)->release();
+      },
+      xml::pathOf(parent), parentXPath);
+}
+
+void Configuration::remove(const std::string& xpath) {
+  const xml::XPathTarget target = xml::resolveXPath(*document_.root(), xpath);
+  if (!target.attribute.empty()) throw Error(ErrorCode::InvalidArgument, "XPath " + xpath + ": names an attribute");
+  if (target.element == document_.root()) throw Error(ErrorCode::InvalidArgument, "cannot remove the root element");
+  xercesc::DOMNode* parent = target.element->getParentNode();
+  xercesc::DOMNode* next = target.element->getNextSibling();
+  applyEdit([&] { parent->removeChild(target.element); }, [&] { parent->insertBefore(target.element, next); }, "",
+            xpath);
+  target.element->release();
+}
+
+void Configuration::applyEdit(const std::function<void()>& change, const std::function<void()>& undo,
+                              const std::string& checkedPath, const std::string& what) {
   // Problems name paths with [1] on every step, pathOf only where siblings share a name.
   const auto withoutFirstPositions = [](std::string path) {
     for (std::size_t at = path.find("[1]"); at != std::string::npos; at = path.find("[1]", at)) path.erase(at, 3);
     return path;
   };
-  const std::string edited = withoutFirstPositions(xml::pathOf(*target.element));
+  const std::string checked = withoutFirstPositions(checkedPath);
   const auto problemsThere = [&] {
     std::set<std::string> messages;
+    if (checked.empty()) return messages;
     for (const Problem& problem : schemaProblems_)
-      if (withoutFirstPositions(problem.xpath).rfind(edited, 0) == 0) messages.insert(problem.message);
+      if (withoutFirstPositions(problem.xpath).rfind(checked, 0) == 0) messages.insert(problem.message);
     return messages;
   };
   const std::set<std::string> problemsBefore = problemsThere();
+  const std::size_t uidProblemsBefore = uids_.problems().size();
   if (fingerprints_.empty()) fingerprints_ = model::componentFingerprints(*this);
-  write(value);
+  change();
   try {
     load();
     for (const std::string& problem : problemsThere())
       if (problemsBefore.count(problem) == 0)
-        throw Error(ErrorCode::InvalidArgument, "'" + value + "' refused: " + problem, document_.source(), xpath);
+        throw Error(ErrorCode::InvalidArgument, "refused: " + problem, document_.source(), what);
+    if (uids_.problems().size() > uidProblemsBefore)
+      throw Error(ErrorCode::InvalidArgument, "refused: " + uids_.problems().back().message, document_.source(), what);
   } catch (...) {
-    write(previous);
+    undo();
     load();
     throw;
   }

@@ -117,6 +117,24 @@ static void editing_and_exporting(const char* folder) {
   size_t built = 0, reused = 0, invalidated = 0;
   CHECK(airshape_cache_statistics(c, &built, &reused, &invalidated) == AIRSHAPE_OK && invalidated > 0);
 
+  /* The HTP's outer segment out and back in. */
+  const char* segment = "/cpacs/vehicles/aircraft/model/wings/wing[@uID='HTP']/segments/segment";
+  char* uid = NULL;
+  int segments = 0;
+  CHECK(airshape_get_value(c, "/cpacs/vehicles/aircraft/model/wings/wing[@uID='HTP']/segments/segment/@uID", &uid) ==
+        AIRSHAPE_OK);
+  CHECK(uid != NULL && strcmp(uid, "HTP_Seg1") == 0);
+  airshape_free(uid);
+  CHECK(airshape_remove(c, segment) == AIRSHAPE_OK);
+  CHECK(airshape_wing_segment_count(c, 2, &segments) == AIRSHAPE_OK && segments == 0);
+  CHECK(airshape_insert_xml(c, "/cpacs/vehicles/aircraft/model/wings/wing[@uID='HTP']/segments",
+                            "<segment uID=\"HTP_Seg1\"><name>back</name><fromElementUID>HTP_S1_E</fromElementUID>"
+                            "<toElementUID>HTP_S2_E</toElementUID></segment>",
+                            0) == AIRSHAPE_OK);
+  CHECK(airshape_wing_segment_count(c, 2, &segments) == AIRSHAPE_OK && segments == 1);
+  CHECK(airshape_insert_xml(c, "/cpacs/vehicles/aircraft/model/wings", "<wing", 0) == AIRSHAPE_NOT_XML);
+  CHECK(airshape_remove(c, "/cpacs/vehicles/aircraft/model/wings/wing[9]") == AIRSHAPE_INVALID_ARGUMENT);
+
   char path[1024];
   snprintf(path, sizeof path, "%s/htp.stl", folder);
   CHECK(airshape_export(c, path, "HTP", 1, 0, 0, 0) == AIRSHAPE_OK);

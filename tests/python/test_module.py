@@ -76,6 +76,26 @@ def test_editing_rebuilds_only_the_edited_wing(config):
     assert wing.volume == pytest.approx(before[0], rel=1e-12)
 
 
+def test_sections_and_segments_are_removed_and_added(config):
+    wing = config.wings["Wing"]
+    volume, fuselage_volume = wing.volume, config.fuselages[0].volume
+    outer = wing.segments[1], wing.positionings[2], wing.sections[2]
+    saved = [node.xml for node in outer]
+    with pytest.raises(airshape.ArgumentError):  # the outer segment still refers to it
+        wing.sections[2].remove()
+    for node in outer:
+        node.remove()
+    assert (wing.segment_count, wing.section_count) == (1, 2)
+    assert wing.volume < volume
+    wing.sections.append(saved[2])
+    wing.positionings.append(saved[1])
+    wing.segments.append(saved[0])
+    assert (wing.segment_count, wing.section_count) == (2, 3)
+    assert wing.volume == pytest.approx(volume, rel=1e-12)
+    assert config.fuselages[0].volume == fuselage_volume
+    assert config.cache_statistics()["builds_by_key"]["fuselage-geometry:Fuselage"] == 1
+
+
 def test_a_refused_edit_raises_with_the_path_and_changes_nothing(config):
     node = config.wings["Wing"].sections[0].elements[0].transformation.scaling
     with pytest.raises(airshape.ArgumentError) as refused:

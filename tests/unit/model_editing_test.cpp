@@ -109,5 +109,31 @@ TEST_F(ModelEditing, EditsOfTheTypedModelInvalidateToo) {
   EXPECT_EQ(configuration.value("/cpacs/vehicles/aircraft/model/wings/wing[2]/transformation/scaling/x"), "3");
 }
 
+TEST_F(ModelEditing, ElementsAreAddedAndRemoved) {
+  buildAll();
+  const std::string wings = "/cpacs/vehicles/aircraft/model/wings";
+  configuration.remove(wings + "/wing[@uID='V']");
+  EXPECT_LT(configuration.components().find("V"), 0);
+  EXPECT_FALSE(configuration.uids().contains("V"));
+  configuration.insertXml(wings, R"(<wing uID="T"><name>t</name><parentUID>F</parentUID><transformation/>
+    <sections><section uID="TS"><name>s</name><elements><element uID="TE"><name>e</name><airfoilUID>A</airfoilUID>
+    </element></elements></section></sections></wing>)",
+                          1);
+  EXPECT_EQ(configuration.value(wings + "/wing[1]/@uID"), "T");
+  EXPECT_GE(configuration.components().find("T"), 0);
+  buildAll();
+  EXPECT_EQ(builds("W"), 1u);  // neither edit touched W or F
+  EXPECT_EQ(builds("F"), 1u);
+  EXPECT_EQ(builds("V"), 2u);  // gone, then asked for again: built anew
+
+  // A repeated uID, a reference to nothing and broken XML are refused and change nothing.
+  EXPECT_THROW(configuration.insertXml(wings, R"(<wing uID="W"><name>again</name></wing>)"), Error);
+  EXPECT_THROW(configuration.remove("/cpacs/vehicles/profiles/wingAirfoils/wingAirfoil"), Error);  // W uses it
+  EXPECT_THROW(configuration.insertXml(wings, "<wing>"), Error);
+  EXPECT_EQ(configuration.value(wings + "/wing[2]/@uID"), "W");
+  EXPECT_EQ(configuration.value("/cpacs/vehicles/profiles/wingAirfoils/wingAirfoil/@uID"), "A");
+  EXPECT_THROW(configuration.value(wings + "/wing[3]"), Error);
+}
+
 }  // namespace
 }  // namespace airshape

@@ -84,6 +84,15 @@ class Node:
         """The value of an XML attribute of this element (uID, symmetry, ...)."""
         return self._config.value(f"{self._xpath}/@{name}")
 
+    @property
+    def xml(self) -> str:
+        """The element with all it holds, as XML text (to copy it, say)."""
+        return self._config._core.xml(self._xpath)
+
+    def remove(self) -> None:
+        """Removes the element; remove first what refers to it (a segment before its section)."""
+        self._config.remove(self._xpath)
+
     def __repr__(self) -> str:
         return f"Node({self._xpath!r})"
 
@@ -108,8 +117,34 @@ class NodeList(Sequence[Node]):
             raise ArgumentError(f"index {index} is out of range ({count} elements at {self._xpath})")
         return Node(self._config, f"{self._xpath}[{index + 1}]")
 
+    def append(self, xml: str) -> None:
+        """Adds an element (XML text, e.g. a changed copy of another's .xml) after the last."""
+        self.insert(len(self), xml)
+
+    def insert(self, index: int, xml: str) -> None:
+        """Adds an element before the index-th (0-based) of this list."""
+        parent, _, name = self._xpath.rpartition("/")
+        count = len(self)
+        if not 0 <= index <= count:
+            raise ArgumentError(f"index {index} is out of range ({count} elements at {self._xpath})")
+        position = 0
+        if index < count:  # the position of the index-th element among all the parent's children
+            children = [node.tag for node in _children(self._config, parent)]
+            seen = -1
+            for position, tag in enumerate(children, start=1):
+                seen += tag == name
+                if seen == index:
+                    break
+        self._config.insert(parent, xml, position)
+
     def __repr__(self) -> str:
         return f"NodeList({self._xpath!r}, {len(self)} elements)"
+
+
+def _children(config: "Configuration", xpath: str):
+    """The child elements of an element (for positions among them)."""
+    import xml.etree.ElementTree as ElementTree
+    return list(ElementTree.fromstring(config._core.xml(xpath)))
 
 
 class _Component:
@@ -285,6 +320,16 @@ class Configuration:
         """Sets a value by XPath; raises ArgumentError (and changes nothing) for a value the
         schema refuses there or a path that addresses nothing."""
         self._core.set(xpath, _text(value))
+
+    def insert(self, parent_xpath: str, xml: str, position: int = 0) -> None:
+        """Inserts XML elements under the element at parent_xpath, before its position-th
+        child element (1-based; 0 appends). Raises (and changes nothing) when the result
+        would not be a usable model: a repeated uID, a reference to nothing, a cycle."""
+        self._core.insert(parent_xpath, xml, position)
+
+    def remove(self, xpath: str) -> None:
+        """Removes the element at an XPath with all it holds (same checks as insert)."""
+        self._core.remove(xpath)
 
     def node(self, xpath: str) -> Node:
         """The element at an XPath, for reading and editing by attribute names."""

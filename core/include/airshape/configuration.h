@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -76,6 +77,16 @@ class Configuration {
   /// for a number, say), or one that breaks the model (a parentUID cycle), is an Error and
   /// the document is left as it was.
   void setValue(const std::string& xpath, const std::string& value);
+  /// The element an XPath addresses, with all it holds, as XML text (to copy it, say).
+  std::string xmlOf(const std::string& xpath) const;
+  /// Inserts the elements of an XML fragment (one or more elements, e.g. a <section> with
+  /// its elements) as children of the element an XPath addresses, before its `position`-th
+  /// child element (1-based; 0 appends). The fragment must be well-formed and leave the
+  /// document usable (new uIDs unique, uIDrefs resolvable, no cycle); otherwise Error and
+  /// the document is left as it was.
+  void insertXml(const std::string& parentXPath, const std::string& fragment, std::size_t position = 0);
+  /// Removes the element an XPath addresses, with all it holds; the same checks apply.
+  void remove(const std::string& xpath);
   /// After editing the typed model (cpacs()) directly: writes it into the document and
   /// brings uIDs, components and cache up to date. The typed model is kept as it is.
   void modelChanged();
@@ -89,6 +100,11 @@ class Configuration {
   /// Invalidates in the cache what was built for components whose fingerprint changed
   /// since the last edit (and for those attached below them).
   void invalidateChangedComponents();
+  /// Applies a change to the document, reads the model anew and invalidates what depends
+  /// on it; `undo` restores the document when the result is refused. `checkedPath` names
+  /// the element whose new schema problems refuse the change ("" for none).
+  void applyEdit(const std::function<void()>& change, const std::function<void()>& undo, const std::string& checkedPath,
+                 const std::string& what);
 
   xml::Document document_;
   std::vector<graph::ComponentLocation> locations_;

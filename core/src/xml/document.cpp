@@ -116,7 +116,9 @@ DOMDocument& Document::dom() const { return *impl_->parser->getDocument(); }
 
 DOMElement* Document::root() const { return dom().getDocumentElement(); }
 
-std::string Document::toString() const {
+std::string Document::toString() const { return serialized(dom()); }
+
+std::string serialized(const DOMNode& node) {
   DOMImplementation* implementation = DOMImplementationRegistry::getDOMImplementation(u"LS");
   std::unique_ptr<DOMLSSerializer, void (*)(DOMLSSerializer*)> serializer(
       static_cast<DOMImplementationLS*>(implementation)->createLSSerializer(),
@@ -126,7 +128,7 @@ std::string Document::toString() const {
   MemBufFormatTarget target;
   output->setByteStream(&target);
   output->setEncoding(u"UTF-8");
-  serializer->write(&dom(), output.get());
+  serializer->write(&node, output.get());
   return std::string(reinterpret_cast<const char*>(target.getRawBuffer()), target.getLen());
 }
 

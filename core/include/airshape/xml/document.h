@@ -8,6 +8,7 @@
 XERCES_CPP_NAMESPACE_BEGIN
 class DOMDocument;
 class DOMElement;
+class DOMNode;
 XERCES_CPP_NAMESPACE_END
 
 namespace airshape::xml {
@@ -42,5 +43,8 @@ class Document {
   std::unique_ptr<Impl> impl_;
   std::string source_;
 };
+
+/// A node (a whole document, or an element with all it holds) as UTF-8 XML text.
+std::string serialized(const xercesc::DOMNode& node);
 
 }  // namespace airshape::xml
