@@ -11,14 +11,7 @@ inline std::string sharedCpacs(const std::string& name) {
   return std::string(AIRSHAPE_SHARED_DATA) + "/data/cpacs/" + name;
 }
 
-inline plugin::PluginHost& host() {
-  static plugin::PluginHost loaded = [] {
-    plugin::PluginHost h;
-    h.loadDefaultPlugins();
-    return h;
-  }();
-  return loaded;
-}
+inline plugin::PluginHost& host() { return plugin::processPlugins(); }
 
 /// Opens a file as the airshape command does: the plugins' component types and solids.
 inline Configuration openWithPlugins(const std::string& path) {

@@ -31,14 +31,7 @@ namespace {
 
 thread_local std::string lastError;
 
-airshape::plugin::PluginHost& host() {
-  static airshape::plugin::PluginHost loaded = [] {
-    airshape::plugin::PluginHost h;
-    h.loadDefaultPlugins();
-    return h;
-  }();
-  return loaded;
-}
+airshape::plugin::PluginHost& host() { return airshape::plugin::processPlugins(); }
 
 template <class Body>
 airshape_status guarded(Body&& body) {

@@ -20,16 +20,7 @@ using airshape::query::Json;
 
 namespace {
 
-/// The plugins, loaded once per process from the core library's folder and
-/// AIRSHAPE_PLUGIN_PATH.
-airshape::plugin::PluginHost& host() {
-  static airshape::plugin::PluginHost loaded = [] {
-    airshape::plugin::PluginHost h;
-    h.loadDefaultPlugins();
-    return h;
-  }();
-  return loaded;
-}
+airshape::plugin::PluginHost& host() { return airshape::plugin::processPlugins(); }
 
 /// A configuration opened for Python: the configuration and a lock, since Python threads
 /// may share one object.

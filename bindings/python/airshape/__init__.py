@@ -170,6 +170,12 @@ class _Component:
             raise AttributeError(name)
         return getattr(self.node, name)
 
+    def _points(self, op: str, segment: Union[int, str], first: str, a: Any, second: str, b: Any) -> np.ndarray:
+        """A point op over two parameter arrays (scalars broadcast), in one call."""
+        a, b = np.broadcast_arrays(np.asarray(a, dtype=float).ravel(), np.asarray(b, dtype=float).ravel())
+        return self._config._core.points(op, {self._kind: self.uid, "segment": segment}, first,
+                                         np.ascontiguousarray(a), second, np.ascontiguousarray(b))
+
     @property
     def segment_count(self) -> int:
         return self._op("segment_count")
@@ -209,9 +215,7 @@ class Wing(_Component):
     def points(self, side: str, segment: Union[int, str], eta: Any, xsi: Any) -> np.ndarray:
         """Points of one side ("upper", "lower" or "chord") for arrays of eta and xsi
         (scalars broadcast): an (n, 3) array, computed in one call."""
-        eta, xsi = np.broadcast_arrays(np.asarray(eta, dtype=float).ravel(), np.asarray(xsi, dtype=float).ravel())
-        return self._config._core.points(f"wing_{side}_point", {"wing": self.uid, "segment": segment}, "eta",
-                                         np.ascontiguousarray(eta), "xsi", np.ascontiguousarray(xsi))
+        return self._points(f"wing_{side}_point", segment, "eta", eta, "xsi", xsi)
 
     @property
     def section_count(self) -> int:
@@ -248,9 +252,7 @@ class Fuselage(_Component):
 
     def points(self, segment: Union[int, str], eta: Any, zeta: Any) -> np.ndarray:
         """Points for arrays of eta and zeta (scalars broadcast): an (n, 3) array."""
-        eta, zeta = np.broadcast_arrays(np.asarray(eta, dtype=float).ravel(), np.asarray(zeta, dtype=float).ravel())
-        return self._config._core.points("fuselage_point", {"fuselage": self.uid, "segment": segment}, "eta",
-                                         np.ascontiguousarray(eta), "zeta", np.ascontiguousarray(zeta))
+        return self._points("fuselage_point", segment, "eta", eta, "zeta", zeta)
 
     def circumference(self, segment: Union[int, str], eta: float) -> float:
         return self._op("circumference", segment=segment, eta=eta)

@@ -139,4 +139,13 @@ std::string PluginHost::pluginFor(const std::string& nodeType) const {
   return {};
 }
 
+PluginHost& processPlugins() {
+  static PluginHost loaded = [] {
+    PluginHost host;
+    host.loadDefaultPlugins();
+    return host;
+  }();
+  return loaded;
+}
+
 }  // namespace airshape::plugin

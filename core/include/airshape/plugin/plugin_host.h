@@ -53,4 +53,8 @@ class PluginHost {
   ComponentShapes shapes_;
 };
 
+/// The plugins of this process for the bindings and tools that need one set: the default
+/// plugins (loadDefaultPlugins), loaded on first use, safely from any thread.
+PluginHost& processPlugins();
+
 }  // namespace airshape::plugin
