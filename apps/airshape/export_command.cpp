@@ -124,7 +124,9 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   const Clock::time_point start = Clock::now();
   const Configuration configuration = openConfiguration(options.input, host);
   if (!options.quiet) options.exportOptions.progress = printProgress;
+  options.exportOptions.skipFailed = true;  // named components (--components) still fail the export
   const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);
+  for (const std::string& leftOut : scene.leftOut) std::cerr << "export: left out " << leftOut << '\n';
   for (const std::string& output : options.outputs) {
     const exporting::Format format = exporting::formatOfPath(output);
     const Clock::time_point writing = Clock::now();
@@ -139,7 +141,7 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
     std::cout << "total time " << std::fixed << std::setprecision(2)
               << std::chrono::duration<double>(Clock::now() - start).count() << " s\n";
   }
-  return kSuccess;
+  return scene.leftOut.empty() ? kSuccess : kProblemsFound;
 }
 
 }  // namespace airshape::cli

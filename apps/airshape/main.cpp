@@ -59,6 +59,8 @@ const std::map<std::string, Command>& commands() {
         "               largest angle between normals in radians (default 0.2)\n"
         "--force        replace existing outputs       --quiet  no progress or summary\n"
         "Each file is written under a temporary name and moved into place when complete.\n"
+        "Components that fail to build are left out with a line on stderr (exit status 1),\n"
+        "unless named with --components (then the export fails).\n"
         "Prints progress on stderr and a summary (volume and area per solid) on stdout."}},
       {"gordon",
        {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep",
@@ -75,7 +77,7 @@ void printUsage(std::ostream& out) {
   out << "airshape: CPACS aircraft descriptions to exact B-spline geometry\n\nusage:\n";
   for (const auto& [name, command] : commands()) out << "  " << command.usage << '\n';
   out << "  airshape help [COMMAND]\n\nPlugins are loaded from the core library's folder and AIRSHAPE_PLUGIN_PATH.\n"
-         "Exit status: 0 success, 1 problems found (validate), 2 error.\n";
+         "Exit status: 0 success, 1 problems found (validate, build, export), 2 error.\n";
 }
 
 int runHelp(const Arguments& arguments) {

@@ -63,8 +63,10 @@ std::optional<std::string> buildComponent(const Configuration& configuration, co
 }
 
 /// Builds the selected components, independent ones in parallel, reporting progress.
-void buildSelected(const Configuration& configuration, const std::vector<std::size_t>& selected,
-                   const ExportOptions& options, Clock::time_point start) {
+/// Returns those that failed, in build order, with why.
+std::vector<std::pair<std::size_t, std::string>> buildSelected(const Configuration& configuration,
+                                                               const std::vector<std::size_t>& selected,
+                                                               const ExportOptions& options, Clock::time_point start) {
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<std::optional<std::string>> failures(graph.components().size());
   std::mutex reporting;
@@ -75,24 +77,34 @@ void buildSelected(const Configuration& configuration, const std::vector<std::si
     const std::lock_guard<std::mutex> lock(reporting);
     ++built;
     if (options.progress)
-      options.progress(
-          {built, selected.size(), std::chrono::duration<double>(Clock::now() - start).count(), "built " + uid});
+      options.progress({built, selected.size(), std::chrono::duration<double>(Clock::now() - start).count(),
+                        (failures[index] ? "failed " : "built ") + uid});
   });
+  std::vector<std::pair<std::size_t, std::string>> failed;
   for (std::size_t index : selected)
-    if (failures[index])
-      throw Error(ErrorCode::InvalidModel,
-                  "component '" + graph.components()[index].uid + "' could not be built: " + *failures[index],
-                  configuration.source(), graph.components()[index].xpath);
+    if (failures[index]) failed.emplace_back(index, *failures[index]);
+  return failed;
+}
+
+Error buildFailure(const Configuration& configuration, std::size_t index, const std::string& why) {
+  const graph::Component& component = configuration.components().components()[index];
+  return Error(ErrorCode::InvalidModel, "component '" + component.uid + "' could not be built: " + why,
+               configuration.source(), component.xpath);
 }
 
 /// An own copy of a named shape (new topology, shared curves and surfaces), so that
 /// triangulating it leaves the cached solid as it is.
 SceneComponent copied(const std::string& name, const NamedShape& shape) {
-  BRepBuilderAPI_Copy copy(shape.shape, false, false);
-  SceneComponent component{name, {copy.Shape(), {}}};
-  for (const auto& [faceName, face] : shape.faces)
-    component.shape.faces.emplace_back(faceName, TopoDS::Face(copy.ModifiedShape(face)));
-  return component;
+  try {
+    BRepBuilderAPI_Copy copy(shape.shape, false, false);
+    SceneComponent component{name, {copy.Shape(), {}}};
+    for (const auto& [faceName, face] : shape.faces)
+      component.shape.faces.emplace_back(faceName, TopoDS::Face(copy.ModifiedShape(face)));
+    return component;
+  } catch (const Standard_Failure& failure) {
+    throw Error(ErrorCode::InvalidModel,
+                "the solid of '" + name + "' could not be copied for export: " + failure.GetMessageString());
+  }
 }
 
 }  // namespace
@@ -100,17 +112,26 @@ SceneComponent copied(const std::string& name, const NamedShape& shape) {
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options) {
   const Clock::time_point start = Clock::now();
   const std::vector<std::size_t> selected = selectedComponents(configuration, options);
-  buildSelected(configuration, selected, options, start);
+  ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}};
+  std::vector<bool> failed(configuration.components().components().size(), false);
+  const auto failures = buildSelected(configuration, selected, options, start);
+  const bool skip = options.skipFailed && options.components.empty();
+  if (!failures.empty() && (!skip || failures.size() == selected.size()))  // nothing left to write
+    throw buildFailure(configuration, failures.front().first, failures.front().second);
+  for (const auto& [index, why] : failures) {
+    failed[index] = true;
+    scene.leftOut.push_back(configuration.components().components()[index].uid + ": " + why);
+  }
 
   std::vector<std::pair<std::string, const NamedShape*>> solids;
   for (std::size_t index : selected) {
+    if (failed[index]) continue;
     const std::string& uid = configuration.components().components()[index].uid;
     solids.emplace_back(uid, &configuration.shapes().namedShapeOf(configuration, uid));
     if (options.mirror && hasMirror(configuration, uid))
       solids.emplace_back(uid + " (mirrored)", &configuration.shapes().mirroredShapeOf(configuration, uid));
   }
 
-  ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}};
   if (options.fused) {
     if (options.progress)
       options.progress(

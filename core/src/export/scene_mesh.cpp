@@ -2,6 +2,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <IMeshTools_Parameters.hxx>
@@ -37,6 +38,19 @@ bool isTriangulated(const TopoDS_Shape& shape) {
   return true;
 }
 
+/// Meshes a component again, finer, while the mesher leaves faces without a triangulation:
+/// slivers (a rear cap a millimetre thin under a metre wide) defeat a deflection chosen for
+/// the whole component. The whole component, so that shared edges stay shared (closed).
+void triangulateFinerWhereNeeded(const SceneComponent& component, IMeshTools_Parameters parameters) {
+  for (int attempt = 0; attempt < 6 && !isTriangulated(component.shape.shape); ++attempt) {
+    parameters.Deflection *= 0.3;
+    BRepTools::Clean(component.shape.shape);
+    BRepMesh_IncrementalMesh mesher(component.shape.shape, parameters);
+  }
+  if (!isTriangulated(component.shape.shape))
+    throw Error(ErrorCode::InvalidModel, "a face of '" + component.name + "' could not be triangulated");
+}
+
 }  // namespace
 
 void triangulate(const ExportScene& scene, const ExportOptions& options) {
@@ -48,8 +62,7 @@ void triangulate(const ExportScene& scene, const ExportOptions& options) {
     parameters.Angle = options.angularDeflection;
     parameters.InParallel = true;
     BRepMesh_IncrementalMesh mesher(component.shape.shape, parameters);
-    if (!isTriangulated(component.shape.shape))
-      throw Error(ErrorCode::InvalidModel, "a face of '" + component.name + "' could not be triangulated");
+    triangulateFinerWhereNeeded(component, parameters);
   }
 }
 

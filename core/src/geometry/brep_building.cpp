@@ -2,11 +2,13 @@
 
 #include <cmath>
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <Bnd_Box.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -25,6 +27,8 @@ namespace {
 
 constexpr double kTolerance = 1e-7;
 constexpr double kSewingTolerance = 1e-6;
+/// A solid enclosing less than this fraction of its box diagonal cubed encloses nothing.
+constexpr double kEmptyVolume = 1e-12;
 
 }  // namespace
 
@@ -73,7 +77,13 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
   TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
   TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
-  if (!hasOutwardNormals(solid)) solid.Reverse();  // so that Boolean operations see the inside
+  const double volume = roughSignedVolumeOf(solid);
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box);
+  const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+  if (std::abs(volume) <= kEmptyVolume * size * size * size)
+    throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
+  if (volume < 0) solid.Reverse();  // outward normals, so that Boolean operations see the inside
   if (sewnFaces) {
     sewnFaces->clear();
     for (const TopoDS_Face& face : faces)

@@ -183,7 +183,7 @@ double signedVolume(const TopoDS_Shape& solid, Accuracy accuracy) {
 
 double volumeOf(const TopoDS_Shape& solid) { return std::abs(signedVolume(solid, Accuracy::Exact)); }
 
-bool hasOutwardNormals(const TopoDS_Shape& solid) { return signedVolume(solid, Accuracy::Rough) > 0; }
+double roughSignedVolumeOf(const TopoDS_Shape& solid) { return signedVolume(solid, Accuracy::Rough); }
 
 double areaOf(const TopoDS_Shape& faces) {
   double area = 0.0;

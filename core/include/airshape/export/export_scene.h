@@ -24,11 +24,14 @@ struct SceneComponent {
 struct ExportScene {
   std::string name;  ///< the configuration's file name, the STEP assembly's name
   std::vector<SceneComponent> components;
+  /// Components left out because they failed to build (with skipFailed): "uID: why".
+  std::vector<std::string> leftOut;
 };
 
 /// Builds the scene of a configuration. Throws Error naming the component when a selected
-/// uID names nothing, or when a component fails to build; components no plugin builds
-/// yet are left out unless selected by uID (then it is an error).
+/// uID names nothing, or when a component fails to build (unless skipFailed, and it was
+/// not named); components no plugin builds yet are left out unless selected by uID (then
+/// it is an error).
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options);
 
 }  // namespace airshape::exporting

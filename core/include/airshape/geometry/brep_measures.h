@@ -11,9 +11,10 @@ namespace airshape::geometry {
 /// 1e-9). A null shape measures 0.
 double volumeOf(const TopoDS_Shape& solid);
 
-/// Whether a closed solid's faces point outwards: the sign of its volume integrated roughly
-/// (two Gauss points per knot span), far cheaper than classifying points.
-bool hasOutwardNormals(const TopoDS_Shape& solid);
+/// A closed solid's volume integrated roughly (two Gauss points per knot span), with the
+/// sign of its orientation: positive when its faces point outwards. Far cheaper than
+/// classifying points, and close enough to tell an empty solid.
+double roughSignedVolumeOf(const TopoDS_Shape& solid);
 
 /// Area of faces: rectangular B-spline patches by Gauss–Legendre per knot span (2p + 4
 /// points per direction; the integrand is smooth there), other faces by OCCT's adaptive
