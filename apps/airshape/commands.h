@@ -24,5 +24,7 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host);
 int runGordon(const Arguments& arguments, plugin::PluginHost& host);
 int runBuild(const Arguments& arguments, plugin::PluginHost& host);
 int runExport(const Arguments& arguments, plugin::PluginHost& host);
+/// Loads the export module and runs `export` there (export_module.cpp).
+int runExportModule(const Arguments& arguments, plugin::PluginHost& host);
 
 }  // namespace airshape::cli

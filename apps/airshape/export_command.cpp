@@ -4,6 +4,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <boost/config.hpp>
+
 #include "airshape/error.h"
 #include "airshape/export/exporter.h"
 #include "airshape/geometry/brep_measures.h"
@@ -145,3 +147,9 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
 }
 
 }  // namespace airshape::cli
+
+// The entry the airshape command looks up when it loads this module (export_module.cpp).
+extern "C" BOOST_SYMBOL_EXPORT int airshape_run_export(const airshape::cli::Arguments& arguments,
+                                                       airshape::plugin::PluginHost& host) {
+  return airshape::cli::runExport(arguments, host);
+}

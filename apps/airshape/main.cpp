@@ -42,7 +42,7 @@ const std::map<std::string, Command>& commands() {
         "(BRepCheck); prints validity, volume and time per component. Exit status 1 if any\n"
         "fails or is invalid."}},
       {"export",
-       {runExport,
+       {runExportModule,
         "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"
         "                 [--deflection LINEAR[,ANGULAR]] [--force] [--quiet]",
         "Builds the components and writes them, in the format each OUT's extension names:\n"
