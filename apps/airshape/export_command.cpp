@@ -2,7 +2,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
 
 #include <boost/config.hpp>
 
@@ -27,14 +26,6 @@ struct ExportCommandOptions {
   bool quiet = false;
 };
 
-std::vector<std::string> commaSeparated(const std::string& list) {
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  for (std::string item; std::getline(stream, item, ',');)
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
-
 double positiveNumber(const std::string& text, const std::string& option) {
   std::size_t used = 0;
   double value = 0;
@@ -50,7 +41,7 @@ double positiveNumber(const std::string& text, const std::string& option) {
 
 /// --deflection LINEAR[,ANGULAR]: metres, and radians for the angle.
 void parseDeflection(const std::string& text, exporting::ExportOptions& options) {
-  const std::vector<std::string> parts = commaSeparated(text);
+  const std::vector<std::string> parts = exporting::splitAtCommas(text);
   if (parts.empty() || parts.size() > 2)
     throw Error(ErrorCode::InvalidArgument, "--deflection: expected LINEAR or LINEAR,ANGULAR, got '" + text + "'");
   options.linearDeflection = positiveNumber(parts[0], "--deflection");
@@ -65,7 +56,7 @@ ExportCommandOptions parseExportOptions(const Arguments& arguments) {
     if ((argument == "-o" || argument == "--output") && hasValue) {
       options.outputs.push_back(arguments[++i]);
     } else if (argument == "--components" && hasValue) {
-      options.exportOptions.components = commaSeparated(arguments[++i]);
+      options.exportOptions.components = exporting::splitAtCommas(arguments[++i]);
     } else if (argument == "--deflection" && hasValue) {
       parseDeflection(arguments[++i], options.exportOptions);
     } else if (argument == "--mirror") {

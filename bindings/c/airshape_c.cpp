@@ -4,7 +4,6 @@
 #include <cstring>
 #include <mutex>
 #include <new>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -237,11 +236,7 @@ airshape_status airshape_export(airshape_configuration* configuration, const cha
     require(configuration, "configuration");
     require(path, "path");
     airshape::exporting::ExportOptions options;
-    if (components != nullptr) {
-      std::stringstream list(components);
-      for (std::string uid; std::getline(list, uid, ',');)
-        if (!uid.empty()) options.components.push_back(uid);
-    }
+    if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
     options.mirror = mirror != 0;
     options.fused = fused != 0;
     options.linearDeflection = linear_deflection;

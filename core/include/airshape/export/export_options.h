@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,5 +37,14 @@ struct ExportOptions {
   /// Called as work goes on; may be empty.
   std::function<void(const ExportProgress&)> progress;
 };
+
+/// The items of a comma-separated list ("Wing,HTP" for `components`), empty ones dropped.
+inline std::vector<std::string> splitAtCommas(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  for (std::string item; std::getline(stream, item, ',');)
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
 
 }  // namespace airshape::exporting
