@@ -78,7 +78,7 @@ def test_wing_conformance_does_not_regress():
     passed, output = conformance_passed("cases-wing.json")
     # Not every case passes yet (NACA airfoils, rotor blades, guide-curve files beyond the
     # case tolerance; see docs/wing.md). This floor guards what works.
-    assert passed >= 522, output[-3000:]
+    assert passed >= 544, output[-3000:]
 
 
 def test_points_map_back_to_eta_and_xsi():
@@ -233,6 +233,8 @@ def test_naca_four_digit_airfoils(tmp_path):
                               {"op": "wing_chord_point", "wing": "Rect", "segment": 1, "eta": 0.0, "xsi": 1.0})
     area = 10 * 0.12 * (0.2969 * 2 / 3 - 0.1260 / 2 - 0.3516 / 3 + 0.2843 / 4 - 0.1036 / 5)
     chord, span = 2.0, 5.0
-    assert math.isclose(volume, area * chord * chord * span, rel_tol=1e-4), volume
+    # The sides are the reference's approximations (about 1e-5 of the chord, here 2.5e-4 of
+    # the thickness), so the volume is that close and no closer.
+    assert math.isclose(volume, area * chord * chord * span, rel_tol=1e-3), volume
     assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(le, [1.0, 0.0, 0.0])), le
     assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(te, [3.0, 0.0, 0.0])), te

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <BSplCLib.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -9,6 +10,7 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
+#include "airshape/geometry/chebyshev_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
@@ -30,18 +32,6 @@ Handle(Geom_BSplineCurve) piece(const Geom_BSplineCurve& curve, double from, dou
   return part;
 }
 
-/// A B-spline through dense samples of xsi -> point, parametrised by xsi.
-Handle(Geom_BSplineCurve) sampled(const std::function<gp_Pnt(double)>& side) {
-  constexpr int kCount = 200;
-  std::vector<gp_Pnt> points;
-  std::vector<double> parameters;
-  for (int i = 0; i <= kCount; ++i) {
-    parameters.push_back(static_cast<double>(i) / kCount);
-    points.push_back(side(parameters.back()));
-  }
-  return geometry::interpolateCurve(points, parameters, 3);
-}
-
 /// Where, between parameters a and b, the curve crosses the plane through `origin` with
 /// `normal`; nullopt when it does not cross strictly inside.
 std::optional<double> planeCrossing(const Geom_BSplineCurve& curve, double a, double b, const gp_Pnt& origin,
@@ -61,6 +51,51 @@ std::optional<double> planeCrossing(const Geom_BSplineCurve& curve, double a, do
   return 0.5 * (a + b);
 }
 
+/// A NACA four-digit airfoil: the standard thickness law about the standard camber line,
+/// the thickness law's last coefficient chosen so that the trailing edge has the given
+/// thickness (-0.1015 would give the classic 0.00252 of a NACA 0012; closed by default).
+class NacaFourDigit {
+ public:
+  NacaFourDigit(double camber, double camberAt, double thickness, double trailingEdge)
+      : camber_(camber),
+        camberAt_(camberAt),
+        thickness_(thickness),
+        a4_(thickness > 0.0 ? trailingEdge / (10.0 * thickness) - 0.1036 : 0.0) {}
+
+  double thickness() const { return thickness_; }
+
+  /// The point of the upper (sign 1) or lower (sign -1) side above chord station x.
+  gp_Pnt side(double x, double sign) const {
+    const auto [height, slope] = camberLine(x);
+    const double t = halfThickness(x), norm = std::sqrt(1.0 + slope * slope);
+    return gp_Pnt(x - sign * t * slope / norm, 0.0, height + sign * t / norm);
+  }
+
+  /// The chord station at side parameter xsi: x = (1 + e)·xsi²/(xsi + e) with e = 0.02 is
+  /// quadratic at the leading edge, which takes away the √x of the thickness law so that
+  /// the side is smooth in xsi, and close to xsi elsewhere. The reference library
+  /// parametrises its NACA sides the same way, and xsi of a point query depends on it.
+  static double chordwise(double xsi) {
+    constexpr double e = 0.02;
+    return (1.0 + e) * xsi * xsi / (xsi + e);
+  }
+
+ private:
+  double halfThickness(double x) const {
+    return 5.0 * thickness_ *
+           (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x + a4_ * x * x * x * x);
+  }
+
+  std::pair<double, double> camberLine(double x) const {  // height and slope
+    if (camber_ == 0.0 || camberAt_ == 0.0) return {0.0, 0.0};
+    const double q = x < camberAt_ ? camberAt_ * camberAt_ : (1 - camberAt_) * (1 - camberAt_);
+    const double height = x < camberAt_ ? 2 * camberAt_ * x - x * x : (1 - 2 * camberAt_) + 2 * camberAt_ * x - x * x;
+    return {camber_ / q * height, 2 * camber_ / q * (camberAt_ - x)};
+  }
+
+  double camber_, camberAt_, thickness_, a4_;
+};
+
 }  // namespace
 
 WingProfile WingProfile::fromDefinition(const schema::ProfileGeometryType& definition) {
@@ -78,42 +113,21 @@ WingProfile WingProfile::fromNaca(const xercesc::DOMElement& naca, const std::st
   const std::string code = codeElement ? xml::text(*codeElement) : "";
   if (code.size() != 4 || !std::all_of(code.begin(), code.end(), [](char c) { return c >= '0' && c <= '9'; }))
     throw Error(ErrorCode::InvalidModel, "only 4-digit NACA codes are supported (got '" + code + "')", {}, xpath);
-  const double camber = (code[0] - '0') / 100.0, camberAt = (code[1] - '0') / 10.0;
-  const double thickness = std::stoi(code.substr(2)) / 100.0;
   double trailingEdge = 0.0;  // closed unless a thickness is given
   if (const auto* te = xml::firstChild(naca, "trailingEdgeThickness"))
     trailingEdge = model::parseVector(xml::text(*te), xpath + "/trailingEdgeThickness").at(0);
-  if (!(thickness > 0.0)) throw Error(ErrorCode::InvalidModel, "a NACA airfoil needs a thickness", {}, xpath);
-  // The standard thickness law, its last coefficient set so that the trailing edge has the
-  // given thickness (-0.1015 gives the classic 0.00252 of a NACA 0012).
-  const double a4 = trailingEdge / (10.0 * thickness) - 0.1036;
-  auto halfThickness = [&](double x) {
-    return 5.0 * thickness *
-           (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x + a4 * x * x * x * x);
-  };
-  auto camberLine = [&](double x) {  // height and slope
-    if (camber == 0.0 || camberAt == 0.0) return std::make_pair(0.0, 0.0);
-    if (x < camberAt)
-      return std::make_pair(camber / (camberAt * camberAt) * (2 * camberAt * x - x * x),
-                            2 * camber / (camberAt * camberAt) * (camberAt - x));
-    const double q = (1 - camberAt) * (1 - camberAt);
-    return std::make_pair(camber / q * ((1 - 2 * camberAt) + 2 * camberAt * x - x * x),
-                          2 * camber / q * (camberAt - x));
-  };
-  // Cosine-spaced stations, dense at both edges; from the TE along the lower side to the LE
-  // and back along the upper side.
-  constexpr int kStations = 161;
-  std::vector<gp_Pnt> points;
-  for (int side : {-1, 1})
-    for (int i = 0; i < kStations; ++i) {
-      const int j = side < 0 ? kStations - 1 - i : i;
-      if (side > 0 && j == 0) continue;  // the LE once
-      const double x = 0.5 * (1.0 - std::cos(M_PI * j / (kStations - 1)));
-      const auto [yc, slope] = camberLine(x);
-      const double angle = std::atan(slope), t = halfThickness(x);
-      points.emplace_back(x - side * t * std::sin(angle), 0.0, yc + side * t * std::cos(angle));
-    }
-  return fromPoints(std::move(points), xpath);
+  const NacaFourDigit airfoil((code[0] - '0') / 100.0, (code[1] - '0') / 10.0, std::stoi(code.substr(2)) / 100.0,
+                              trailingEdge);
+  if (!(airfoil.thickness() > 0.0)) throw Error(ErrorCode::InvalidModel, "a NACA airfoil needs a thickness", {}, xpath);
+
+  WingProfile profile;
+  profile.blunt_ = trailingEdge > 0.0;
+  profile.leadingEdge_ = gp_Pnt(0, 0, 0);
+  profile.trailingEdge_ = gp_Pnt(1, 0, 0);
+  profile.approximateSides([airfoil](double xsi) { return airfoil.side(NacaFourDigit::chordwise(xsi), 1.0); },
+                           [airfoil](double xsi) { return airfoil.side(NacaFourDigit::chordwise(xsi), -1.0); }, 3);
+  profile.lowerXsiFromTrailingEdge_ = true;
+  return profile;
 }
 
 WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list, const std::string& xpath) {
@@ -238,16 +252,22 @@ WingProfile WingProfile::fromCst(const schema::Cst2DType& cst, const std::string
   profile.blunt_ = thickness > 0.0;
   profile.leadingEdge_ = gp_Pnt(0, 0, 0);
   profile.trailingEdge_ = gp_Pnt(1, 0, 0);
-  profile.upper_ = CstSide(cst.upperN1, cst.upperN2, model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0);
-  profile.lower_ =
-      CstSide(cst.lowerN1, cst.lowerN2, model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0);
-  profile.upperCurve_ = sampled(profile.upper_);
-  profile.lowerCurve_ = sampled(profile.lower_);
+  profile.approximateSides(
+      CstSide(cst.upperN1, cst.upperN2, model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0),
+      CstSide(cst.lowerN1, cst.lowerN2, model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0), 4);
   return profile;
+}
+
+void WingProfile::approximateSides(const Side& upper, const Side& lower, int degree) {
+  const geometry::ChebyshevSettings settings{degree, 1e-5, 10};
+  upperCurve_ = geometry::approximateByChebyshevPieces(upper, 0.0, 1.0, settings);
+  lowerCurve_ = geometry::approximateByChebyshevPieces(lower, 0.0, 1.0, settings);
+  upper_ = [curve = upperCurve_](double xsi) { return curve->Value(xsi); };
+  lower_ = [curve = lowerCurve_](double xsi) { return curve->Value(xsi); };
 }
 
 gp_Pnt WingProfile::upper(double xsi) const { return upper_(xsi); }
 
-gp_Pnt WingProfile::lower(double xsi) const { return lower_(xsi); }
+gp_Pnt WingProfile::lower(double xsi) const { return lower_(lowerXsiFromTrailingEdge_ ? 1.0 - xsi : xsi); }
 
 }  // namespace airshape::wing

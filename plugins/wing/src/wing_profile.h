@@ -18,12 +18,17 @@ namespace airshape::wing {
 /// a lower side (LE → lower TE end), plus the chord line. See docs/wing.md.
 class WingProfile {
  public:
+  /// One side as a function of its parameter xsi.
+  using Side = std::function<gp_Pnt(double)>;
+
   /// Builds a profile from its CPACS definition (point list or CST). Throws Error naming
   /// the profile's CPACS path for a definition that gives no airfoil.
   static WingProfile fromDefinition(const schema::ProfileGeometryType& definition);
 
   /// The point at normalised parameter xsi in [0, 1] of the upper (lower) side: 0 is the
-  /// leading edge, 1 the upper (lower) end of the trailing edge.
+  /// leading edge, 1 the upper (lower) end of the trailing edge. On the lower side of a
+  /// nacaProfile xsi runs the other way, from the trailing edge (0) to the leading edge (1),
+  /// as the reference library's point queries have it for that type.
   gp_Pnt upper(double xsi) const;
   gp_Pnt lower(double xsi) const;
 
@@ -39,16 +44,22 @@ class WingProfile {
   static WingProfile fromPointList(const schema::CurvePointListXYZType& points, const std::string& xpath);
   static WingProfile fromCst(const schema::Cst2DType& cst, const std::string& xpath);
   /// The reference library's nacaProfile (outside CPACS 3.5): a 4-digit NACA airfoil from
-  /// the standard thickness and camber laws, sampled densely and interpolated as a point list.
+  /// the standard thickness and camber laws, evaluated exactly along each side.
   static WingProfile fromNaca(const xercesc::DOMElement& naca, const std::string& xpath);
   /// An airfoil through points (any orientation), as a point list gives them.
   static WingProfile fromPoints(std::vector<gp_Pnt> points, const std::string& xpath);
 
+  /// Both sides of an analytic airfoil (CST, NACA) as the curves the reference library makes
+  /// of them: piecewise Chebyshev of the given degree, error 1e-5 of the chord. Points at a
+  /// given xsi lie on these curves, so they agree with the reference's.
+  void approximateSides(const Side& upper, const Side& lower, int degree);
+
   // Each side as a function of xsi (0 at the LE).
-  std::function<gp_Pnt(double)> upper_, lower_;
+  Side upper_, lower_;
   Handle(Geom_BSplineCurve) upperCurve_, lowerCurve_;
   gp_Pnt leadingEdge_, trailingEdge_;
   bool blunt_ = false;
+  bool lowerXsiFromTrailingEdge_ = false;
 };
 
 }  // namespace airshape::wing
