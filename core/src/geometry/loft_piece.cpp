@@ -31,12 +31,19 @@ Handle(Geom_BSplineCurve) alongV(const Geom_BSplineSurface& loft, double u, doub
 TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd) {
   double u0, u1, v0, v1;
   loft->Bounds(u0, u1, v0, v1);
-  // The face gets the piece of the surface it covers, not the whole loft trimmed: meshing,
-  // area integration and STEP export then only see the piece's own poles and knots.
-  // Segment keeps the parameters, so points on the face keep their (u, v).
-  Handle(Geom_BSplineSurface) piece = Handle(Geom_BSplineSurface)::DownCast(loft->Copy());
-  if (vStart > v0 || vEnd < v1) piece->Segment(u0, u1, vStart, vEnd);
-  return BRepBuilderAPI_MakeFace(piece, u0, u1, vStart, vEnd, kFaceTolerance).Face();
+  return surfacePartFace(loft, u0, u1, vStart, vEnd);
+}
+
+TopoDS_Face surfacePartFace(const Handle(Geom_BSplineSurface) & surface, double uStart, double uEnd, double vStart,
+                            double vEnd) {
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  // The face gets the piece of the surface it covers, not the whole surface trimmed:
+  // meshing, area integration and STEP export then only see the piece's own poles and
+  // knots. Segment keeps the parameters, so points on the face keep their (u, v).
+  Handle(Geom_BSplineSurface) piece = Handle(Geom_BSplineSurface)::DownCast(surface->Copy());
+  if (uStart > u0 || uEnd < u1 || vStart > v0 || vEnd < v1) piece->Segment(uStart, uEnd, vStart, vEnd);
+  return BRepBuilderAPI_MakeFace(piece, uStart, uEnd, vStart, vEnd, kFaceTolerance).Face();
 }
 
 TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd) {

@@ -258,7 +258,9 @@ std::vector<GuideCurve> buildGuideCurves(const schema::CpacsType& cpacs,
     std::vector<ProfilePosition> positions;
     for (const Piece& piece : pieces) positions.push_back(piece.from);
     positions.push_back(endOf(*pieces.back().definition));
-    result.push_back({root.uID, joinParts(pieces, parts), sectionParameters, positions});
+    std::vector<bool> smoothAt(pieces.size() + 1, false);
+    for (std::size_t p = 1; p < pieces.size(); ++p) smoothAt[p] = !pieces[p].definition->continuity;
+    result.push_back({root.uID, joinParts(pieces, parts), sectionParameters, positions, smoothAt});
   }
   return result;
 }

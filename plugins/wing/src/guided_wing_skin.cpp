@@ -11,19 +11,15 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/coons_patches.h"
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/curve_interpolation.h"
-#include "airshape/geometry/gordon_surface.h"
 #include "airshape/model/guide_curves.h"
 #include "wing_geometry.h"
 
 namespace airshape::wing {
 
 namespace {
-
-/// Linear between neighbouring airfoils, as the reference's guided wing skins are: the
-/// guides shape the skin, the airfoils are joined without overshoot (see docs/wing.md).
-constexpr int kDegreeAcrossProfiles = 1;
 
 /// A placed airfoil as one curve: lower side reversed over [0, 1], upper side over [1, 2].
 Handle(Geom_BSplineCurve) wholeAirfoil(const SegmentEnd& end) {
@@ -84,10 +80,13 @@ std::vector<const schema::GuideCurvesType*> guideCurvesPerSegment(const schema::
   return perSegment;
 }
 
-/// A guide with where it crosses every airfoil: whole-airfoil parameters and its own.
+/// A guide with where it crosses every airfoil (whole-airfoil parameters and its own) and
+/// its relative circumference at the root.
 struct GuideCrossing {
   Handle(Geom_BSplineCurve) curve;
   std::vector<double> airfoilParameters, guideParameters;
+  double relativeCircumference = 0.0;
+  std::vector<bool> smoothAt;  ///< per section: C2 there (inside one interpolated part)
 };
 
 /// The wing's guides, completed so that the skin reaches both trailing-edge ends (on a
@@ -97,9 +96,13 @@ std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& 
                                           const std::vector<Handle(Geom_BSplineCurve)>& airfoils, bool blunt) {
   std::vector<GuideCrossing> result;
   for (const model::GuideCurve& guide : guides) {
-    GuideCrossing crossing{guide.curve, {}, guide.sectionParameters};
+    GuideCrossing crossing{guide.curve, {}, guide.sectionParameters, 0.0, guide.smoothAt};
     for (std::size_t k = 0; k < airfoils.size(); ++k)
       crossing.airfoilParameters.push_back(parameterAt(airfoils[k], guide.positions[k]));
+    // The root's relative circumference; a guide at a trailing-edge end (|rc| = 1, on a sharp
+    // trailing edge possibly placed at the other end) counts by the end it was placed at.
+    const double rc = guide.positions.front().value;
+    crossing.relativeCircumference = std::abs(rc) < 1.0 ? rc : crossing.airfoilParameters.front() - 1.0;
     result.push_back(crossing);
   }
   const std::vector<double> sectionParameters = result.front().guideParameters;
@@ -112,12 +115,22 @@ std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& 
     if (guideAt(end)) continue;
     const GuideCrossing* other = blunt ? nullptr : guideAt(2.0 - end);
     result.push_back({other ? other->curve : interpolateThrough(airfoils, end, sectionParameters),
-                      std::vector<double>(airfoils.size(), end), sectionParameters});
+                      std::vector<double>(airfoils.size(), end), sectionParameters, end - 1.0,
+                      other ? other->smoothAt : std::vector<bool>(airfoils.size(), false)});
   }
   std::sort(result.begin(), result.end(), [](const GuideCrossing& a, const GuideCrossing& b) {
     return a.airfoilParameters.front() < b.airfoilParameters.front();
   });
   return result;
+}
+
+/// Whether the cell of segment k between guides l and l+1 is blended round, as the
+/// reference decides it: when one of its guides runs smoothly (C2) through one of its
+/// sections; otherwise bilinearly.
+bool roundedCell(const std::vector<GuideCrossing>& guides, std::size_t k, std::size_t l) {
+  for (const GuideCrossing* guide : {&guides[l], &guides[l + 1]})
+    if (guide->smoothAt[k] || guide->smoothAt[k + 1]) return true;
+  return false;
 }
 
 /// What the guide-curve builder needs of the wing's sections (CONVENTIONS §9.1): points by
@@ -166,53 +179,48 @@ std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration&
   const auto K = static_cast<Eigen::Index>(sections.size()), L = static_cast<Eigen::Index>(guides.size());
   crossings.profileParameters.resize(K, L);
   crossings.guideParameters.resize(K, L);
-  skin->crossingParameters_.assign(sections.size(), {});
   for (Eigen::Index l = 0; l < L; ++l) {
     const GuideCrossing& guide = guides[static_cast<std::size_t>(l)];
     guideCurves.push_back(guide.curve);
+    skin->relativeCircumferences_.push_back(guide.relativeCircumference);
     for (Eigen::Index k = 0; k < K; ++k) {
-      const auto kk = static_cast<std::size_t>(k);
-      crossings.profileParameters(k, l) = guide.airfoilParameters[kk];
-      crossings.guideParameters(k, l) = guide.guideParameters[kk];
-      skin->crossingParameters_[kk].push_back(guide.airfoilParameters[kk]);
+      crossings.profileParameters(k, l) = guide.airfoilParameters[static_cast<std::size_t>(k)];
+      crossings.guideParameters(k, l) = guide.guideParameters[static_cast<std::size_t>(k)];
     }
   }
-  const geometry::GordonSurface gordon =
-      geometry::buildGordonSurface(skin->airfoils_, guideCurves, {}, &crossings, kDegreeAcrossProfiles);
-  if (gordon.profileSites.size() != skin->airfoils_.size() || gordon.guideSites.size() != guideCurves.size())
-    throw Error(ErrorCode::InvalidModel, "the guide curves do not cross every airfoil of wing '" + wing.uID + "' once");
-  skin->surface_ = gordon.surface;
-  skin->sectionSites_ = gordon.profileSites;
-  skin->guideSites_ = gordon.guideSites;
+  try {
+    skin->rows_ =
+        geometry::buildCoonsPatchRows(skin->airfoils_, guideCurves, crossings, [&](std::size_t k, std::size_t l) {
+          return roundedCell(guides, k, l) ? geometry::PatchBlending::Rounded : geometry::PatchBlending::Bilinear;
+        });
+  } catch (const Error& error) {
+    throw Error(ErrorCode::InvalidModel, "the guided skin of wing '" + wing.uID + "': " + error.what());
+  }
   return skin;
 }
 
-double GuidedWingSkin::uAt(std::size_t section, double wholeParameter) const {
-  // Linear between the guides: the parameter the airfoil has at each guide is the u the
-  // guide runs at on the skin.
-  const std::vector<double>& at = crossingParameters_[section];
-  std::size_t l = 1;
-  while (l + 1 < at.size() && wholeParameter > at[l]) ++l;
-  const double share = (wholeParameter - at[l - 1]) / (at[l] - at[l - 1]);
-  return guideSites_[l - 1] + share * (guideSites_[l] - guideSites_[l - 1]);
-}
-
-gp_Pnt GuidedWingSkin::pointAt(std::size_t segment, double eta, double wholeParameter) const {
-  const double u = (1.0 - eta) * uAt(segment, wholeParameter) + eta * uAt(segment + 1, wholeParameter);
-  const double v = (1.0 - eta) * sectionSites_[segment] + eta * sectionSites_[segment + 1];
-  return surface_->Value(u, v);
+gp_Pnt GuidedWingSkin::pointAt(std::size_t segment, double eta, double relativeCircumference) const {
+  // Cell l lies between the guides at relative circumferences rc_l and rc_l+1, over u in
+  // [l, l+1]; xsi (as rc) maps linearly onto it, as in the reference.
+  const std::vector<double>& rc = relativeCircumferences_;
+  std::size_t l = 0;
+  while (l + 2 < rc.size() && relativeCircumference > rc[l + 1]) ++l;
+  const double share = (relativeCircumference - rc[l]) / (rc[l + 1] - rc[l]);
+  return rows_[segment]->Value(static_cast<double>(l) + std::clamp(share, 0.0, 1.0), eta);
 }
 
 gp_Pnt GuidedWingSkin::upperPoint(std::size_t segment, double eta, double xsi) const {
-  return pointAt(segment, eta, 1.0 + xsi);
+  return pointAt(segment, eta, xsi);
 }
 
 gp_Pnt GuidedWingSkin::lowerPoint(std::size_t segment, double eta, double xsi) const {
-  return pointAt(segment, eta, 1.0 - xsi);
+  return pointAt(segment, eta, -xsi);
 }
 
-geometry::LoftPiece GuidedWingSkin::segmentPiece(std::size_t segment) const {
-  return geometry::loftPiece(surface_, sectionSites_[segment], sectionSites_[segment + 1], !blunt_);
+double GuidedWingSkin::leadingEdgeU() const {
+  for (std::size_t l = 0; l < relativeCircumferences_.size(); ++l)
+    if (std::abs(relativeCircumferences_[l]) < 1e-3) return static_cast<double>(l);
+  return 0.0;
 }
 
 }  // namespace airshape::wing

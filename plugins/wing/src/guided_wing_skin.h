@@ -7,7 +7,6 @@
 #include <Geom_BSplineSurface.hxx>
 #include <gp_Pnt.hxx>
 
-#include "airshape/geometry/loft_piece.h"
 #include "airshape/schema/generated/cpacs_model.h"
 
 namespace airshape {
@@ -18,35 +17,37 @@ namespace airshape::wing {
 
 struct WingSegment;
 
-/// The skin of a wing with guide curves: the Gordon surface through its airfoils and its
-/// guides (CONVENTIONS §4.2, §9). Each airfoil is taken whole, as one curve over [0, 2]
-/// from the lower trailing-edge end (0) to the leading edge (1) to the upper end (2);
-/// relative circumference −1..0 runs along the lower side and 0..1 along the upper side,
-/// each by its own length.
+/// The skin of a wing with guide curves: one Coons patch per cell between neighbouring
+/// airfoils and guides, as the reference builds it (CONVENTIONS §4.2, §9; see
+/// geometry/coons_patches.h), one surface per segment. Each airfoil is taken whole, as one
+/// curve over [0, 2] from the lower trailing-edge end (0) to the leading edge (1) to the
+/// upper end (2); relative circumference −1..0 runs along the lower side and 0..1 along the
+/// upper side, each by its own length.
 class GuidedWingSkin {
  public:
   /// The skin, or null when no segment of the wing has guide curves.
   static std::shared_ptr<const GuidedWingSkin> build(const Configuration& configuration, const schema::WingType& wing,
                                                      const std::vector<WingSegment>& segments);
 
-  /// The point at eta of the segment where the two airfoils have xsi on their upper
-  /// (lower) side: xsi is found on the skin at both sections and blended by eta.
+  /// The point at eta of the segment and xsi on its upper (lower) side: xsi counts as a
+  /// relative circumference (negated on the lower side), mapped linearly onto the cell
+  /// between the two guides around it; eta is the cell's parameter along the guides.
   gp_Pnt upperPoint(std::size_t segment, double eta, double xsi) const;
   gp_Pnt lowerPoint(std::size_t segment, double eta, double xsi) const;
 
-  /// The segment's B-rep: skin, blunt trailing edge, caps and solid.
-  geometry::LoftPiece segmentPiece(std::size_t segment) const;
+  /// The segment's skin: its cells side by side, cell l over u in [l, l+1], v = eta.
+  const Handle(Geom_BSplineSurface) & segmentSurface(std::size_t segment) const { return rows_[segment]; }
+  /// Where the lower side ends on every segment surface: the u of the guide at the leading
+  /// edge (relative circumference 0), or 0 when no guide runs there.
+  double leadingEdgeU() const;
+  bool bluntTrailingEdge() const { return blunt_; }
 
  private:
-  gp_Pnt pointAt(std::size_t segment, double eta, double wholeParameter) const;
-  /// The skin's u where airfoil `section` has whole-airfoil parameter t.
-  double uAt(std::size_t section, double wholeParameter) const;
+  gp_Pnt pointAt(std::size_t segment, double eta, double relativeCircumference) const;
 
-  Handle(Geom_BSplineSurface) surface_;
-  std::vector<Handle(Geom_BSplineCurve)> airfoils_;      ///< whole, global, in chain order
-  std::vector<double> sectionSites_;                     ///< the surface's v at each airfoil
-  std::vector<double> guideSites_;                       ///< the surface's u at each guide, ascending
-  std::vector<std::vector<double>> crossingParameters_;  ///< per airfoil, its parameter at each guide
+  std::vector<Handle(Geom_BSplineCurve)> airfoils_;  ///< whole, global, in chain order
+  std::vector<Handle(Geom_BSplineSurface)> rows_;    ///< per segment: cell l over u in [l, l+1], v = eta
+  std::vector<double> relativeCircumferences_;       ///< of the guides at the root, ascending
   bool blunt_ = false;
 };
 

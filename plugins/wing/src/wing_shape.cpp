@@ -4,6 +4,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/geometry/loft_piece.h"
 
 namespace airshape::wing {
 
@@ -51,16 +52,27 @@ SegmentShape segmentShape(const WingSegment& segment) {
 
 /// A segment of a wing with guide curves: its stretch of the guided skin (one face for
 /// both sides), the blunt trailing edge between the skin's ends, and the caps.
+/// A guided segment: its skin split at the leading-edge guide into a lower and an upper
+/// face (one face, in `upper`, when no guide runs along the leading edge), the strip
+/// between blunt trailing edges, and planar caps.
 SegmentShape guidedSegmentShape(const WingGeometry& geometry, std::size_t segment) {
-  geometry::LoftPiece piece = geometry.guidedSkin()->segmentPiece(segment);
-  if (piece.solid.IsNull())
-    throw Error(ErrorCode::InvalidModel, "segment '" + geometry.segments()[segment].uid + "': " + piece.solidProblem);
+  const GuidedWingSkin& skin = *geometry.guidedSkin();
+  const Handle(Geom_BSplineSurface)& surface = skin.segmentSurface(segment);
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  const double split = skin.leadingEdgeU();
+  const bool closed = !skin.bluntTrailingEdge();
   SegmentShape shape;
-  shape.upper = piece.skin;
-  shape.trailingEdge = piece.closingFace;
-  shape.innerCap = piece.startCap;
-  shape.outerCap = piece.endCap;
-  shape.solid = piece.solid;
+  if (split > u0) shape.lower = geometry::surfacePartFace(surface, u0, split, v0, v1);
+  shape.upper = geometry::surfacePartFace(surface, split > u0 ? split : u0, u1, v0, v1);
+  if (!closed) shape.trailingEdge = geometry::loftClosingFace(surface, v0, v1);
+  try {
+    shape.innerCap = geometry::loftCap(surface, v0, closed);
+    shape.outerCap = geometry::loftCap(surface, v1, closed);
+    shape.solid = geometry::sewnSolid({shape.upper, shape.lower, shape.trailingEdge, shape.innerCap, shape.outerCap});
+  } catch (const Error& error) {
+    throw Error(ErrorCode::InvalidModel, "segment '" + geometry.segments()[segment].uid + "': " + error.message());
+  }
   return shape;
 }
 

@@ -18,7 +18,8 @@ namespace airshape::wing {
 
 /// The faces of one wing segment: ruled upper and lower skins (and a trailing-edge strip
 /// for blunt airfoils) between its two placed airfoils, closed by planar caps. With guide
-/// curves the skin is one face of the guided skin, in `upper` (`lower` stays empty).
+/// curves the skin is split at the leading-edge guide (one face in `upper`, `lower` empty,
+/// when no guide runs along the leading edge).
 struct SegmentShape {
   TopoDS_Face upper, lower, trailingEdge, innerCap, outerCap;
   TopoDS_Shape solid;
@@ -39,8 +40,8 @@ class WingShape {
   double surfaceArea() const;
 
   /// The whole wing as one solid: every segment's skins and strips, the root and tip caps,
-  /// named "<segment uID>/upper", "/lower", "/trailingEdge" ("/skin" where guide curves make
-  /// both sides one face), "<wing uID>/root" and "/tip".
+  /// named "<segment uID>/upper", "/lower", "/trailingEdge" ("/skin" where a guided skin
+  /// has no leading-edge guide to split it), "<wing uID>/root" and "/tip".
   NamedShape solid(const std::string& wingUid, const std::vector<std::string>& segmentUids) const;
 
  private:

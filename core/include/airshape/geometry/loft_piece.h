@@ -21,6 +21,11 @@ struct LoftPiece {
 /// The skin of the loft over [vStart, vEnd] as one face, the whole u range.
 TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd);
 
+/// The part [uStart, uEnd] × [vStart, vEnd] of a surface as one face carrying only that
+/// part's poles and knots (the parameters of its points stay those of the surface).
+TopoDS_Face surfacePartFace(const Handle(Geom_BSplineSurface) & surface, double uStart, double uEnd, double vStart,
+                            double vEnd);
+
 /// The face closing open profiles over [vStart, vEnd]: ruled between the skin's u-boundaries.
 TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd);
 

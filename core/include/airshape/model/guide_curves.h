@@ -42,6 +42,9 @@ struct GuideCurve {
   Handle(Geom_BSplineCurve) curve;
   std::vector<double> sectionParameters;
   std::vector<ProfilePosition> positions;
+  /// Per section: whether the curve runs through it inside one interpolated part, so is
+  /// C2 there (false at its ends and where a piece with a <continuity> starts a new part).
+  std::vector<bool> smoothAt;
 };
 
 /// Builds the guide curves of a component from its segments' <guideCurves> (chain order;

@@ -1,0 +1,166 @@
+#include "airshape/geometry/coons_patches.h"
+
+#include <algorithm>
+
+#include <BSplCLib.hxx>
+#include <GeomFill_BSplineCurves.hxx>
+#include <GeomFill_Profiler.hxx>
+#include <Precision.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
+
+#include "airshape/error.h"
+#include "airshape/geometry/compatibility.h"
+
+namespace airshape::geometry {
+
+namespace {
+
+/// Relative tolerance under which two knots count as the same.
+constexpr double kSameKnot = 1e-6;
+
+/// The part [from, to] of a curve, keeping its parametrisation.
+Handle(Geom_BSplineCurve) piece(const Handle(Geom_BSplineCurve) & curve, double from, double to) {
+  Handle(Geom_BSplineCurve) part = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  part->Segment(from, to);
+  return part;
+}
+
+/// Whether two curves have the same degree and the same knots (within kSameKnot).
+bool sameDistribution(const Geom_BSplineCurve& a, const Geom_BSplineCurve& b) {
+  if (a.IsRational() || b.IsRational() || a.Degree() != b.Degree() || a.NbPoles() != b.NbPoles() ||
+      a.NbKnots() != b.NbKnots())
+    return false;
+  for (int j = 1; j <= a.NbKnots(); ++j) {
+    const double tolerance =
+        std::max(kSameKnot * (std::abs(a.Knot(j)) + std::abs(b.Knot(j))) / 2.0, Precision::PConfusion());
+    if (a.Multiplicity(j) != b.Multiplicity(j) || std::abs(a.Knot(j) - b.Knot(j)) >= tolerance) return false;
+  }
+  return true;
+}
+
+/// Gives two opposite boundaries one degree and one knot vector: knots that already agree
+/// are averaged, otherwise OCCT's profiler merges them (reparametrising linearly).
+void matchOpposite(Handle(Geom_BSplineCurve) & a, Handle(Geom_BSplineCurve) & b) {
+  if (sameDistribution(*a, *b)) {
+    TColStd_Array1OfReal knots(1, a->NbKnots());
+    for (int j = 1; j <= a->NbKnots(); ++j) knots(j) = (a->Knot(j) + b->Knot(j)) / 2.0;
+    a->SetKnots(knots);
+    b->SetKnots(knots);
+    return;
+  }
+  double shortest = RealLast();
+  for (const auto* curve : {a.get(), b.get()})
+    for (int j = 1; j < curve->NbKnots(); ++j) shortest = std::min(shortest, curve->Knot(j + 1) - curve->Knot(j));
+  GeomFill_Profiler profiler;
+  profiler.AddCurve(a);
+  profiler.AddCurve(b);
+  profiler.Perform(std::max(shortest * kSameKnot, Precision::Confusion()));
+  a = Handle(Geom_BSplineCurve)::DownCast(profiler.Curve(1));
+  b = Handle(Geom_BSplineCurve)::DownCast(profiler.Curve(2));
+}
+
+/// The filling needs four poles or more on each boundary: raise the degree, or split the
+/// longest span, of both opposite boundaries alike.
+void ensureFourPoles(Handle(Geom_BSplineCurve) & a, Handle(Geom_BSplineCurve) & b) {
+  while (a->NbPoles() < 4) {
+    const int degree = a->Degree();
+    if (degree < Geom_BSplineCurve::MaxDegree()) {
+      a->IncreaseDegree(degree + 1);
+      b->IncreaseDegree(degree + 1);
+      continue;
+    }
+    int longest = a->FirstUKnotIndex();
+    for (int j = a->FirstUKnotIndex(); j < a->LastUKnotIndex(); ++j)
+      if (a->Knot(j + 1) - a->Knot(j) > a->Knot(longest + 1) - a->Knot(longest)) longest = j;
+    const double middle = 0.5 * (a->Knot(longest) + a->Knot(longest + 1));
+    a->InsertKnot(middle, degree - 1);
+    b->InsertKnot(middle, degree - 1);
+  }
+}
+
+void normaliseParameters(Geom_BSplineSurface& surface) {
+  TColStd_Array1OfReal uKnots(1, surface.NbUKnots()), vKnots(1, surface.NbVKnots());
+  surface.UKnots(uKnots);
+  surface.VKnots(vKnots);
+  BSplCLib::Reparametrize(0.0, 1.0, uKnots);
+  BSplCLib::Reparametrize(0.0, 1.0, vKnots);
+  surface.SetUKnots(uKnots);
+  surface.SetVKnots(vKnots);
+}
+
+/// The patches of one row side by side in u (cell l over [l, l+1]), joined C0.
+Handle(Geom_BSplineSurface) sideBySide(std::vector<Handle(Geom_BSplineSurface)> patches) {
+  makeCompatible(patches);  // one degree and one knot vector in u and in v
+  const Geom_BSplineSurface& first = *patches.front();
+  const int uDegree = first.UDegree(), columns = first.NbUPoles(), rows = first.NbVPoles();
+  const int cells = static_cast<int>(patches.size());
+  TColgp_Array2OfPnt poles(1, cells * (columns - 1) + 1, 1, rows);
+  for (int c = 0; c < cells; ++c)
+    for (int i = (c == 0 ? 1 : 2); i <= columns; ++i)
+      for (int j = 1; j <= rows; ++j) poles(c * (columns - 1) + i, j) = patches[c]->Pole(i, j);
+  const int uKnotCount = first.NbUKnots();
+  TColStd_Array1OfReal uKnots(1, cells * (uKnotCount - 1) + 1);
+  TColStd_Array1OfInteger uMults(1, cells * (uKnotCount - 1) + 1);
+  for (int c = 0; c < cells; ++c)
+    for (int j = (c == 0 ? 1 : 2); j <= uKnotCount; ++j) {
+      const int index = c * (uKnotCount - 1) + j;
+      uKnots(index) = c + first.UKnot(j);
+      uMults(index) = first.UMultiplicity(j);
+      if (j == 1 || j == uKnotCount) uMults(index) = (index == 1 || index == uKnots.Upper()) ? uDegree + 1 : uDegree;
+    }
+  TColStd_Array1OfReal vKnots(1, first.NbVKnots());
+  TColStd_Array1OfInteger vMults(1, first.NbVKnots());
+  first.VKnots(vKnots);
+  first.VMultiplicities(vMults);
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, uDegree, first.VDegree());
+}
+
+}  // namespace
+
+Handle(Geom_BSplineSurface)
+    coonsPatch(Handle(Geom_BSplineCurve) bottom, Handle(Geom_BSplineCurve) right, Handle(Geom_BSplineCurve) top,
+               Handle(Geom_BSplineCurve) left, PatchBlending blending) {
+  matchOpposite(bottom, top);
+  matchOpposite(right, left);
+  ensureFourPoles(bottom, top);
+  ensureFourPoles(right, left);
+  try {
+    GeomFill_BSplineCurves filling;
+    filling.Init(bottom, right, top, left,
+                 blending == PatchBlending::Rounded ? GeomFill_CoonsStyle : GeomFill_StretchStyle);
+    Handle(Geom_BSplineSurface) patch = Handle(Geom_BSplineSurface)::DownCast(filling.Surface()->Copy());
+    normaliseParameters(*patch);
+    return patch;
+  } catch (const Standard_Failure& failure) {
+    throw Error(ErrorCode::InvalidModel,
+                std::string("a Coons patch cannot be filled: ") +
+                    (failure.GetMessageString() ? failure.GetMessageString() : "OCCT failure"));
+  }
+}
+
+std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
+    const std::vector<Handle(Geom_BSplineCurve)>& profiles, const std::vector<Handle(Geom_BSplineCurve)>& guides,
+    const KnownCrossings& crossings, const std::function<PatchBlending(std::size_t, std::size_t)>& blending) {
+  if (profiles.size() < 2 || guides.size() < 2)
+    throw Error(ErrorCode::InvalidModel, "a patch network needs two profiles and two guides at least");
+  const auto& p = crossings.profileParameters;
+  const auto& g = crossings.guideParameters;
+  std::vector<Handle(Geom_BSplineSurface)> rows;
+  for (Eigen::Index k = 0; k + 1 < static_cast<Eigen::Index>(profiles.size()); ++k) {
+    std::vector<Handle(Geom_BSplineSurface)> cells;
+    for (Eigen::Index l = 0; l + 1 < static_cast<Eigen::Index>(guides.size()); ++l) {
+      const auto& lower = profiles[static_cast<std::size_t>(k)];
+      const auto& upper = profiles[static_cast<std::size_t>(k + 1)];
+      const auto& first = guides[static_cast<std::size_t>(l)];
+      const auto& second = guides[static_cast<std::size_t>(l + 1)];
+      cells.push_back(coonsPatch(piece(lower, p(k, l), p(k, l + 1)), piece(second, g(k, l + 1), g(k + 1, l + 1)),
+                                 piece(upper, p(k + 1, l), p(k + 1, l + 1)), piece(first, g(k, l), g(k + 1, l)),
+                                 blending(static_cast<std::size_t>(k), static_cast<std::size_t>(l))));
+    }
+    rows.push_back(sideBySide(cells));
+  }
+  return rows;
+}
+
+}  // namespace airshape::geometry
