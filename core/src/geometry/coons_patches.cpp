@@ -11,6 +11,7 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/compatibility.h"
+#include "airshape/geometry/curve_concatenation.h"
 
 namespace airshape::geometry {
 
@@ -19,11 +20,26 @@ namespace {
 /// Relative tolerance under which two knots count as the same.
 constexpr double kSameKnot = 1e-6;
 
-/// The part [from, to] of a curve, keeping its parametrisation.
+/// The part [from, to] of a curve, keeping its parametrisation. On a closed curve the
+/// part may run past its end (to > last parameter): it then continues from the start.
 Handle(Geom_BSplineCurve) piece(const Handle(Geom_BSplineCurve) & curve, double from, double to) {
-  Handle(Geom_BSplineCurve) part = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
-  part->Segment(from, to);
-  return part;
+  Handle(Geom_BSplineCurve) whole = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  if (whole->IsPeriodic()) whole->SetNotPeriodic();
+  const double first = whole->FirstParameter(), last = whole->LastParameter(), period = last - first;
+  const double tolerance = 1e-12 * std::max(1.0, std::abs(period));
+  if (to <= last + tolerance) {
+    whole->Segment(from, std::min(to, last));
+    return whole;
+  }
+  Handle(Geom_BSplineCurve) head = Handle(Geom_BSplineCurve)::DownCast(whole->Copy());
+  head->Segment(first, to - period);
+  TColStd_Array1OfReal knots(1, head->NbKnots());
+  head->Knots(knots);
+  for (double& knot : knots) knot += period;
+  head->SetKnots(knots);
+  if (from >= last - tolerance) return head;
+  whole->Segment(from, last);
+  return concatenateCurves({whole, head});
 }
 
 /// Whether two curves have the same degree and the same knots (within kSameKnot).

@@ -13,6 +13,7 @@
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/compatibility.h"
+#include "airshape/geometry/coons_patches.h"
 #include "airshape/geometry/gordon_surface.h"
 #include "airshape/geometry/loft_piece.h"
 #include "airshape/geometry/skinning.h"
@@ -73,6 +74,16 @@ std::optional<double> nearbyParameter(const Geom_BSplineCurve& curve, const gp_P
   return std::nullopt;
 }
 
+/// Whether a profile runs smoothly (C2) through parameter t: no knot of multiplicity above
+/// degree − 2 there; through its seam only when it is periodic.
+bool smoothThrough(const Geom_BSplineCurve& curve, double t) {
+  const double first = curve.FirstParameter(), last = curve.LastParameter(), tolerance = 1e-9 * (last - first);
+  if (std::abs(t - first) < tolerance || std::abs(t - last) < tolerance) return curve.IsPeriodic();
+  for (int i = 1; i <= curve.NbKnots(); ++i)
+    if (std::abs(curve.Knot(i) - t) < tolerance) return curve.Degree() - curve.Multiplicity(i) >= 2;
+  return true;
+}
+
 }  // namespace
 
 std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration& configuration,
@@ -131,14 +142,81 @@ void FuselageGeometry::loft(const std::vector<PlacedProfile>& sections) {
 
 void FuselageGeometry::loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides) {
   for (const PlacedProfile& section : sections) profiles_.push_back(section.curve);
+  guided_ = true;
+  if (closedProfiles_ || guidesAlongBothEnds(guides)) return patchRings(guides);
   const geometry::GordonSurface gordon =
       geometry::buildGordonSurface(profiles_, guides.curves, {}, &guides.crossings, kDegreeAcrossProfiles);
   if (gordon.profileSites.size() != profiles_.size())
     throw Error(ErrorCode::InvalidModel, "the guide curves do not cross every profile of the fuselage once");
   loft_ = gordon.surface;
   sectionSites_ = gordon.profileSites;
-  guided_ = true;
   for (double v : sectionSites_) sectionIsoCurves_.push_back(Handle(Geom_BSplineCurve)::DownCast(loft_->VIso(v)));
+}
+
+bool FuselageGeometry::guidesAlongBothEnds(const FuselageGuides& guides) const {
+  const auto& p = guides.crossings.profileParameters;
+  for (Eigen::Index k = 0; k < p.rows(); ++k) {
+    const Geom_BSplineCurve& profile = *profiles_[static_cast<std::size_t>(k)];
+    const double first = profile.FirstParameter(), last = profile.LastParameter(), tolerance = 1e-9 * (last - first);
+    if (!((p.row(k).array() - first).abs() < tolerance).any() || !((p.row(k).array() - last).abs() < tolerance).any())
+      return false;
+  }
+  return true;
+}
+
+void FuselageGeometry::patchRings(const FuselageGuides& guides) {
+  // The guides in the order they cross the first profile; one that repeats another's place
+  // (relative circumference 1 on a closed profile is 0) is left out.
+  const auto& p = guides.crossings.profileParameters;
+  const Eigen::Index K = p.rows();
+  std::vector<Eigen::Index> order;
+  for (Eigen::Index l = 0; l < p.cols(); ++l) order.push_back(l);
+  std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return p(0, a) < p(0, b); });
+  auto period = [&](Eigen::Index k) {
+    return profiles_[static_cast<std::size_t>(k)]->LastParameter() -
+           profiles_[static_cast<std::size_t>(k)]->FirstParameter();
+  };
+  auto samePlace = [&](Eigen::Index a, Eigen::Index b) {
+    const double gap = std::abs(p(0, a) - p(0, b));
+    return gap < 1e-9 || (closedProfiles_ && std::abs(gap - period(0)) < 1e-9);
+  };
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index l : order)
+    if (std::none_of(kept.begin(), kept.end(), [&](Eigen::Index k) { return samePlace(k, l); })) kept.push_back(l);
+
+  // On closed profiles the ring of cells closes with the first guide once more, one period
+  // on; half profiles have guides along both ends and no ring.
+  const auto L = static_cast<Eigen::Index>(kept.size());
+  const Eigen::Index columns = closedProfiles_ ? L + 1 : L;
+  geometry::KnownCrossings ring;
+  ring.profileParameters.resize(K, columns);
+  ring.guideParameters.resize(K, columns);
+  std::vector<Handle(Geom_BSplineCurve)> curves;
+  std::vector<const std::vector<bool>*> smooth;
+  for (Eigen::Index j = 0; j < columns; ++j) {
+    const Eigen::Index l = kept[static_cast<std::size_t>(j % L)];
+    curves.push_back(guides.curves[static_cast<std::size_t>(l)]);
+    smooth.push_back(&guides.smoothAt[static_cast<std::size_t>(l)]);
+    for (Eigen::Index k = 0; k < K; ++k) {
+      ring.profileParameters(k, j) = p(k, l) + (j == L ? period(k) : 0.0);
+      ring.guideParameters(k, j) = guides.crossings.guideParameters(k, l);
+    }
+    const double start = guides.startPositions[static_cast<std::size_t>(l)];
+    cellParameters_.push_back(j == L ? cellParameters_.front() + 1.0 : start);
+  }
+  // A cell is rounded where a curve runs smoothly (C2) through one of its corners, a guide
+  // through a profile inside one interpolated part or a profile through a guide, and
+  // bilinear otherwise: the reference's rule (see docs/fuselage.md).
+  auto profileSmoothAt = [&](std::size_t k, std::size_t j) {
+    return smoothThrough(*profiles_[k], p(static_cast<Eigen::Index>(k), kept[j % kept.size()]));
+  };
+  patchRows_ = geometry::buildCoonsPatchRows(profiles_, curves, ring, [&](std::size_t k, std::size_t l) {
+    for (std::size_t j : {l, l + 1})
+      if ((*smooth[j])[k] || (*smooth[j])[k + 1] || profileSmoothAt(k, j) || profileSmoothAt(k + 1, j))
+        return geometry::PatchBlending::Rounded;
+    return geometry::PatchBlending::Bilinear;
+  });
+  sectionSites_.assign(ring.guideParameters.col(0).data(), ring.guideParameters.col(0).data() + K);
 }
 
 void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXpaths) {
@@ -167,13 +245,22 @@ double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const
   return projection.NbPoints() > 0 ? projection.LowerDistanceParameter() : zeta;
 }
 
+TopoDS_Face FuselageGeometry::profileCap(std::size_t section) const {
+  const Handle(Geom_BSplineCurve)& profile = profiles_[section];
+  if (closedProfiles_) return geometry::planarFace({profile});
+  return geometry::planarFace({profile, geometry::straightLine(profile->EndPoint(), profile->StartPoint())});
+}
+
 geometry::LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to, const std::string& name) const {
-  geometry::LoftPiece piece = geometry::loftPiece(loft_, sectionSites_[from], sectionSites_[to], closedProfiles_);
+  geometry::LoftPiece piece = patchRows_.empty()
+                                  ? geometry::loftPiece(loft_, sectionSites_[from], sectionSites_[to], closedProfiles_)
+                                  : geometry::loftPiece(patchRows_[from], 0.0, 1.0, closedProfiles_);
   if (!piece.solidProblem.empty()) piece.solidProblem = name + ": " + piece.solidProblem;
   return piece;
 }
 
 TopoDS_Face FuselageGeometry::skinFace(std::size_t from, std::size_t to) const {
+  if (!patchRows_.empty()) return geometry::loftFace(patchRows_[from], 0.0, 1.0);
   return geometry::loftFace(loft_, sectionSites_[from], sectionSites_[to]);
 }
 
@@ -192,12 +279,22 @@ double FuselageGeometry::vAt(std::size_t segment, double eta) const {
 }
 
 gp_Pnt FuselageGeometry::point(std::size_t segment, double eta, double zeta) const {
+  if (!patchRows_.empty()) {
+    // Cell l lies between the guides at cellParameters_[l] and [l+1] (relative
+    // circumferences), over u in [l, l+1] of the segment's ring; zeta maps linearly onto it.
+    const std::vector<double>& at = cellParameters_;
+    if (zeta < at.front()) zeta += 1.0;
+    std::size_t l = 0;
+    while (l + 2 < at.size() && zeta > at[l + 1]) ++l;
+    const double share = std::clamp((zeta - at[l]) / (at[l + 1] - at[l]), 0.0, 1.0);
+    return patchRows_[segment]->Value(static_cast<double>(l) + share, eta);
+  }
   const double u = (1.0 - eta) * loftParameterOf(segment, zeta) + eta * loftParameterOf(segment + 1, zeta);
   return loft_->Value(u, vAt(segment, eta));
 }
 
 double FuselageGeometry::circumference(std::size_t segment, double eta) const {
-  GeomAdaptor_Curve curve(loft_->VIso(vAt(segment, eta)));
+  GeomAdaptor_Curve curve(patchRows_.empty() ? loft_->VIso(vAt(segment, eta)) : patchRows_[segment]->VIso(eta));
   return GCPnts_AbscissaPoint::Length(curve, 1e-10);
 }
 
@@ -211,6 +308,11 @@ double FuselageGeometry::segmentSurfaceArea(std::size_t segment) const {
 
 double FuselageGeometry::volume() const {
   if (segments_.empty()) return 0.0;
+  if (!patchRows_.empty()) {  // a ring of patches per segment: the segments' solids
+    double total = 0.0;
+    for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentVolume(k);
+    return total;
+  }
   // One skin face over the whole loft and its two caps: quicker than the named solid.
   const geometry::LoftPiece whole = piece(0, segments_.size(), "the fuselage");
   if (!whole.solid.IsNull()) return geometry::volumeOf(whole.solid);
@@ -220,16 +322,23 @@ double FuselageGeometry::volume() const {
 }
 
 double FuselageGeometry::surfaceArea() const {
+  if (!patchRows_.empty()) {
+    double total = 0.0;
+    for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentSurfaceArea(k);
+    return total;
+  }
   return segments_.empty() ? 0.0 : geometry::areaOf(skinFace(0, segments_.size()));
 }
 
 NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid");
-  const double vFirst = sectionSites_.front(), vLast = sectionSites_.back();
   std::vector<std::pair<std::string, TopoDS_Face>> named;
   try {
-    named = {{fuselageUid + "/front", geometry::loftCap(loft_, vFirst, closedProfiles_)},
-             {fuselageUid + "/rear", geometry::loftCap(loft_, vLast, closedProfiles_)}};
+    if (patchRows_.empty())
+      named = {{fuselageUid + "/front", geometry::loftCap(loft_, sectionSites_.front(), closedProfiles_)},
+               {fuselageUid + "/rear", geometry::loftCap(loft_, sectionSites_.back(), closedProfiles_)}};
+    else
+      named = {{fuselageUid + "/front", profileCap(0)}, {fuselageUid + "/rear", profileCap(profiles_.size() - 1)}};
   } catch (const Error& error) {
     throw Error(error.code(), "the fuselage: " + error.message());
   }
@@ -237,7 +346,8 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
     named.emplace_back(segments_[k].uid + "/skin", skinFace(k, k + 1));
     if (!closedProfiles_)
       named.emplace_back(segments_[k].uid + "/symmetry",
-                         geometry::loftClosingFace(loft_, sectionSites_[k], sectionSites_[k + 1]));
+                         patchRows_.empty() ? geometry::loftClosingFace(loft_, sectionSites_[k], sectionSites_[k + 1])
+                                            : geometry::loftClosingFace(patchRows_[k], 0.0, 1.0));
   }
   try {
     return sewnNamedSolid(named);

@@ -54,8 +54,17 @@ class FuselageGeometry {
  private:
   /// Skins the placed profiles (chain order): the loft without guide curves.
   void loft(const std::vector<PlacedProfile>& sections);
-  /// The Gordon surface through the placed profiles and the guide curves.
+  /// The skin through the placed profiles and the guide curves: patches (patchRings) for
+  /// closed profiles and for half profiles with guides along both ends, else a Gordon
+  /// surface.
   void loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides);
+  /// The reference's skin with guide curves: per segment a ring of cells between
+  /// neighbouring guides, each a patch of its four boundaries (geometry/coons_patches.h).
+  void patchRings(const FuselageGuides& guides);
+  /// The planar cap on section k's placed profile (with its closing edge when open).
+  TopoDS_Face profileCap(std::size_t section) const;
+  /// Whether guides run along both ends of every (open) profile.
+  bool guidesAlongBothEnds(const FuselageGuides& guides) const;
   void cutIntoSegments(const std::vector<std::string>& segmentXpaths);
   /// The loft's u where section k's profile has parameter zeta.
   double loftParameterOf(std::size_t section, double zeta) const;
@@ -72,6 +81,11 @@ class FuselageGeometry {
   std::vector<double> sectionSites_;                 ///< the loft's v at each profile
   bool guided_ = false;
   std::vector<Handle(Geom_BSplineCurve)> sectionIsoCurves_;  ///< with guides: the loft's curve at each profile
+  /// With guides and closed profiles: per segment its ring of cells (cell l over u in
+  /// [l, l+1], v = eta), and where each cell starts and ends in zeta (the guides' start
+  /// positions, the first again plus one at the end).
+  std::vector<Handle(Geom_BSplineSurface)> patchRows_;
+  std::vector<double> cellParameters_;
   bool closedProfiles_ = true;
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;

@@ -22,6 +22,11 @@ struct PlacedProfile {
 struct FuselageGuides {
   std::vector<Handle(Geom_BSplineCurve)> curves;
   geometry::KnownCrossings crossings;  ///< profiles in chain order, guides as in `curves`
+  /// Per guide: where it starts on the first profile (its relative circumference, or its
+  /// profile parameter with the reference's fromParameter).
+  std::vector<double> startPositions;
+  /// Per guide and section: whether it runs through the section inside one part (C2).
+  std::vector<std::vector<bool>> smoothAt;
 };
 
 /// The fuselage's guide curves (CONVENTIONS §9) over its placed profiles in chain order:

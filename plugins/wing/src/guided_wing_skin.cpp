@@ -125,11 +125,16 @@ std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& 
 }
 
 /// Whether the cell of segment k between guides l and l+1 is blended round, as the
-/// reference decides it: when one of its guides runs smoothly (C2) through one of its
-/// sections; otherwise bilinearly.
+/// reference decides it: when a curve runs smoothly (C2) through one of its corners, that
+/// is a guide through a section inside one interpolated part, or an airfoil through a
+/// guide away from its leading edge (where the reference's airfoil is only C1, joined from
+/// two sides) and trailing edge; otherwise bilinearly.
 bool roundedCell(const std::vector<GuideCrossing>& guides, std::size_t k, std::size_t l) {
-  for (const GuideCrossing* guide : {&guides[l], &guides[l + 1]})
+  for (const GuideCrossing* guide : {&guides[l], &guides[l + 1]}) {
     if (guide->smoothAt[k] || guide->smoothAt[k + 1]) return true;
+    const double rc = std::abs(guide->relativeCircumference);
+    if (rc > 1e-3 && rc < 1.0 - 1e-3) return true;
+  }
   return false;
 }
 

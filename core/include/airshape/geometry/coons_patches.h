@@ -27,7 +27,10 @@ enum class PatchBlending {
 /// k+1): its cells side by side in u, cell l (between guide l and l+1) over u ∈ [l, l+1],
 /// and v ∈ [0, 1] from profile k to profile k+1, linear in the guides' own parameter.
 /// `crossings` say where guide l meets profile k: profileParameters(k, l) ascending in l,
-/// guideParameters(k, l) ascending in k. Throws Error when a cell cannot be filled.
+/// guideParameters(k, l) ascending in k. Closed profiles close the ring of cells with a
+/// last guide that repeats the first, its profile parameters one period on (past the
+/// curves' ends, where the pieces continue from the start). Throws Error when a cell
+/// cannot be filled.
 std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
     const std::vector<Handle(Geom_BSplineCurve)>& profiles, const std::vector<Handle(Geom_BSplineCurve)>& guides,
     const KnownCrossings& crossings, const std::function<PatchBlending(std::size_t row, std::size_t cell)>& blending);
