@@ -177,6 +177,49 @@ def test_c1_from_previous_carries_the_tangent_across_the_section(tmp_path):
     assert abs(before) > 0.01 and abs(before - after) < 2e-3, (before, after)
 
 
+def tapered_wing(path, with_guides, tip_guide_profile="Straight"):
+    """One segment from a root chord of 2 to a tip chord of 1 at y = 4, optionally with
+    guides along the leading edge (rc 0) and the sharp trailing edge (rc -1)."""
+    guides = "".join(
+        f'<guideCurve uID="T{rc}"><name>g</name><guideCurveProfileUID>{tip_guide_profile if rc == 0 else "Straight"}'
+        f"</guideCurveProfileUID><fromRelativeCircumference>{rc}</fromRelativeCircumference>"
+        f"<toRelativeCircumference>{rc}</toRelativeCircumference></guideCurve>" for rc in (0, -1))
+    sections = "".join(
+        f'<section uID="TS{i}"><name>s</name><transformation><scaling><x>{2 - i}</x><y>1</y><z>{2 - i}</z></scaling>'
+        f'<translation><x>{0.5 * i}</x><y>{4 * i}</y></translation></transformation><elements><element uID="TE{i}">'
+        f"<name>e</name><airfoilUID>Parabolic</airfoilUID><transformation/></element></elements></section>"
+        for i in range(2))
+    segment = ('<segment uID="TW"><name>s</name><fromElementUID>TE0</fromElementUID><toElementUID>TE1</toElementUID>'
+               + (f"<guideCurves>{guides}</guideCurves>" if with_guides else "") + "</segment>")
+    profiles = "".join(
+        f'<guideCurveProfile uID="{uid}"><name>p</name><pointList><rX>{alpha}</rX><rY>0.5</rY>'
+        f"<rZ>0</rZ></pointList></guideCurveProfile>" for uid, alpha in (("Forward", -0.05), ("Straight", 0)))
+    text = open(WINGS).read()
+    wing = (f'<wing uID="Tapered"><name>t</name><transformation/><sections>{sections}</sections>'
+            f"<segments>{segment}</segments></wing>")
+    text = text.replace("<wings>", "<wings>" + wing).replace("</wingAirfoils>",
+                                                             f"</wingAirfoils><guideCurves>{profiles}</guideCurves>")
+    path.write_text(text)
+
+
+def test_cells_blend_as_the_reference_decides(tmp_path):
+    """A cell is bilinear unless a curve runs smoothly through one of its corners. With only
+    straight leading- and trailing-edge guides over one segment no curve does, so the guided
+    skin is the ruled one; a guide bulging between the sections bends the skin next to it."""
+    queries = [{"op": "wing_upper_point", "wing": "Tapered", "segment": 1, "eta": eta, "xsi": xsi}
+               for eta in (0.2, 0.7) for xsi in (0.1, 0.4, 0.9)]
+    plain, straight, bulging = tmp_path / "plain.xml", tmp_path / "straight.xml", tmp_path / "bulging.xml"
+    tapered_wing(plain, with_guides=False)
+    tapered_wing(straight, with_guides=True)
+    tapered_wing(bulging, with_guides=True, tip_guide_profile="Forward")
+    ruled, guided, bent = ask_file(plain, *queries), ask_file(straight, *queries), ask_file(bulging, *queries)
+    for a, b in zip(ruled, guided):
+        assert all(math.isclose(x, y, abs_tol=1e-9) for x, y in zip(a, b)), (a, b)
+    assert max(abs(a[0] - b[0]) for a, b in zip(ruled, bent)) > 0.01
+    volumes = [ask_file(path, {"op": "wing_volume", "wing": "Tapered"})[0] for path in (plain, straight)]
+    assert math.isclose(*volumes, rel_tol=1e-9), volumes
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}
