@@ -70,10 +70,10 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   std::vector<int> listIndex;
   std::vector<gp_Pnt> points = readPoints(list, xpath, listIndex);
   FuselageProfile profile;
-  profile.points = points;
   const bool mirrored = isMirroredHalf(definition);
   if (mirrored)  // the other half, back to the first point
     for (std::size_t i = points.size() - 1; i-- > 0;) points.emplace_back(points[i].X(), -points[i].Y(), points[i].Z());
+  profile.points = points;
 
   double size = 0.0;
   for (const gp_Pnt& a : points)

@@ -19,7 +19,8 @@ struct FuselageProfile {
   /// The reference's <symmetry>half</symmetry>: a half interpolated as its mirrored whole.
   /// Its relative circumference leaves out the closing edge.
   bool mirroredHalf = false;
-  /// The points of a point list (empty for a standard profile).
+  /// The points of a point list (empty for a standard profile); for a mirrored half with
+  /// its mirror image, as the reference measures the guide scale on the whole.
   std::vector<gp_Pnt> points;
   /// The length guide curve profiles are scaled by for a standard profile: the rectangle's
   /// height ratio, 1 for a superellipse (unscaled, as the reference has it).
