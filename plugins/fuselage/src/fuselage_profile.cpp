@@ -10,6 +10,8 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
+#include "airshape/geometry/chebyshev_approximation.h"
+#include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/geometry/kinked_interpolation.h"
 #include "airshape/geometry/uniform_refit.h"
@@ -158,7 +160,14 @@ FuselageProfile superEllipse(const schema::SuperEllipseProfileType& shape) {
               : z0 - (0.5 + z0) * std::pow(std::max(0.0, 1.0 - std::pow(s, shape.mLower)), 1.0 / shape.nLower);
     return gp_Pnt(0.0, 0.5 * std::sin(t), z);
   };
-  return sampledProfile(at, {0.25, 0.5, 0.75});
+  // Each quarter as the reference approximates it: piecewise Chebyshev, cubic, 1e-6; the
+  // quarters joined with corners, so points at a given zeta agree with its numbers.
+  std::vector<Handle(Geom_BSplineCurve)> quarters;
+  for (int q = 0; q < 4; ++q)
+    quarters.push_back(geometry::approximateByChebyshevPieces(at, 0.25 * q, 0.25 * (q + 1), {3, 1e-6, 10}));
+  FuselageProfile profile;
+  profile.curve = geometry::concatenateCurves(quarters);
+  return profile;
 }
 
 /// The rectangle of width 1 and height heightToWidthRatio with rounded corners, from the
