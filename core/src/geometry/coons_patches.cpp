@@ -27,7 +27,7 @@ Handle(Geom_BSplineCurve) piece(const Handle(Geom_BSplineCurve) & curve, double 
   if (whole->IsPeriodic()) whole->SetNotPeriodic();
   const double first = whole->FirstParameter(), last = whole->LastParameter(), period = last - first;
   const double tolerance = 1e-12 * std::max(1.0, std::abs(period));
-  if (to <= last + tolerance) {
+  if (to <= last + tolerance || to - period <= first + tolerance) {  // nothing past the end
     whole->Segment(from, std::min(to, last));
     return whole;
   }
