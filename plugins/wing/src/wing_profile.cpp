@@ -32,25 +32,6 @@ Handle(Geom_BSplineCurve) piece(const Geom_BSplineCurve& curve, double from, dou
   return part;
 }
 
-/// Where, between parameters a and b, the curve crosses the plane through `origin` with
-/// `normal`; nullopt when it does not cross strictly inside.
-std::optional<double> planeCrossing(const Geom_BSplineCurve& curve, double a, double b, const gp_Pnt& origin,
-                                    const gp_Vec& normal) {
-  auto side = [&](double t) { return gp_Vec(origin, curve.Value(t)).Dot(normal); };
-  double fa = side(a), fb = side(b);
-  if (!(fa * fb < 0.0)) return std::nullopt;
-  for (int i = 0; i < 200; ++i) {
-    const double m = 0.5 * (a + b), fm = side(m);
-    if ((fm < 0.0) == (fa < 0.0)) {
-      a = m;
-      fa = fm;
-    } else {
-      b = m;
-    }
-  }
-  return 0.5 * (a + b);
-}
-
 /// A NACA four-digit airfoil: the standard thickness law about the standard camber line,
 /// the thickness law's last coefficient chosen so that the trailing edge has the given
 /// thickness (-0.1015 would give the classic 0.00252 of a NACA 0012; closed by default).
@@ -188,22 +169,13 @@ WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::strin
   const std::vector<double> parameters = geometry::chordParameters(kept, 0.5);
   Handle(Geom_BSplineCurve) curve = geometry::interpolateCurve(kept, parameters, 3);
   const double tLe = parameters[keptLe];
-  double lowerEnd = 0.0, upperEnd = 1.0;
-
-  // A skewed trailing edge: the side reaching further aft is cut at the plane through the
-  // TE normal to the chord, so that the TE stands square to it.
-  const gp_Vec chordDirection(profile.leadingEdge_, profile.trailingEdge_);
-  const bool sameChordwise =
-      std::abs(gp_Vec(profile.leadingEdge_, first).Dot(chordDirection) -
-               gp_Vec(profile.leadingEdge_, last).Dot(chordDirection)) < 1e-12 * chordDirection.SquareMagnitude();
-  if (profile.blunt_ && !sameChordwise) {
-    if (auto cut = planeCrossing(*curve, 0.0, tLe, profile.trailingEdge_, chordDirection)) lowerEnd = *cut;
-    if (auto cut = planeCrossing(*curve, tLe, 1.0, profile.trailingEdge_, chordDirection)) upperEnd = *cut;
-  }
-  profile.upper_ = [curve, tLe, upperEnd](double xsi) { return curve->Value(tLe + xsi * (upperEnd - tLe)); };
-  profile.lower_ = [curve, tLe, lowerEnd](double xsi) { return curve->Value(tLe + xsi * (lowerEnd - tLe)); };
-  profile.upperCurve_ = piece(*curve, tLe, upperEnd);
-  profile.lowerCurve_ = piece(*curve, tLe, lowerEnd);
+  // Both sides run whole to the trailing edge, also where it is skewed: the reference means
+  // to cut the side that reaches further aft square to the chord, but its cut never takes
+  // effect, and its numbers are those of the whole sides (see docs/wing.md).
+  profile.upper_ = [curve, tLe](double xsi) { return curve->Value(tLe + xsi * (1.0 - tLe)); };
+  profile.lower_ = [curve, tLe](double xsi) { return curve->Value(tLe - xsi * tLe); };
+  profile.upperCurve_ = piece(*curve, tLe, 1.0);
+  profile.lowerCurve_ = piece(*curve, tLe, 0.0);
   return profile;
 }
 
