@@ -281,3 +281,41 @@ def test_naca_four_digit_airfoils(tmp_path):
     assert math.isclose(volume, area * chord * chord * span, rel_tol=1e-3), volume
     assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(le, [1.0, 0.0, 0.0])), le
     assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(te, [3.0, 0.0, 0.0])), te
+
+
+def point_list_wing(path, settings=""):
+    """The Rect wing with a NACA 0012 point list (TE → lower → LE → upper → TE, 41 points at
+    cosine stations) as its airfoil, optionally with approximationSettings."""
+    stations = [0.5 * (1 - math.cos(math.pi * i / 20)) for i in range(21)]
+    half = [0.6 * (0.2969 * math.sqrt(x) - 0.126 * x - 0.3516 * x ** 2 + 0.2843 * x ** 3 - 0.1036 * x ** 4)
+            for x in stations]
+    xs = stations[::-1] + stations[1:]
+    zs = [-h for h in half[::-1]] + half[1:]
+    points = (f'<pointList><x mapType="vector">{";".join(map(str, xs))}</x>'
+              f'<y mapType="vector">{";".join("0" for _ in xs)}</y>'
+              f'<z mapType="vector">{";".join(map(str, zs))}</z>{settings}</pointList>')
+    text = open(WINGS).read()
+    start, end = text.index("<cst2D>"), text.index("</cst2D>") + len("</cst2D>")
+    path.write_text(text[:start] + points + text[end:])
+
+
+def test_approximated_point_list_airfoils(tmp_path):
+    """The reference's approximationSettings (outside CPACS 3.5): a least-squares cubic with
+    the given number of control points instead of the interpolating one; close to it, not
+    equal, and bad settings are errors naming the node."""
+    interpolated, approximated, broken = tmp_path / "i.xml", tmp_path / "a.xml", tmp_path / "b.xml"
+    point_list_wing(interpolated)
+    point_list_wing(approximated, "<approximationSettings><controlPointNumber>12</controlPointNumber>"
+                                  "<interpolatedPointsIndices>21</interpolatedPointsIndices></approximationSettings>")
+    point_list_wing(broken, "<approximationSettings><controlPointNumber>12</controlPointNumber>"
+                            "<interpolatedPointsIndices>99</interpolatedPointsIndices></approximationSettings>")
+    queries = [{"op": "wing_volume", "wing": "Rect"},
+               {"op": "wing_upper_point", "wing": "Rect", "segment": 1, "eta": 0.0, "xsi": 0.0}]
+    (exact, exact_le), (fitted, fitted_le) = ask_file(interpolated, *queries), ask_file(approximated, *queries)
+    # Twelve control points fit the NACA 0012 to about 2 % in volume.
+    assert math.isclose(exact, fitted, rel_tol=3e-2) and not math.isclose(exact, fitted, rel_tol=1e-9), (exact, fitted)
+    # Point 21 (the leading edge) is interpolated, and the fitted leading edge sits at the
+    # curve's middle parameter, as the reference has it: on the data point within 1e-3.
+    assert all(math.isclose(a, b, abs_tol=1e-3) for a, b in zip(exact_le, fitted_le)), (exact_le, fitted_le)
+    answer = airshape("query", str(broken), stdin='{"op":"wing_volume","wing":"Rect"}\n')
+    assert "interpolatedPointsIndices" in answer.stdout and "approximationSettings" in answer.stdout, answer.stdout

@@ -11,6 +11,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/chebyshev_approximation.h"
+#include "airshape/geometry/curve_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
@@ -30,6 +31,14 @@ Handle(Geom_BSplineCurve) piece(const Geom_BSplineCurve& curve, double from, dou
   BSplCLib::Reparametrize(0.0, 1.0, knots);
   part->SetKnots(knots);
   return part;
+}
+
+/// Puts a point list in the order trailing edge → lower side → leading edge → upper side:
+/// reversed when its lowest point comes after its highest.
+void orderFromLowerSide(std::vector<gp_Pnt>& points) {
+  const auto byZ = [](const gp_Pnt& a, const gp_Pnt& b) { return a.Z() < b.Z(); };
+  if (std::min_element(points.begin(), points.end(), byZ) > std::max_element(points.begin(), points.end(), byZ))
+    std::reverse(points.begin(), points.end());
 }
 
 /// A NACA four-digit airfoil: the standard thickness law about the standard camber line,
@@ -118,17 +127,50 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
     throw Error(ErrorCode::InvalidModel, "x, y and z have different lengths", {}, xpath);
   std::vector<gp_Pnt> points;
   for (std::size_t i = 0; i < x.size(); ++i) points.emplace_back(x[i], y[i], z[i]);
+  if (const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr)
+    return fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings");
   return fromPoints(std::move(points), xpath);
+}
+
+WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
+                                                const std::string& xpath) {
+  const auto* count = xml::firstChild(settings, "controlPointNumber");
+  if (!count) throw Error(ErrorCode::InvalidModel, "approximationSettings need a controlPointNumber", {}, xpath);
+  const int poles = static_cast<int>(model::parseVector(xml::text(*count), xpath + "/controlPointNumber").at(0));
+  std::vector<int> pinned;
+  if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
+    for (double index : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices"))
+      pinned.push_back(static_cast<int>(index) - 1);  // given 1-based
+  if (poles < 4) throw Error(ErrorCode::InvalidModel, "controlPointNumber must be 4 or more", {}, xpath);
+  for (int index : pinned)
+    if (index < 0 || index >= static_cast<int>(points.size()))
+      throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
+  WingProfile profile = fromPoints(points, xpath);  // chord, blunt or sharp
+  orderFromLowerSide(points);
+  const std::vector<double> parameters = geometry::chordParameters(points, 0.5);
+  const geometry::KnotVector space = geometry::uniformKnots(0.0, 1.0, poles, 3);
+  geometry::InterpolationConstraints constraints;
+  std::vector<int> kept = {0, static_cast<int>(points.size()) - 1};
+  for (int index : pinned) kept.push_back(index);
+  constraints.points = geometry::PoleMatrix(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const gp_Pnt& p = points.at(static_cast<std::size_t>(kept[i]));
+    constraints.parameters.push_back(parameters[static_cast<std::size_t>(kept[i])]);
+    constraints.points.row(static_cast<Eigen::Index>(i)) << p.X(), p.Y(), p.Z();
+  }
+  const Handle(Geom_BSplineCurve) curve = geometry::makeCurve(
+      space, geometry::approximatePoles(space, parameters, geometry::toMatrix(points), constraints));
+  profile.upper_ = [curve](double xsi) { return curve->Value(0.5 + 0.5 * xsi); };
+  profile.lower_ = [curve](double xsi) { return curve->Value(0.5 - 0.5 * xsi); };
+  profile.upperCurve_ = piece(*curve, 0.5, 1.0);
+  profile.lowerCurve_ = piece(*curve, 0.5, 0.0);
+  return profile;
 }
 
 WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::string& xpath) {
   if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
 
-  // Orientation: TE → lower side → LE → upper side → TE.
-  const auto byZ = [](const gp_Pnt& a, const gp_Pnt& b) { return a.Z() < b.Z(); };
-  const auto lowest = std::min_element(points.begin(), points.end(), byZ) - points.begin();
-  const auto highest = std::max_element(points.begin(), points.end(), byZ) - points.begin();
-  if (lowest > highest) std::reverse(points.begin(), points.end());
+  orderFromLowerSide(points);
 
   WingProfile profile;
   const gp_Pnt first = points.front(), last = points.back();

@@ -46,6 +46,12 @@ class WingProfile {
   /// The reference library's nacaProfile (outside CPACS 3.5): a 4-digit NACA airfoil from
   /// the standard thickness and camber laws, evaluated exactly along each side.
   static WingProfile fromNaca(const xercesc::DOMElement& naca, const std::string& xpath);
+  /// The reference's approximationSettings (outside CPACS 3.5): a least-squares cubic with
+  /// controlPointNumber poles on uniform knots through the points at centripetal parameters,
+  /// passing exactly through both ends and the interpolatedPointsIndices (1-based); the
+  /// leading edge at parameter 0.5.
+  static WingProfile fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
+                                            const std::string& xpath);
   /// An airfoil through points (any orientation), as a point list gives them.
   static WingProfile fromPoints(std::vector<gp_Pnt> points, const std::string& xpath);
 
