@@ -8,6 +8,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 
+#include "airshape/error.h"
 #include "airshape/geometry/coons_patches.h"
 
 namespace airshape::geometry {
@@ -71,6 +72,22 @@ TEST(CoonsPatchRows, CellsSitSideBySide) {
   }
   EXPECT_LT(rows[0]->Value(0.5, 0.0).Distance(gp_Pnt(0.5, 0, 0)), 1e-12);  // half of the first piece
   EXPECT_LT(rows[0]->Value(1.5, 1.0).Distance(gp_Pnt(2.5, 3, 0)), 1e-12);  // half of the second piece
+}
+
+TEST(CoonsPatchRows, AnEmptyCellIsAnError) {
+  // Two guides meeting the profiles at the same parameter leave an empty cell.
+  std::vector<Handle(Geom_BSplineCurve)> profiles = {arc(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0), 0.0),
+                                                     arc(gp_Pnt(0, 3, 0), gp_Pnt(4, 3, 0), 0.0)};
+  std::vector<Handle(Geom_BSplineCurve)> guides = {arc(gp_Pnt(0, 0, 0), gp_Pnt(0, 3, 0), 0.0),
+                                                   arc(gp_Pnt(0, 0, 0), gp_Pnt(0, 3, 0), 0.0)};
+  KnownCrossings crossings;
+  crossings.profileParameters.resize(2, 2);
+  crossings.profileParameters << 0.0, 0.0, 0.0, 0.0;
+  crossings.guideParameters.resize(2, 2);
+  crossings.guideParameters << 0.0, 0.0, 1.0, 1.0;
+  EXPECT_THROW(buildCoonsPatchRows(profiles, guides, crossings,
+                                   [](std::size_t, std::size_t) { return PatchBlending::Bilinear; }),
+               Error);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "airshape/geometry/coons_patches.h"
 
 #include <algorithm>
+#include <string>
 
 #include <BSplCLib.hxx>
 #include <GeomFill_BSplineCurves.hxx>
@@ -170,9 +171,20 @@ std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
       const auto& upper = profiles[static_cast<std::size_t>(k + 1)];
       const auto& first = guides[static_cast<std::size_t>(l)];
       const auto& second = guides[static_cast<std::size_t>(l + 1)];
-      cells.push_back(coonsPatch(piece(lower, p(k, l), p(k, l + 1)), piece(second, g(k, l + 1), g(k + 1, l + 1)),
-                                 piece(upper, p(k + 1, l), p(k + 1, l + 1)), piece(first, g(k, l), g(k + 1, l)),
-                                 blending(static_cast<std::size_t>(k), static_cast<std::size_t>(l))));
+      const std::string cell = "the cell between profiles " + std::to_string(k + 1) + " and " + std::to_string(k + 2) +
+                               " and guides " + std::to_string(l + 1) + " and " + std::to_string(l + 2);
+      if (!(p(k, l + 1) > p(k, l)) || !(p(k + 1, l + 1) > p(k + 1, l)) || !(g(k + 1, l) > g(k, l)) ||
+          !(g(k + 1, l + 1) > g(k, l + 1)))
+        throw Error(ErrorCode::InvalidModel, cell + " is empty: two curves cross at one point or out of order");
+      try {
+        cells.push_back(coonsPatch(piece(lower, p(k, l), p(k, l + 1)), piece(second, g(k, l + 1), g(k + 1, l + 1)),
+                                   piece(upper, p(k + 1, l), p(k + 1, l + 1)), piece(first, g(k, l), g(k + 1, l)),
+                                   blending(static_cast<std::size_t>(k), static_cast<std::size_t>(l))));
+      } catch (const Standard_Failure& failure) {
+        throw Error(
+            ErrorCode::InvalidModel,
+            cell + " cannot be filled: " + (failure.GetMessageString() ? failure.GetMessageString() : "OCCT failure"));
+      }
     }
     rows.push_back(sideBySide(cells));
   }
