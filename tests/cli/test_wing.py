@@ -111,6 +111,15 @@ def test_wetted_area_leaves_out_the_part_inside_the_parent():
     assert 0.5 * area < wetted < area
 
 
+def write_wing(path, uid, sections, segments, guide_profiles):
+    """The test wings' file with one more wing of the given sections and segments, and the
+    given guide curve profiles."""
+    wing = (f'<wing uID="{uid}"><name>w</name><transformation/><sections>{sections}</sections>'
+            f"<segments>{segments}</segments></wing>")
+    text = open(WINGS).read().replace("<wings>", "<wings>" + wing)
+    path.write_text(text.replace("</wingAirfoils>", f"</wingAirfoils><guideCurves>{guide_profiles}</guideCurves>"))
+
+
 def guided_wing(path, second_segment_continuity):
     """A rectangular wing (chord 2, sections at y = 0, 5, 10) of the parabolic CST airfoil
     with guide curves along the leading edge (rc 0) and the sharp trailing edge (rc -1). In
@@ -136,12 +145,7 @@ def guided_wing(path, second_segment_continuity):
     guide_profiles = "".join(
         f'<guideCurveProfile uID="{uid}"><name>p</name><pointList><rX>0;{alpha};0</rX><rY>0.25;0.5;0.75</rY>'
         f"<rZ>0;0;0</rZ></pointList></guideCurveProfile>" for uid, alpha in (("Forward", -0.05), ("Straight", 0)))
-    text = open(WINGS).read()
-    wing = (f'<wing uID="Guided"><name>g</name><transformation/><sections>{sections}</sections>'
-            f"<segments>{segments}</segments></wing>")
-    text = text.replace("<wings>", "<wings>" + wing).replace("</wingAirfoils>",
-                                                             f"</wingAirfoils><guideCurves>{guide_profiles}</guideCurves>")
-    path.write_text(text)
+    write_wing(path, "Guided", sections, segments, guide_profiles)
 
 
 def leading_edge_slopes_at_the_section(path):
@@ -194,12 +198,7 @@ def tapered_wing(path, with_guides, tip_guide_profile="Straight"):
     profiles = "".join(
         f'<guideCurveProfile uID="{uid}"><name>p</name><pointList><rX>{alpha}</rX><rY>0.5</rY>'
         f"<rZ>0</rZ></pointList></guideCurveProfile>" for uid, alpha in (("Forward", -0.05), ("Straight", 0)))
-    text = open(WINGS).read()
-    wing = (f'<wing uID="Tapered"><name>t</name><transformation/><sections>{sections}</sections>'
-            f"<segments>{segment}</segments></wing>")
-    text = text.replace("<wings>", "<wings>" + wing).replace("</wingAirfoils>",
-                                                             f"</wingAirfoils><guideCurves>{profiles}</guideCurves>")
-    path.write_text(text)
+    write_wing(path, "Tapered", sections, segment, profiles)
 
 
 def test_cells_blend_as_the_reference_decides(tmp_path):
