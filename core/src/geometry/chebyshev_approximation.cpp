@@ -1,13 +1,11 @@
 #include "airshape/geometry/chebyshev_approximation.h"
 
-#include <array>
 #include <cmath>
 #include <vector>
 
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
-#include <gp_Vec.hxx>
 
 namespace airshape::geometry {
 
@@ -85,16 +83,6 @@ std::vector<gp_XYZ> bezierPoles(const Piece& piece, const std::vector<Polynomial
   return poles;
 }
 
-/// Where the parametrisation of `f` stands still at an end (a superellipse's corner when an
-/// exponent is 1), the approximation can run a hair past the end point and back, folding the
-/// curve onto itself; the pole next to such an end is put onto it.
-void withoutOvershootAtTheEnds(TColgp_Array1OfPnt& poles) {
-  const int n = poles.Upper();
-  if (n < 3) return;
-  for (const auto& [end, next, after] : {std::array<int, 3>{1, 2, 3}, std::array<int, 3>{n, n - 1, n - 2}})
-    if (gp_Vec(poles(end), poles(next)).Dot(gp_Vec(poles(end), poles(after))) < 0.0) poles(next) = poles(end);
-}
-
 }  // namespace
 
 Handle(Geom_BSplineCurve) approximateByChebyshevPieces(const std::function<gp_Pnt(double)>& f, double first,
@@ -119,7 +107,6 @@ Handle(Geom_BSplineCurve) approximateByChebyshevPieces(const std::function<gp_Pn
   poles(pole) = f(last);
   knots(count + 1) = last;
   multiplicities(count + 1) = degree + 1;
-  withoutOvershootAtTheEnds(poles);
   return new Geom_BSplineCurve(poles, knots, multiplicities, degree);
 }
 

@@ -1,6 +1,7 @@
 #include "fuselage_profile.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -148,6 +149,18 @@ FuselageProfile sampledProfile(const std::function<gp_Pnt(double)>& at, std::vec
   return profile;
 }
 
+/// Where the parametrisation stands still at a quarter's end (an exponent of 1 makes the
+/// superellipse's corners such points), the approximation can run a hair past the corner
+/// and back, folding the profile onto itself; the pole next to such an end is put onto it.
+void withoutOvershootAtTheEnds(Geom_BSplineCurve& quarter) {
+  const int n = quarter.NbPoles();
+  if (n < 3) return;
+  for (const auto& [end, next, after] : {std::array<int, 3>{1, 2, 3}, std::array<int, 3>{n, n - 1, n - 2}}) {
+    const gp_Pnt e = quarter.Pole(end);
+    if (gp_Vec(e, quarter.Pole(next)).Dot(gp_Vec(e, quarter.Pole(after))) < 0.0) quarter.SetPole(next, e);
+  }
+}
+
 /// The superellipse of width and height 1: the upper and lower halves have their own
 /// exponents, and lowerHeightFraction sets where the widest point lies.
 FuselageProfile superEllipse(const schema::SuperEllipseProfileType& shape) {
@@ -163,8 +176,10 @@ FuselageProfile superEllipse(const schema::SuperEllipseProfileType& shape) {
   // Each quarter as the reference approximates it: piecewise Chebyshev, cubic, 1e-6; the
   // quarters joined with corners, so points at a given zeta agree with its numbers.
   std::vector<Handle(Geom_BSplineCurve)> quarters;
-  for (int q = 0; q < 4; ++q)
+  for (int q = 0; q < 4; ++q) {
     quarters.push_back(geometry::approximateByChebyshevPieces(at, 0.25 * q, 0.25 * (q + 1), {3, 1e-6, 10}));
+    withoutOvershootAtTheEnds(*quarters.back());
+  }
   FuselageProfile profile;
   profile.curve = geometry::concatenateCurves(quarters);
   return profile;

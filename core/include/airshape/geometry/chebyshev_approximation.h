@@ -24,8 +24,7 @@ struct ChebyshevSettings {
 /// multiplicity degree−1 that leave out the shared end points, so the result is C1 at the
 /// joins and passes through f(first) and f(last). The parameter is that of `f`. The
 /// deviation from `f` is of the order of the tolerance (the estimate is no bound, and the
-/// joins move points near them by about as much). Where `f` stands still at an end, the
-/// pole next to it is put onto the end point, so the curve does not run past it and back.
+/// joins move points near them by about as much).
 ///
 /// The reference library turns its analytic airfoils (CST, NACA) into curves this way; the
 /// same construction gives the same curves, so points at a given xsi agree.
