@@ -171,11 +171,36 @@ def test_guide_curve_errors_name_the_curve(tmp_path):
     assert "error" in answer and "Nowhere" in answer["error"] and "guideCurve" in answer["error"], answer
 
 
+def diamond_with_map(path, params):
+    """Sections of a diamond with corners at its four points; point 1 (y = 1) is pinned to the
+    profile parameter params[0] and point 3 (y = -1) to params[1]."""
+    points = ("<pointList><x>0;0;0;0;0</x><y>0;1;0;-1;0</y><z>1;0;-1;0;1</z>"
+              "<kinkIndices>0;1;2;3</kinkIndices><parameterMap><pointIndices>1;3</pointIndices>"
+              f"<paramOnCurve>{params[0]};{params[1]}</paramOnCurve></parameterMap></pointList>")
+    profiles = f'<fuselageProfiles><fuselageProfile uID="Diamond"><name>d</name>{points}</fuselageProfile></fuselageProfiles>'
+    path.write_text(HEADER + fuselage("F", "Diamond", 4.0) +
+                    f"</fuselages></model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
+
+
+def test_a_parameter_map_pins_points_to_zeta(tmp_path):
+    path = tmp_path / "diamond.xml"
+    diamond_with_map(path, (0.1, 0.6))
+    pinned, between = ask(path, {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0.0, "zeta": 0.1},
+                          {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0.0, "zeta": 0.35})
+    assert all(math.isclose(a, b, abs_tol=1e-12) for a, b in zip(pinned, [0, 1, 0])), pinned
+    # Point 2 (the bottom) lies halfway between the pinned points in parameter.
+    assert all(math.isclose(a, b, abs_tol=1e-12) for a, b in zip(between, [0, 0, -1])), between
+    diamond_with_map(path, (0.6, 0.1))
+    result = airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n')
+    answer = json.loads(result.stdout)
+    assert "error" in answer and "parameterMap" in answer["error"], answer
+
+
 def test_fuselage_conformance_does_not_regress():
     passed, output = conformance_passed("cases-fuselage.json")
     # Not every case passes yet (superellipse approximation, guide-curve files beyond the
     # case tolerance; see docs/fuselage.md). This floor guards what works.
-    assert passed >= 194, output[-3000:]
+    assert passed >= 196, output[-3000:]
 
 
 def test_faces_are_named(tmp_path):

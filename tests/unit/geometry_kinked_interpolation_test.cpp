@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/kinked_interpolation.h"
 
@@ -62,13 +63,35 @@ TEST(KinkedInterpolation, PiecewiseLinearReparametrisationMovesParametersNotPoin
   const auto parameters = chordParameters(points, 0.5);
   const auto curve = interpolateWithCorners(points, parameters, {}, true);
   // Point 3 moves to parameter 0.5; the others follow linearly between 0, 0.5 and 1.
-  const std::vector<double> from = {0.0, parameters[3], 1.0}, to = {0.0, 0.5, 1.0};
-  const auto moved = reparametrisePiecewiseLinearly(*curve, from, to);
+  auto newParameter = [&](double t) {
+    return t < parameters[3] ? 0.5 * t / parameters[3] : 0.5 + 0.5 * (t - parameters[3]) / (1.0 - parameters[3]);
+  };
+  std::vector<double> to;
+  for (double t : parameters) to.push_back(newParameter(t));
+  const auto moved = reparametrisePiecewiseLinearly(*curve, parameters, to);
   EXPECT_LT(moved->Value(0.5).Distance(points[3]), 1e-10);
   for (double s : {0.1, 0.3, 0.7, 0.95}) {
     const double t = s < 0.5 ? s / 0.5 * parameters[3] : parameters[3] + (s - 0.5) / 0.5 * (1.0 - parameters[3]);
     EXPECT_LT(moved->Value(s).Distance(curve->Value(t)), 1e-10) << s;
   }
+  // Every point's new parameter is a knot: of full multiplicity where the map bends
+  // (point 3), simple where it runs straight on.
+  for (std::size_t i = 1; i + 1 < to.size(); ++i) {
+    int index = 0;
+    for (int k = 1; k <= moved->NbKnots(); ++k)
+      if (std::abs(moved->Knot(k) - to[i]) < 1e-12) index = k;
+    ASSERT_NE(index, 0) << i;
+    EXPECT_EQ(moved->Multiplicity(index), i == 3 ? moved->Degree() : 1) << i;
+  }
+}
+
+TEST(KinkedInterpolation, AParameterMapMustIncrease) {
+  const auto points = closedWavyList(13);
+  const auto parameters = chordParameters(points, 0.5);
+  const auto curve = interpolateWithCorners(points, parameters, {}, true);
+  std::vector<double> to = parameters;
+  std::swap(to[2], to[3]);
+  EXPECT_THROW(reparametrisePiecewiseLinearly(*curve, parameters, to), Error);
 }
 
 }  // namespace

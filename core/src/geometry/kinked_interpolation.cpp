@@ -1,6 +1,7 @@
 #include "airshape/geometry/kinked_interpolation.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <BSplCLib.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -80,13 +81,25 @@ Handle(Geom_BSplineCurve)
 Handle(Geom_BSplineCurve)
     reparametrisePiecewiseLinearly(const Geom_BSplineCurve& curve, const std::vector<double>& from,
                                    const std::vector<double>& to) {
-  std::vector<Handle(Geom_BSplineCurve)> pieces;
-  for (std::size_t i = 1; i < from.size(); ++i) {
+  constexpr double kSameSlope = 1e-12, kSameKnot = 1e-12;
+  if (from.size() != to.size() || from.size() < 2)
+    throw Error(ErrorCode::InvalidArgument, "a parameter map needs as many new parameters as old, at least two");
+  for (std::size_t i = 1; i < from.size(); ++i)
     if (!(from[i] > from[i - 1]) || !(to[i] > to[i - 1]))
       throw Error(ErrorCode::InvalidModel, "the parameter map does not increase along the points");
-    pieces.push_back(withRange(trimmed(curve, from[i - 1], from[i]), to[i - 1], to[i]));
+  // Pieces between the places where the map bends, each moved linearly onto its new range.
+  auto slope = [&](std::size_t i) { return (to[i] - to[i - 1]) / (from[i] - from[i - 1]); };
+  std::vector<Handle(Geom_BSplineCurve)> pieces;
+  std::size_t start = 0;
+  for (std::size_t i = 1; i < from.size(); ++i) {
+    const bool bends = i + 1 < from.size() && std::abs(slope(i + 1) - slope(i)) > kSameSlope * std::abs(slope(i));
+    if (!bends && i + 1 < from.size()) continue;
+    pieces.push_back(withRange(trimmed(curve, from[start], from[i]), to[start], to[i]));
+    start = i;
   }
-  return concatenateCurves(pieces);
+  Handle(Geom_BSplineCurve) result = concatenateCurves(pieces);
+  for (std::size_t i = 1; i + 1 < to.size(); ++i) result->InsertKnot(to[i], 1, kSameKnot, false);
+  return result;
 }
 
 }  // namespace airshape::geometry

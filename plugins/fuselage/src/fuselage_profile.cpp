@@ -67,6 +67,23 @@ int pointIndexOf(int index, const std::vector<int>& listIndex, const std::string
   return static_cast<int>(found - listIndex.begin());
 }
 
+/// Every point's new parameter: the pinned points (index -> parameter) get theirs, the
+/// others follow linearly between them, as the reference maps them.
+std::vector<double> mappedLinearly(const std::vector<double>& parameters, const std::map<int, double>& pinned) {
+  std::vector<double> from, to, mapped;
+  for (const auto& [index, value] : pinned) {
+    from.push_back(parameters[static_cast<std::size_t>(index)]);
+    to.push_back(value);
+  }
+  for (double t : parameters) {
+    const auto above = static_cast<std::size_t>(std::upper_bound(from.begin(), from.end(), t) - from.begin());
+    const std::size_t piece = std::clamp<std::size_t>(above, 1, from.size() - 1);
+    const double share = (t - from[piece - 1]) / (from[piece] - from[piece - 1]);
+    mapped.push_back(to[piece - 1] + share * (to[piece] - to[piece - 1]));
+  }
+  return mapped;
+}
+
 FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   const schema::CurvePointListXYZType& list = *definition.pointList;
   const std::string xpath = list.xpath;
@@ -111,12 +128,11 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
       throw Error(ErrorCode::InvalidModel, "pointIndices and paramOnCurve have different lengths", {}, at);
     std::map<int, double> map = {{0, 0.0}, {static_cast<int>(points.size()) - 1, 1.0}};
     for (std::size_t i = 0; i < pinned.size(); ++i) map[pointIndexOf(pinned[i], listIndex, at)] = values[i];
-    std::vector<double> from, to;
-    for (const auto& [index, value] : map) {
-      from.push_back(parameters[static_cast<std::size_t>(index)]);
-      to.push_back(value);
-    }
-    profile.curve = geometry::reparametrisePiecewiseLinearly(*profile.curve, from, to);
+    const std::vector<double> mapped = mappedLinearly(parameters, map);
+    for (std::size_t i = 1; i < mapped.size(); ++i)
+      if (!(mapped[i] > mapped[i - 1]))
+        throw Error(ErrorCode::InvalidModel, "paramOnCurve does not increase along the points", {}, at);
+    profile.curve = geometry::reparametrisePiecewiseLinearly(*profile.curve, parameters, mapped);
     return profile;
   }
   // Re-fitted on uniform knots like the reference does: the loft through all profiles then

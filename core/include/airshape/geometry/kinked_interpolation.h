@@ -19,7 +19,9 @@ Handle(Geom_BSplineCurve)
 
 /// The same curve with a new parameter: the point that had parameter from[i] gets to[i],
 /// linearly in between (from and to ascending, spanning the curve's range). The shape does
-/// not change.
+/// not change. Every to[i] is a knot of the result, of full multiplicity where the map bends
+/// and at least simple elsewhere, as the reference's reparametrisation leaves them (a loft
+/// that spaces its sections by their poles sees the difference).
 Handle(Geom_BSplineCurve)
     reparametrisePiecewiseLinearly(const Geom_BSplineCurve& curve, const std::vector<double>& from,
                                    const std::vector<double>& to);
