@@ -84,16 +84,72 @@ std::vector<double> mappedLinearly(const std::vector<double>& parameters, const 
   return mapped;
 }
 
+/// The list's kinks as indices into the points read (repeats dropped).
+std::vector<int> kinksOf(const schema::CurvePointListXYZType& list, const std::vector<int>& listIndex) {
+  std::vector<int> kinks;
+  if (list.kinkIndices)
+    for (int index : indicesOf(*list.kinkIndices, list.xpath + "/kinkIndices"))
+      kinks.push_back(pointIndexOf(index, listIndex, list.xpath + "/kinkIndices"));
+  return kinks;
+}
+
+/// The list's parameter map: point index (into the points read) -> zeta.
+std::map<int, double> pinnedParametersOf(const schema::CurvePointListXYZType& list, const std::vector<int>& listIndex) {
+  std::map<int, double> pinned;
+  if (!list.parameterMap) return pinned;
+  const std::string at = list.parameterMap->xpath;
+  const std::vector<int> indices = indicesOf(list.parameterMap->pointIndices, at + "/pointIndices");
+  const std::vector<double> values = model::parseVector(list.parameterMap->paramOnCurve, at + "/paramOnCurve");
+  if (indices.size() != values.size())
+    throw Error(ErrorCode::InvalidModel, "pointIndices and paramOnCurve have different lengths", {}, at);
+  for (std::size_t i = 0; i < indices.size(); ++i) pinned[pointIndexOf(indices[i], listIndex, at)] = values[i];
+  return pinned;
+}
+
+/// The reference's half profile made whole: the points mirrored in y back to the first one
+/// (the last given point not repeated where it lies on the symmetry plane), kinks and pinned
+/// parameters mirrored with them. The given half ends at zeta 0.5 of the whole unless pinned.
+void mirrorHalf(std::vector<gp_Pnt>& points, std::vector<int>& kinks, std::map<int, double>& pinned,
+                const std::string& xpath) {
+  constexpr double kOnThePlane = 1e-6;
+  if (std::abs(points.front().Y()) > kOnThePlane)
+    throw Error(ErrorCode::InvalidModel, "a half profile must start on the symmetry plane (y = 0)", {}, xpath);
+  points.front().SetY(0.0);
+  const int given = static_cast<int>(points.size());
+  const double first = pinned.count(0) ? pinned[0] : 0.0;
+  const double last = first + 2.0 * ((pinned.count(given - 1) ? pinned[given - 1] : 0.5) - first);
+  for (int i = given - 1; i > 0; --i) {
+    const gp_Pnt p = points[static_cast<std::size_t>(i)];
+    if (i == given - 1 && std::abs(p.Y()) < kOnThePlane) continue;
+    const int mirror = static_cast<int>(points.size());
+    if (std::find(kinks.begin(), kinks.end(), i) != kinks.end()) kinks.push_back(mirror);
+    if (pinned.count(i)) pinned[mirror] = last + first - pinned[i];
+    points.emplace_back(p.X(), -p.Y(), p.Z());
+  }
+  points.push_back(points.front());
+  pinned[0] = first;
+  pinned[static_cast<int>(points.size()) - 1] = last;
+}
+
+/// The curve's parameter moved linearly onto [0, 1].
+void normaliseRange(Geom_BSplineCurve& curve) {
+  TColStd_Array1OfReal knots(1, curve.NbKnots());
+  curve.Knots(knots);
+  BSplCLib::Reparametrize(0.0, 1.0, knots);
+  curve.SetKnots(knots);
+}
+
 FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   const schema::CurvePointListXYZType& list = *definition.pointList;
   const std::string xpath = list.xpath;
   std::vector<int> listIndex;
   std::vector<gp_Pnt> points = readPoints(list, xpath, listIndex);
+  std::vector<int> kinks = kinksOf(list, listIndex);
+  std::map<int, double> pinned = pinnedParametersOf(list, listIndex);
   FuselageProfile profile;
-  const bool mirrored = isMirroredHalf(definition);
-  if (mirrored)  // the other half, back to the first point
-    for (std::size_t i = points.size() - 1; i-- > 0;) points.emplace_back(points[i].X(), -points[i].Y(), points[i].Z());
   profile.points = points;
+  profile.mirroredHalf = isMirroredHalf(definition);
+  if (profile.mirroredHalf) mirrorHalf(points, kinks, pinned, xpath);
 
   double size = 0.0;
   for (const gp_Pnt& a : points)
@@ -104,40 +160,29 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
     points.front() = seam;
     points.back() = seam;
   }
-  std::vector<int> kinks;
-  if (list.kinkIndices && !mirrored)
-    for (int index : indicesOf(*list.kinkIndices, xpath + "/kinkIndices"))
-      kinks.push_back(pointIndexOf(index, listIndex, xpath + "/kinkIndices"));
   const std::vector<double> parameters = geometry::chordParameters(points, 0.5);
   profile.curve = geometry::interpolateWithCorners(points, parameters, kinks, profile.closed);
-  if (mirrored) {  // back to the given half, over the whole range
-    profile.curve->Segment(0.0, 0.5);
-    TColStd_Array1OfReal knots(1, profile.curve->NbKnots());
-    profile.curve->Knots(knots);
-    BSplCLib::Reparametrize(0.0, 1.0, knots);
-    profile.curve->SetKnots(knots);
-    profile.closed = false;
-    profile.mirroredHalf = true;
-  }
-  if (list.parameterMap && !mirrored) {
+  if (!pinned.empty()) {
     // Pinned points get their given parameters; the others keep their places between them.
-    const std::string at = list.parameterMap->xpath;
-    const std::vector<int> pinned = indicesOf(list.parameterMap->pointIndices, at + "/pointIndices");
-    const std::vector<double> values = model::parseVector(list.parameterMap->paramOnCurve, at + "/paramOnCurve");
-    if (pinned.size() != values.size())
-      throw Error(ErrorCode::InvalidModel, "pointIndices and paramOnCurve have different lengths", {}, at);
-    std::map<int, double> map = {{0, 0.0}, {static_cast<int>(points.size()) - 1, 1.0}};
-    for (std::size_t i = 0; i < pinned.size(); ++i) map[pointIndexOf(pinned[i], listIndex, at)] = values[i];
-    const std::vector<double> mapped = mappedLinearly(parameters, map);
+    const std::string at = list.parameterMap ? list.parameterMap->xpath : xpath;
+    pinned.emplace(0, 0.0);
+    pinned.emplace(static_cast<int>(points.size()) - 1, 1.0);
+    const std::vector<double> mapped = mappedLinearly(parameters, pinned);
     for (std::size_t i = 1; i < mapped.size(); ++i)
       if (!(mapped[i] > mapped[i - 1]))
         throw Error(ErrorCode::InvalidModel, "paramOnCurve does not increase along the points", {}, at);
     profile.curve = geometry::reparametrisePiecewiseLinearly(*profile.curve, parameters, mapped);
-    return profile;
   }
-  // Re-fitted on uniform knots like the reference does: the loft through all profiles then
-  // needs few knots, and the numbers agree with the reference's.
-  profile.curve = geometry::refitOnUniformSpans(*profile.curve, parameters);
+  if (profile.mirroredHalf) {  // back to the given half, over the whole range
+    profile.curve->Segment(profile.curve->FirstParameter(),
+                           0.5 * (profile.curve->FirstParameter() + profile.curve->LastParameter()));
+    normaliseRange(*profile.curve);
+    profile.closed = false;
+  }
+  // Without pinned parameters (a half profile always has them: its ends), re-fitted on
+  // uniform knots like the reference does: the loft through all profiles then needs few
+  // knots, and the numbers agree with the reference's.
+  if (pinned.empty()) profile.curve = geometry::refitOnUniformSpans(*profile.curve, parameters);
   return profile;
 }
 
@@ -243,6 +288,7 @@ double FuselageProfile::guideScale(const Eigen::Affine3d& transform) const {
   if (points.empty()) return standardGuideScale;
   std::vector<Eigen::Vector3d> placed;
   for (const gp_Pnt& p : points) placed.push_back(transform * Eigen::Vector3d(p.X(), p.Y(), p.Z()));
+  if (mirroredHalf) return (placed.back() - placed.front()).norm();  // the half's ends lie on the plane
   const Eigen::Vector3d middle = 0.5 * (placed.front() + placed.back());
   double farthest = 0.0;
   for (const auto& p : placed) farthest = std::max(farthest, (p - middle).norm());

@@ -19,8 +19,8 @@ struct FuselageProfile {
   /// The reference's <symmetry>half</symmetry>: a half interpolated as its mirrored whole.
   /// Its relative circumference leaves out the closing edge.
   bool mirroredHalf = false;
-  /// The points of a point list (empty for a standard profile); for a mirrored half with
-  /// its mirror image, as the reference measures the guide scale on the whole.
+  /// The points of a point list as given (empty for a standard profile; a mirrored half
+  /// without its mirror image).
   std::vector<gp_Pnt> points;
   /// The length guide curve profiles are scaled by for a standard profile: the rectangle's
   /// height ratio, 1 for a superellipse (unscaled, as the reference has it).
@@ -28,7 +28,8 @@ struct FuselageProfile {
 
   /// The length guide curve profiles are scaled by where this profile is placed by
   /// `transform`: for a point list, from the middle of its first and last point to the
-  /// point farthest from there (its "diameter line"), in global coordinates.
+  /// point farthest from there (its "diameter line"), in global coordinates; for a mirrored
+  /// half, from its first point to its last (both on the symmetry plane).
   double guideScale(const Eigen::Affine3d& transform) const;
 
   /// Throws Error naming the profile's CPACS path for a definition that gives no curve.
