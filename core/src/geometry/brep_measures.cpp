@@ -12,11 +12,16 @@
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
+#include <GeomAdaptor_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Plane.hxx>
+#include <Geom_TrimmedCurve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <math.hxx>
 #include <math_Vector.hxx>
@@ -147,12 +152,46 @@ double occtVolume(const TopoDS_Shape& shape, Accuracy accuracy) {
   return properties.Mass();
 }
 
-/// The area of a plane face: adaptive when exact, OCCT's fixed Gauss rule when rough.
-double planeArea(const TopoDS_Face& face, Accuracy accuracy) {
-  if (accuracy == Accuracy::Exact) return areaOf(face);
-  GProp_GProps properties;
-  BRepGProp::SurfaceProperties(face, properties);
-  return properties.Mass();
+/// ∮ n·(C × C') dt / 2 along one edge's curve, in the direction the face runs it: the edge's
+/// share of a plane face's area (Green's theorem). Polynomial on every knot span of a
+/// non-rational B-spline (degree 2p − 1), so p + 1 Gauss points per span are exact there;
+/// other curves are taken as B-splines (rational ones with more points, then only nearly
+/// exact).
+double edgeAreaShare(const TopoDS_Edge& edge, const gp_Dir& normal) {
+  double first, last;
+  const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+  if (curve.IsNull()) return 0.0;  // a degenerate edge encloses nothing
+  const Handle(Geom_BSplineCurve) spline = GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last));
+  const GaussRule rule(spline->IsRational() ? 24 : spline->Degree() + 1);
+  const GeomAdaptor_Curve evaluator(spline);
+  const std::vector<double> spans = breaks(spline->Knots(), spline->FirstParameter(), spline->LastParameter());
+  const gp_Vec n(normal);
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < spans.size(); ++i) {
+    const double mid = 0.5 * (spans[i] + spans[i + 1]), half = 0.5 * (spans[i + 1] - spans[i]);
+    for (int a = 1; a <= rule.points.Length(); ++a) {
+      gp_Pnt p;
+      gp_Vec d;
+      evaluator.D1(mid + half * rule.points(a), p, d);
+      sum += rule.weights(a) * half * n.Dot(gp_Vec(p.XYZ()).Crossed(d));
+    }
+  }
+  return (edge.Orientation() == TopAbs_REVERSED ? -0.5 : 0.5) * sum;
+}
+
+/// The area of a plane face: exactly from its boundary (Green's theorem, robust where its
+/// boundary curves have many knots), or OCCT's fixed Gauss rule when rough.
+double planeArea(const TopoDS_Face& face, const Geom_Plane& plane, Accuracy accuracy) {
+  if (accuracy == Accuracy::Rough) {
+    GProp_GProps properties;
+    BRepGProp::SurfaceProperties(face, properties);
+    return properties.Mass();
+  }
+  const gp_Dir normal = plane.Position().Direction();
+  double area = 0.0;
+  for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next())
+    area += edgeAreaShare(TopoDS::Edge(edges.Current()), normal);
+  return std::abs(area);
 }
 
 /// (1/3)∮ P·n dA over every face, with the sign of the solid's orientation: exact on
@@ -171,7 +210,7 @@ double signedVolume(const TopoDS_Shape& solid, Accuracy accuracy) {
       const gp_Ax3& frame = plane->Position();
       const double offset = gp_Vec(frame.Location().XYZ()).Dot(gp_Vec(frame.Direction()));
       const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
-      volume += sense * orientation * offset * planeArea(face, accuracy) / 3.0;
+      volume += sense * orientation * offset * planeArea(face, *plane, accuracy) / 3.0;
     } else {
       return occtVolume(solid, accuracy);
     }
@@ -192,6 +231,8 @@ double areaOf(const TopoDS_Shape& faces) {
     const TopoDS_Face& face = TopoDS::Face(explorer.Current());
     if (const auto patch = rectangularPatch(face)) {
       area += patchArea(*patch);
+    } else if (const auto plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face)); !plane.IsNull()) {
+      area += planeArea(face, *plane, Accuracy::Exact);
     } else {
       GProp_GProps properties;
       BRepGProp::SurfaceProperties(face, properties, kIntegrationAccuracy);

@@ -1,0 +1,62 @@
+// Volumes of lofted solids are exact and do not depend on where the solid lies: the skin
+// is integrated per knot span, and planar caps by Green's theorem along their boundary
+// (OCCT's adaptive area of a cap bounded by a curve with many knots was off by 1e-5,
+// which the cap's distance from the origin turned into a wrong volume).
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <BRepBuilderAPI_Transform.hxx>
+
+#include "airshape/geometry/brep_measures.h"
+#include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/loft_piece.h"
+#include "airshape/geometry/skinning.h"
+
+namespace airshape::geometry {
+namespace {
+
+/// A closed wavy profile in the plane x = `x`: 2000 points, so a curve with as many knots as a guided fuselage's ring.
+std::vector<gp_Pnt> wavyProfile(double x, int count) {
+  std::vector<gp_Pnt> points;
+  for (int i = 0; i <= count; ++i) {
+    const double a = 2.0 * M_PI * i / count, r = 1.0 + 0.05 * std::sin(17.0 * a);
+    points.emplace_back(x, r * std::sin(a), 1.2 * r * std::cos(a));
+  }
+  points.back() = points.front();
+  return points;
+}
+
+/// The area inside a closed curve of the y-z plane by the shoelace formula on a fine polygon.
+double polygonArea(const Geom_BSplineCurve& curve, int samples) {
+  double area = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    const double t0 = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / samples;
+    const double t1 = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * (i + 1) / samples;
+    const gp_Pnt a = curve.Value(t0), b = curve.Value(t1);
+    area += 0.5 * (a.Y() * b.Z() - b.Y() * a.Z());
+  }
+  return std::abs(area);
+}
+
+TEST(Measures, APrismsVolumeIsItsCapTimesItsLengthWhereverItLies) {
+  const std::vector<gp_Pnt> start = wavyProfile(30.0, 2000), end = wavyProfile(32.0, 2000);
+  const auto parameters = chordParameters(start, 0.5);
+  std::vector<Handle(Geom_BSplineCurve)> profiles = {interpolateCurve(start, parameters, 3, true),
+                                                     interpolateCurve(end, parameters, 3, true)};
+  const double capArea = polygonArea(*profiles.front(), 200000);
+  const std::vector<double> sites = {0.0, 1.0};
+  const Handle(Geom_BSplineSurface) loft = skinCurves(profiles, sites, skinningSpace(sites, 1, false));
+  const LoftPiece piece = loftPiece(loft, 0.0, 1.0, true);
+  ASSERT_FALSE(piece.solid.IsNull()) << piece.solidProblem;
+
+  const double volume = volumeOf(piece.solid);
+  EXPECT_NEAR(volume, 2.0 * capArea, 1e-9 * volume);
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(-30.0, -1.0, 2.0));
+  const TopoDS_Shape moved = BRepBuilderAPI_Transform(piece.solid, shift, true).Shape();
+  EXPECT_NEAR(volumeOf(moved), volume, 1e-11 * volume);
+  EXPECT_NEAR(areaOf(piece.startCap), capArea, 1e-9 * capArea);
+}
+
+}  // namespace
+}  // namespace airshape::geometry
