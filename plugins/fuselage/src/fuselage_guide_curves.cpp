@@ -1,5 +1,7 @@
 #include "fuselage_guide_curves.h"
 
+#include <map>
+
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAdaptor_Curve.hxx>
 
@@ -17,29 +19,52 @@ struct ProfilePosition {
   std::optional<double> parameter;
 };
 
-ProfilePosition positionAtRelativeCircumference(const PlacedProfile& section, double rc) {
-  const Geom_BSplineCurve& curve = *section.curve;
-  GeomAdaptor_Curve adaptor(section.curve);
-  const double curveLength = GCPnts_AbscissaPoint::Length(adaptor);
-  const gp_Pnt start = curve.StartPoint(), end = curve.EndPoint();
-  const bool closingEdgeCounts = !section.profile->closed && !section.profile->mirroredHalf;
-  const double closingLength = closingEdgeCounts ? start.Distance(end) : 0.0;
-  const double length = rc * (curveLength + closingLength);
-  if (length < 0.0) return {start.Translated(curve.DN(curve.FirstParameter(), 1).Normalized() * length), {}};
-  if (length <= curveLength * (1.0 + 1e-12)) {  // rc = 1 on a closed profile is its end
-    if (length >= curveLength) return {end, curve.LastParameter()};
-    const double t = GCPnts_AbscissaPoint(adaptor, length, curve.FirstParameter()).Parameter();
-    return {curve.Value(t), t};
+/// Finds positions by relative circumference on one placed profile. Many guides meet each
+/// profile and every one is asked for more than once, so the profile's length is measured
+/// once and each answer is kept (arc lengths were two thirds of the cost of building a
+/// guided fuselage). Each is measured from the profile's start, as the reference measures
+/// it: measuring on from a nearer known point moves it by up to 1e-9.
+class CircumferenceWalker {
+ public:
+  explicit CircumferenceWalker(const PlacedProfile& section)
+      : curve_(*section.curve),
+        adaptor_(section.curve),
+        curveLength_(GCPnts_AbscissaPoint::Length(adaptor_)),
+        closingLength_(!section.profile->closed && !section.profile->mirroredHalf
+                           ? curve_.StartPoint().Distance(curve_.EndPoint())
+                           : 0.0) {}
+
+  ProfilePosition at(double rc) {
+    const auto cached = positions_.find(rc);
+    if (cached != positions_.end()) return cached->second;
+    return positions_.emplace(rc, measured(rc * (curveLength_ + closingLength_))).first->second;
   }
-  if (closingLength == 0.0)
-    return {end.Translated(curve.DN(curve.LastParameter(), 1).Normalized() * (length - curveLength)), {}};
-  return {end.Translated(gp_Vec(end, start).Normalized() * (length - curveLength)), {}};
-}
+
+ private:
+  ProfilePosition measured(double length) const {
+    const gp_Pnt start = curve_.StartPoint(), end = curve_.EndPoint();
+    if (length < 0.0) return {start.Translated(curve_.DN(curve_.FirstParameter(), 1).Normalized() * length), {}};
+    if (length <= curveLength_ * (1.0 + 1e-12)) {  // rc = 1 on a closed profile is its end
+      if (length >= curveLength_) return {end, curve_.LastParameter()};
+      const double t = GCPnts_AbscissaPoint(adaptor_, length, curve_.FirstParameter()).Parameter();
+      return {curve_.Value(t), t};
+    }
+    if (closingLength_ == 0.0)
+      return {end.Translated(curve_.DN(curve_.LastParameter(), 1).Normalized() * (length - curveLength_)), {}};
+    return {end.Translated(gp_Vec(end, start).Normalized() * (length - curveLength_)), {}};
+  }
+
+  const Geom_BSplineCurve& curve_;
+  GeomAdaptor_Curve adaptor_;
+  double curveLength_, closingLength_;
+  std::map<double, ProfilePosition> positions_;
+};
 
 /// Where a guide meets a profile: by relative circumference, or directly by the profile
 /// curve's parameter (the reference's fromParameter/toParameter).
-ProfilePosition positionOn(const PlacedProfile& section, const model::ProfilePosition& at) {
-  if (!at.isCurveParameter) return positionAtRelativeCircumference(section, at.value);
+ProfilePosition positionOn(const PlacedProfile& section, CircumferenceWalker& walker,
+                           const model::ProfilePosition& at) {
+  if (!at.isCurveParameter) return walker.at(at.value);
   const Geom_BSplineCurve& curve = *section.curve;
   if (at.value < curve.FirstParameter() || at.value > curve.LastParameter())
     throw Error(ErrorCode::InvalidModel, "a guide curve's profile parameter lies outside the profile's range");
@@ -50,10 +75,11 @@ ProfilePosition positionOn(const PlacedProfile& section, const model::ProfilePos
 
 FuselageGuides fuselageGuideCurves(const schema::CpacsType& cpacs, const std::vector<PlacedProfile>& sections,
                                    const std::vector<const schema::GuideCurvesType*>& perSegment) {
+  std::vector<CircumferenceWalker> walkers(sections.begin(), sections.end());
   model::GuideCurveSections described;
   described.count = sections.size();
   described.pointAt = [&](std::size_t k, const model::ProfilePosition& at) {
-    return positionOn(sections[k], at).point;
+    return positionOn(sections[k], walkers[k], at).point;
   };
   described.scale = [&](std::size_t k) { return sections[k].profile->guideScale(sections[k].transform); };
   described.centre = [&](std::size_t k) {
@@ -72,8 +98,8 @@ FuselageGuides fuselageGuideCurves(const schema::CpacsType& cpacs, const std::ve
     guides.startPositions.push_back(guide.positions.front().value);
     guides.smoothAt.push_back(guide.smoothAt);
     for (Eigen::Index k = 0; k < K; ++k) {
-      const auto position =
-          positionOn(sections[static_cast<std::size_t>(k)], guide.positions[static_cast<std::size_t>(k)]);
+      const auto section = static_cast<std::size_t>(k);
+      const auto position = positionOn(sections[section], walkers[section], guide.positions[section]);
       if (!position.parameter)
         throw Error(ErrorCode::InvalidModel, "guide curve '" + guide.rootUid +
                                                  "' leaves the profile's curve (relative circumference beyond it)");
