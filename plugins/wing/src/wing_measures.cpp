@@ -2,10 +2,19 @@
 
 #include <cmath>
 
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
 #include <Bnd_Box.hxx>
+#include <Precision.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Ax2.hxx>
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 
 namespace airshape::wing {
 
@@ -17,18 +26,6 @@ gp_Pnt projected(gp_Pnt p, const std::string& plane) {
   if (plane == "x-z") p.SetY(0.0);
   if (plane == "y-z") p.SetX(0.0);
   return p;
-}
-
-gp_Pnt mirrored(gp_Pnt p, const std::string& symmetry) {
-  if (symmetry == "x-z") p.SetY(-p.Y());
-  if (symmetry == "x-y") p.SetZ(-p.Z());
-  if (symmetry == "y-z") p.SetX(-p.X());
-  return p;
-}
-
-gp_Pnt moved(const model::Transform& transform, const gp_Pnt& p) {
-  const Eigen::Vector3d v = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
-  return gp_Pnt(v.x(), v.y(), v.z());
 }
 
 /// Index (0 = x, 1 = y, 2 = z) of the axis along which the wing spans.
@@ -50,6 +47,32 @@ int majorAxis(const WingGeometry& wing, const std::string& symmetry) {
   const int a = (deepest + 1) % 3, b = (deepest + 2) % 3;
   const int first = std::min(a, b), second = std::max(a, b);
   return s[second] > s[first] ? second : first;  // ties go to the lower axis (y before z)
+}
+
+/// The reference measures spans on wires tessellated with this deflection: the box is that
+/// of the polygon's nodes, enlarged by the deflection and the edges' tolerance (OCCT's
+/// BRepBndLib), so only the same tessellation of the same curves gives its numbers.
+constexpr double kSpanDeflection = 1e-4;
+
+/// A section's airfoil outline where the span measures it (closed by the trailing edge
+/// when blunt), as one wire.
+TopoDS_Wire placedOutline(const SegmentEnd& end, const model::Transform& unparented) {
+  std::vector<Handle(Geom_BSplineCurve)> curves;
+  for (const Handle(Geom_BSplineCurve) & curve : end.profile->outline())
+    curves.push_back(geometry::transformed(curve, unparented * end.transform));
+  BRepBuilderAPI_MakeWire wire;
+  for (const Handle(Geom_BSplineCurve) & curve : curves) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
+  const gp_Pnt first = curves.front()->StartPoint(), last = curves.back()->EndPoint();
+  if (first.Distance(last) > Precision::Confusion()) wire.Add(BRepBuilderAPI_MakeEdge(last, first).Edge());
+  return wire.Wire();
+}
+
+/// The mirror in a symmetry plane ("x-y", "x-z" or "y-z").
+gp_Trsf mirror(const std::string& symmetry) {
+  const gp_Dir normal = symmetry == "x-y" ? gp_Dir(0, 0, 1) : symmetry == "x-z" ? gp_Dir(0, 1, 0) : gp_Dir(1, 0, 0);
+  gp_Trsf transformation;
+  transformation.SetMirror(gp_Ax2(gp_Pnt(0, 0, 0), normal));
+  return transformation;
 }
 
 }  // namespace
@@ -92,31 +115,19 @@ MeanAerodynamicChord meanAerodynamicChord(const WingGeometry& wing) {
 }
 
 double span(const WingGeometry& wing, const std::string& symmetry, const model::Transform& unparented) {
-  constexpr int kSamples = 200;
   Bnd_Box box;
-  auto add = [&](const SegmentEnd& end) {
-    for (int i = 0; i <= kSamples; ++i) {
-      const double xsi = static_cast<double>(i) / kSamples;
-      for (const gp_Pnt& p : {end.upper(xsi), end.lower(xsi)}) {
-        const gp_Pnt q = moved(unparented, p);
-        box.Add(q);
-        if (symmetry != "none") box.Add(mirrored(q, symmetry));
-      }
+  for (const WingSegment& s : wing.segments())
+    for (const SegmentEnd* end : {&s.inner, &s.outer}) {
+      const TopoDS_Wire outline = placedOutline(*end, unparented);
+      BRepMesh_IncrementalMesh tessellation(outline, kSpanDeflection);
+      BRepBndLib::Add(outline, box);
+      if (symmetry != "none") BRepBndLib::Add(BRepBuilderAPI_Transform(outline, mirror(symmetry)).Shape(), box);
     }
-  };
-  for (const WingSegment& s : wing.segments()) {
-    add(s.inner);
-    add(s.outer);
-  }
   if (box.IsVoid()) return 0.0;
   double xmin, ymin, zmin, xmax, ymax, zmax;
   box.Get(xmin, ymin, zmin, xmax, ymax, zmax);
   const double extent[3] = {xmax - xmin, ymax - ymin, zmax - zmin};
-  // The definition is the box of the profile wires tessellated with deflection 1e-4 and
-  // enlarged, as OCCT's BRepBndLib does, by that deflection plus the edge tolerance (1e-7)
-  // on each side.
-  constexpr double kBoxEnlargement = 1e-4 + 1e-7;
-  return extent[majorAxis(wing, symmetry)] - 2.0 * box.GetGap() + 2.0 * kBoxEnlargement;
+  return extent[majorAxis(wing, symmetry)];
 }
 
 }  // namespace airshape::wing

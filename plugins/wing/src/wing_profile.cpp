@@ -218,7 +218,15 @@ WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::strin
   profile.lower_ = [curve, tLe](double xsi) { return curve->Value(tLe - xsi * tLe); };
   profile.upperCurve_ = piece(*curve, tLe, 1.0);
   profile.lowerCurve_ = piece(*curve, tLe, 0.0);
+  profile.interpolated_ = curve;
   return profile;
+}
+
+std::vector<Handle(Geom_BSplineCurve)> WingProfile::outline() const {
+  if (!interpolated_.IsNull()) return {interpolated_};
+  Handle(Geom_BSplineCurve) lower = Handle(Geom_BSplineCurve)::DownCast(lowerCurve_->Copy());
+  lower->Reverse();
+  return {lower, upperCurve_};
 }
 
 namespace {

@@ -36,6 +36,12 @@ class WingProfile {
   const Handle(Geom_BSplineCurve) & upperCurve() const { return upperCurve_; }
   const Handle(Geom_BSplineCurve) & lowerCurve() const { return lowerCurve_; }
 
+  /// The airfoil's outline as the reference draws its wire, from the lower trailing-edge
+  /// end over the leading edge to the upper end: a point list's one interpolated curve (in
+  /// its own parameter), otherwise the lower side reversed and the upper side. A blunt
+  /// trailing edge is not part of it.
+  std::vector<Handle(Geom_BSplineCurve)> outline() const;
+
   const gp_Pnt& leadingEdge() const { return leadingEdge_; }
   const gp_Pnt& trailingEdge() const { return trailingEdge_; }
   bool bluntTrailingEdge() const { return blunt_; }
@@ -63,6 +69,7 @@ class WingProfile {
   // Each side as a function of xsi (0 at the LE).
   Side upper_, lower_;
   Handle(Geom_BSplineCurve) upperCurve_, lowerCurve_;
+  Handle(Geom_BSplineCurve) interpolated_;  ///< a point list's whole curve, else null
   gp_Pnt leadingEdge_, trailingEdge_;
   bool blunt_ = false;
   bool lowerXsiFromTrailingEdge_ = false;
