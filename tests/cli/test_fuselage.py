@@ -59,6 +59,49 @@ def test_cylinder_in_closed_form(tmp_path):
     assert math.isclose(half_circumference, math.pi, rel_tol=1e-5)
 
 
+def standard_profile_fuselages(path):
+    """Prisms 4 long of three standard profiles: the superellipse with all exponents 2 (the
+    circle of diameter 1), with all exponents 1 (the diamond of diagonals 1) and a rectangle
+    0.6 high with corners of radius 0.1."""
+    def superellipse(exponent):
+        return (f"<standardProfile><superEllipse><lowerHeightFraction>0.5</lowerHeightFraction>"
+                f"<mUpper>{exponent}</mUpper><nUpper>{exponent}</nUpper><mLower>{exponent}</mLower>"
+                f"<nLower>{exponent}</nLower></superEllipse></standardProfile>")
+    rectangle = ("<standardProfile><rectangle><cornerRadius>0.1</cornerRadius>"
+                 "<heightToWidthRatio>0.6</heightToWidthRatio></rectangle></standardProfile>")
+    profiles = "".join(f'<fuselageProfile uID="{uid}"><name>p</name>{shape}</fuselageProfile>'
+                       for uid, shape in (("Circle", superellipse(2)), ("Diamond", superellipse(1)),
+                                          ("Rectangle", rectangle)))
+    path.write_text(HEADER + fuselage("C", "Circle", 4.0) + fuselage("D", "Diamond", 4.0) +
+                    fuselage("R", "Rectangle", 4.0) +
+                    f"</fuselages></model></aircraft><profiles><fuselageProfiles>{profiles}</fuselageProfiles>"
+                    "</profiles></vehicles></cpacs>")
+
+
+def test_standard_profiles_in_closed_form(tmp_path):
+    path = tmp_path / "standard.xml"
+    standard_profile_fuselages(path)
+    (circle, diamond, rectangle, top, side, bottom, corner_free, rectangle_top, girth) = ask(
+        path, {"op": "fuselage_volume", "fuselage": "C"}, {"op": "fuselage_volume", "fuselage": "D"},
+        {"op": "fuselage_volume", "fuselage": "R"},
+        {"op": "fuselage_point", "fuselage": "C", "segment": 1, "eta": 0.5, "zeta": 0.0},
+        {"op": "fuselage_point", "fuselage": "D", "segment": 1, "eta": 0.5, "zeta": 0.25},
+        {"op": "fuselage_point", "fuselage": "D", "segment": 1, "eta": 0.5, "zeta": 0.5},
+        {"op": "fuselage_point", "fuselage": "D", "segment": 1, "eta": 0.5, "zeta": 0.125},
+        {"op": "fuselage_point", "fuselage": "R", "segment": 2, "eta": 0.0, "zeta": 0.0},
+        {"op": "fuselage_circumference", "fuselage": "C", "segment": 1, "eta": 0.3})
+    # The quarters are the reference's approximations to 1e-6; volumes follow closely.
+    assert math.isclose(circle, math.pi / 4 * 4.0, rel_tol=1e-5), circle
+    assert math.isclose(girth, math.pi, rel_tol=1e-5), girth
+    assert math.isclose(diamond, 0.5 * 4.0, rel_tol=1e-6), diamond
+    assert math.isclose(rectangle, (0.6 - (4 - math.pi) * 0.1 ** 2) * 4.0, rel_tol=1e-5), rectangle
+    # Each superellipse starts at the top and its quarters end exactly at the side, the bottom.
+    for got, want in ((top, [1, 0, 0.5]), (side, [1, 0.5, 0]), (bottom, [1, 0, -0.5]), (rectangle_top, [2, 0, 0.3])):
+        assert all(math.isclose(a, b, abs_tol=1e-12) for a, b in zip(got, want)), (got, want)
+    # Half way along the diamond's first edge.
+    assert abs(abs(corner_free[1]) + abs(corner_free[2]) - 0.5) < 1e-6, corner_free
+
+
 def test_bad_arguments_are_errors(tmp_path):
     path = tmp_path / "cylinders.xml"
     write_cylinders(path)
@@ -217,8 +260,7 @@ def test_a_mirrored_half_profile_keeps_its_kinks(tmp_path):
 
 def test_fuselage_conformance_does_not_regress():
     passed, output = conformance_passed("cases-fuselage.json")
-    # Not every case passes yet (superellipse approximation, guide-curve files beyond the
-    # case tolerance; see docs/fuselage.md). This floor guards what works.
+    # Every case passes; the floor guards that.
     assert passed >= 201, output[-3000:]
 
 
