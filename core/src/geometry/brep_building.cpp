@@ -1,6 +1,9 @@
 #include "airshape/geometry/brep_building.h"
 
 #include <cmath>
+#include <optional>
+
+#include <Eigen/Eigenvalues>
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -16,6 +19,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Pln.hxx>
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
@@ -29,6 +33,27 @@ constexpr double kTolerance = 1e-7;
 constexpr double kSewingTolerance = 1e-6;
 /// A solid enclosing less than this fraction of its box diagonal cubed encloses nothing.
 constexpr double kEmptyVolume = 1e-12;
+
+/// The plane through every pole of the curves (their least-squares plane) when they all lie
+/// on it within kTolerance; nothing otherwise.
+std::optional<gp_Pln> planeOfPoles(const std::vector<Handle(Geom_BSplineCurve)>& curves) {
+  std::vector<Eigen::Vector3d> poles;
+  for (const auto& curve : curves)
+    for (int i = 1; i <= curve->NbPoles(); ++i)
+      poles.emplace_back(curve->Pole(i).X(), curve->Pole(i).Y(), curve->Pole(i).Z());
+  if (poles.size() < 3) return std::nullopt;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : poles) centre += p;
+  centre /= static_cast<double>(poles.size());
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const auto& p : poles) spread += (p - centre) * (p - centre).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(spread);
+  if (axes.info() != Eigen::Success || !(axes.eigenvalues()(1) > 0.0)) return std::nullopt;  // a line or a point
+  const Eigen::Vector3d normal = axes.eigenvectors().col(0);  // the direction of least spread
+  for (const auto& p : poles)
+    if (std::abs((p - centre).dot(normal)) > kTolerance) return std::nullopt;
+  return gp_Pln(gp_Pnt(centre.x(), centre.y(), centre.z()), gp_Dir(normal.x(), normal.y(), normal.z()));
+}
 
 }  // namespace
 
@@ -64,6 +89,13 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   BRepBuilderAPI_MakeWire wire;
   for (const auto& curve : boundary) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
   if (!wire.IsDone()) throw Error(ErrorCode::InvalidModel, "the boundary curves do not join into a wire");
+  // A B-spline lies in a plane exactly when its poles do, so the plane through the poles
+  // spares OCCT's search for one (a fifth of building a wing); near-planar boundaries are
+  // left to that search, which decides as before.
+  if (const std::optional<gp_Pln> plane = planeOfPoles(boundary)) {
+    BRepBuilderAPI_MakeFace face(*plane, wire.Wire(), true);
+    if (face.IsDone()) return face.Face();
+  }
   BRepBuilderAPI_MakeFace face(wire.Wire(), true);
   if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
   return face.Face();
