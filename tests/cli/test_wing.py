@@ -111,6 +111,20 @@ def test_wetted_area_leaves_out_the_part_inside_the_parent():
     assert 0.5 * area < wetted < area
 
 
+def test_a_segment_of_zero_length_is_an_error(tmp_path):
+    """Two sections in one place: the segment between them encloses nothing, and says so."""
+    path = tmp_path / "flat.xml"
+    sections = "".join(
+        f'<section uID="ZS{i}"><name>s</name><transformation/><elements><element uID="ZE{i}"><name>e</name>'
+        f"<airfoilUID>Parabolic</airfoilUID><transformation/></element></elements></section>" for i in range(2))
+    segments = ('<segment uID="ZW"><name>s</name><fromElementUID>ZE0</fromElementUID>'
+                "<toElementUID>ZE1</toElementUID></segment>")
+    write_wing(path, "Flat", sections, segments, "")
+    result = airshape("query", str(path), stdin='{"op":"wing_segment_volume","wing":"Flat","segment":1}\n')
+    answer = json.loads(result.stdout)
+    assert "error" in answer and "'ZW'" in answer["error"] and "no volume" in answer["error"], answer
+
+
 def write_wing(path, uid, sections, segments, guide_profiles):
     """The test wings' file with one more wing of the given sections and segments, and the
     given guide curve profiles."""

@@ -101,6 +101,14 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   return face.Face();
 }
 
+void requireVolume(const TopoDS_Shape& solid) {
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box);
+  const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+  if (std::abs(roughSignedVolumeOf(solid)) <= kEmptyVolume * size * size * size)
+    throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
+}
+
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces) {
   BRepBuilderAPI_Sewing sewing(kSewingTolerance);
   for (const TopoDS_Face& face : faces)
@@ -109,13 +117,8 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
   TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
   TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
-  const double volume = roughSignedVolumeOf(solid);
-  Bnd_Box box;
-  BRepBndLib::Add(solid, box);
-  const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
-  if (std::abs(volume) <= kEmptyVolume * size * size * size)
-    throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
-  if (volume < 0) solid.Reverse();  // outward normals, so that Boolean operations see the inside
+  requireVolume(solid);
+  if (roughSignedVolumeOf(solid) < 0) solid.Reverse();  // outward normals, so that Booleans see the inside
   if (sewnFaces) {
     sewnFaces->clear();
     for (const TopoDS_Face& face : faces)

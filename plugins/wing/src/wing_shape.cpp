@@ -68,6 +68,11 @@ SegmentShape segmentShape(const WingSegment& segment) {
   shape.innerCap = TopoDS::Face(loft.FirstShape());
   shape.outerCap = TopoDS::Face(loft.LastShape());
   shape.solid = loft.Shape();
+  try {
+    geometry::requireVolume(shape.solid);
+  } catch (const Error& error) {
+    throw Error(error.code(), "segment '" + segment.uid + "': " + error.message());
+  }
   return shape;
 }
 

@@ -29,4 +29,8 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
 
+/// Throws Error when the solid encloses no volume (less than 1e-12 of its box diagonal
+/// cubed: a segment of zero length or thickness).
+void requireVolume(const TopoDS_Shape& solid);
+
 }  // namespace airshape::geometry
