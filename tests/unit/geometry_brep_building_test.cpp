@@ -3,6 +3,10 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Plane.hxx>
 #include <gp_Pln.hxx>
@@ -41,6 +45,25 @@ TEST(BrepBuilding, APlanarCapLiesInItsBoundarysPlane) {
 
 TEST(BrepBuilding, ABoundaryThatLeavesItsPlaneIsAnError) {
   EXPECT_THROW(planarFace({ellipse(gp_Pnt(0, 0, 0), gp_Vec(1, 0, 0), gp_Vec(0, 1, 0), 0.05)}), Error);
+}
+
+TEST(BrepBuilding, ARuledLoftIsAValidSolidWithSharedEdges) {
+  // Two ellipses of one wire each, 3 apart along z, the second smaller: a frustum-like solid.
+  const gp_Vec x(1, 0, 0), y(0, 1, 0);
+  const Handle(Geom_BSplineCurve) bottom = ellipse(gp_Pnt(0, 0, 0), x, y);
+  const Handle(Geom_BSplineCurve) top = ellipse(gp_Pnt(0, 0, 3), 0.5 * x, 0.5 * y);
+  const RuledLoft loft = ruledLoft(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(bottom).Edge()).Wire(),
+                                   BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(top).Edge()).Wire());
+  EXPECT_TRUE(BRepCheck_Analyzer(loft.solid).IsValid());
+  // A frustum of elliptic caps: h/3 (A1 + A2 + sqrt(A1 A2)), A2 = A1 / 4.
+  const double a1 = areaOf(loft.firstCap), a2 = areaOf(loft.lastCap);
+  EXPECT_NEAR(a2, a1 / 4.0, 1e-9 * a1);
+  EXPECT_NEAR(volumeOf(loft.solid), 3.0 / 3.0 * (a1 + a2 + std::sqrt(a1 * a2)), 1e-9 * a1 * 3.0);
+  // Outward: OCCT classifies a point far away as outside.
+  BRepClass3d_SolidClassifier outside(loft.solid, gp_Pnt(0, 0, 100), 1e-7);
+  EXPECT_EQ(outside.State(), TopAbs_OUT);
+  BRepClass3d_SolidClassifier inside(loft.solid, gp_Pnt(0, 0, 1), 1e-7);
+  EXPECT_EQ(inside.State(), TopAbs_IN);
 }
 
 }  // namespace

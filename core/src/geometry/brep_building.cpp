@@ -11,11 +11,17 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
@@ -55,6 +61,41 @@ std::optional<gp_Pln> planeOfPoles(const std::vector<Handle(Geom_BSplineCurve)>&
   return gp_Pln(gp_Pnt(centre.x(), centre.y(), centre.z()), gp_Dir(normal.x(), normal.y(), normal.z()));
 }
 
+/// The planar face on a closed wire, sharing its edges. A B-spline lies in a plane exactly
+/// when its poles do, so the plane through the poles spares OCCT's search for one (a fifth
+/// of building a wing); other edges and near-planar wires are left to that search, which
+/// decides as before.
+TopoDS_Face planarFaceOn(const TopoDS_Wire& wire) {
+  std::vector<Handle(Geom_BSplineCurve)> curves;
+  for (TopExp_Explorer edges(wire, TopAbs_EDGE); edges.More(); edges.Next()) {
+    double first, last;
+    const auto curve =
+        Handle(Geom_BSplineCurve)::DownCast(BRep_Tool::Curve(TopoDS::Edge(edges.Current()), first, last));
+    if (curve.IsNull()) return BRepBuilderAPI_MakeFace(wire, true).Face();
+    curves.push_back(curve);
+  }
+  const std::optional<gp_Pln> plane = planeOfPoles(curves);
+  BRepBuilderAPI_MakeFace face =
+      plane ? BRepBuilderAPI_MakeFace(*plane, wire, true) : BRepBuilderAPI_MakeFace(wire, true);
+  if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
+  return face.Face();
+}
+
+/// The cap turned, where needed, so that it runs each of its edges against the side face
+/// that shares it (a closed shell uses every edge once each way).
+TopoDS_Face facingTheSides(TopoDS_Face cap, const TopTools_IndexedDataMapOfShapeListOfShape& facesOfEdges) {
+  for (TopExp_Explorer edges(cap, TopAbs_EDGE); edges.More(); edges.Next()) {
+    const TopoDS_Shape& edge = edges.Current();
+    if (!facesOfEdges.Contains(edge))
+      throw Error(ErrorCode::InvalidModel, "the ruled skin does not end on its profiles' edges");
+    const TopoDS_Shape& side = facesOfEdges.FindFromKey(edge).First();
+    for (TopExp_Explorer sideEdges(side, TopAbs_EDGE); sideEdges.More(); sideEdges.Next())
+      if (sideEdges.Current().IsSame(edge))
+        return sideEdges.Current().Orientation() == edge.Orientation() ? TopoDS::Face(cap.Reversed()) : cap;
+  }
+  return cap;
+}
+
 }  // namespace
 
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
@@ -89,16 +130,7 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   BRepBuilderAPI_MakeWire wire;
   for (const auto& curve : boundary) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
   if (!wire.IsDone()) throw Error(ErrorCode::InvalidModel, "the boundary curves do not join into a wire");
-  // A B-spline lies in a plane exactly when its poles do, so the plane through the poles
-  // spares OCCT's search for one (a fifth of building a wing); near-planar boundaries are
-  // left to that search, which decides as before.
-  if (const std::optional<gp_Pln> plane = planeOfPoles(boundary)) {
-    BRepBuilderAPI_MakeFace face(*plane, wire.Wire(), true);
-    if (face.IsDone()) return face.Face();
-  }
-  BRepBuilderAPI_MakeFace face(wire.Wire(), true);
-  if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
-  return face.Face();
+  return planarFaceOn(wire.Wire());
 }
 
 void requireVolume(const TopoDS_Shape& solid) {
@@ -125,6 +157,36 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
       sewnFaces->push_back(face.IsNull() || !sewing.IsModified(face) ? face : TopoDS::Face(sewing.Modified(face)));
   }
   return solid;
+}
+
+RuledLoft ruledLoft(const TopoDS_Wire& first, const TopoDS_Wire& last) {
+  BRepOffsetAPI_ThruSections sides(false, true, kSewingTolerance);
+  sides.CheckCompatibility(false);
+  sides.AddWire(first);
+  sides.AddWire(last);
+  sides.Build();
+  if (!sides.IsDone()) throw Error(ErrorCode::InvalidModel, "no ruled skin joins the two profiles");
+  TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges;
+  TopExp::MapShapesAndAncestors(sides.Shape(), TopAbs_EDGE, TopAbs_FACE, facesOfEdges);
+  RuledLoft loft;
+  // The ruled skin keeps the wires' own edges along its ends: the caps share them.
+  loft.firstCap = facingTheSides(planarFaceOn(first), facesOfEdges);
+  loft.lastCap = facingTheSides(planarFaceOn(last), facesOfEdges);
+  BRep_Builder builder;
+  TopoDS_Shell shell;
+  builder.MakeShell(shell);
+  for (TopExp_Explorer faces(sides.Shape(), TopAbs_FACE); faces.More(); faces.Next())
+    builder.Add(shell, faces.Current());
+  builder.Add(shell, loft.firstCap);
+  builder.Add(shell, loft.lastCap);
+  shell.Closed(true);
+  TopoDS_Solid solid;
+  builder.MakeSolid(solid);
+  builder.Add(solid, shell);
+  requireVolume(solid);
+  if (roughSignedVolumeOf(solid) < 0) solid.Reverse();
+  loft.solid = solid;
+  return loft;
 }
 
 }  // namespace airshape::geometry

@@ -2,8 +2,6 @@
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
-#include <BRepOffsetAPI_ThruSections.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 
 #include "airshape/configuration.h"
@@ -17,8 +15,6 @@ namespace airshape::wing {
 namespace {
 
 using geometry::ruledFace;
-
-constexpr double kLoftTolerance = 1e-6;
 
 /// The three (or two) curves of a placed airfoil: upper, lower and the blunt trailing edge.
 struct PlacedAirfoil {
@@ -47,9 +43,8 @@ TopoDS_Wire airfoilWire(const PlacedAirfoil& airfoil) {
 
 /// An unguided segment: ruled faces between its airfoils' upper sides, lower sides and blunt
 /// trailing edges (their parameters are xsi and eta), closed by planar caps. The solid is
-/// OCCT's ruled loft through the two airfoil wires, the same faces built with shared edges,
-/// which takes 30 % fewer instructions than sewing them together (its own faces are not
-/// kept: their parameters run the lower side from the trailing edge).
+/// the ruled loft through the two airfoil wires with shared edges (geometry::ruledLoft), the
+/// same surfaces without sewing: a wing builds in a third of the instructions.
 SegmentShape segmentShape(const WingSegment& segment) {
   const PlacedAirfoil inner = placedAirfoil(segment.inner), outer = placedAirfoil(segment.outer);
   if (inner.trailingEdge.IsNull() != outer.trailingEdge.IsNull())
@@ -58,18 +53,11 @@ SegmentShape segmentShape(const WingSegment& segment) {
   shape.upper = ruledFace(inner.upper, outer.upper);
   shape.lower = ruledFace(inner.lower, outer.lower);
   if (!inner.trailingEdge.IsNull()) shape.trailingEdge = ruledFace(inner.trailingEdge, outer.trailingEdge);
-  BRepOffsetAPI_ThruSections loft(true, true, kLoftTolerance);
-  loft.CheckCompatibility(false);
-  loft.AddWire(airfoilWire(inner));
-  loft.AddWire(airfoilWire(outer));
-  loft.Build();
-  if (!loft.IsDone() || loft.FirstShape().ShapeType() != TopAbs_FACE || loft.LastShape().ShapeType() != TopAbs_FACE)
-    throw Error(ErrorCode::InvalidModel, "segment '" + segment.uid + "': its airfoils close into no solid");
-  shape.innerCap = TopoDS::Face(loft.FirstShape());
-  shape.outerCap = TopoDS::Face(loft.LastShape());
-  shape.solid = loft.Shape();
   try {
-    geometry::requireVolume(shape.solid);
+    const geometry::RuledLoft loft = geometry::ruledLoft(airfoilWire(inner), airfoilWire(outer));
+    shape.innerCap = loft.firstCap;
+    shape.outerCap = loft.lastCap;
+    shape.solid = loft.solid;
   } catch (const Error& error) {
     throw Error(error.code(), "segment '" + segment.uid + "': " + error.message());
   }

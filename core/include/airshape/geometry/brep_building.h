@@ -6,6 +6,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
 
 namespace airshape::geometry {
 
@@ -28,6 +29,16 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 /// Sews faces into a closed shell and makes it a solid. Throws Error when they do not close.
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
+
+/// The ruled loft between two closed wires of B-spline edges (edge k to edge k, as OCCT's
+/// ruled ThruSections joins them) closed by planar caps on the wires: one shell with shared
+/// edges, no sewing, oriented outwards. Throws Error when a wire is not planar or the solid
+/// encloses no volume.
+struct RuledLoft {
+  TopoDS_Shape solid;
+  TopoDS_Face firstCap, lastCap;
+};
+RuledLoft ruledLoft(const TopoDS_Wire& first, const TopoDS_Wire& last);
 
 /// Throws Error when the solid encloses no volume (less than 1e-12 of its box diagonal
 /// cubed: a segment of zero length or thickness).
