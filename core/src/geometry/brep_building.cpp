@@ -96,6 +96,19 @@ TopoDS_Face facingTheSides(TopoDS_Face cap, const TopTools_IndexedDataMapOfShape
   return cap;
 }
 
+/// The solid turned so that its faces point outwards (Boolean operations then see its
+/// inside); throws Error when it encloses no volume (a segment of zero length or thickness).
+TopoDS_Solid outwards(TopoDS_Solid solid) {
+  const double volume = roughSignedVolumeOf(solid);
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box);
+  const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+  if (std::abs(volume) <= kEmptyVolume * size * size * size)
+    throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
+  if (volume < 0) solid.Reverse();
+  return solid;
+}
+
 }  // namespace
 
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
@@ -133,14 +146,6 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   return planarFaceOn(wire.Wire());
 }
 
-void requireVolume(const TopoDS_Shape& solid) {
-  Bnd_Box box;
-  BRepBndLib::Add(solid, box);
-  const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
-  if (std::abs(roughSignedVolumeOf(solid)) <= kEmptyVolume * size * size * size)
-    throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
-}
-
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces) {
   BRepBuilderAPI_Sewing sewing(kSewingTolerance);
   for (const TopoDS_Face& face : faces)
@@ -148,9 +153,7 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
   sewing.Perform();
   TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
-  TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
-  requireVolume(solid);
-  if (roughSignedVolumeOf(solid) < 0) solid.Reverse();  // outward normals, so that Booleans see the inside
+  const TopoDS_Solid solid = outwards(BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid());
   if (sewnFaces) {
     sewnFaces->clear();
     for (const TopoDS_Face& face : faces)
@@ -183,9 +186,7 @@ RuledLoft ruledLoft(const TopoDS_Wire& first, const TopoDS_Wire& last) {
   TopoDS_Solid solid;
   builder.MakeSolid(solid);
   builder.Add(solid, shell);
-  requireVolume(solid);
-  if (roughSignedVolumeOf(solid) < 0) solid.Reverse();
-  loft.solid = solid;
+  loft.solid = outwards(solid);
   return loft;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <BSplCLib.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -42,6 +43,13 @@ PoleMatrix polesOf(const Geom_BSplineCurve& curve) {
     poles.row(i - 1) << p.X(), p.Y(), p.Z();
   }
   return poles;
+}
+
+void setParameterRange(Geom_BSplineCurve& curve, double first, double last) {
+  TColStd_Array1OfReal knots(1, curve.NbKnots());
+  curve.Knots(knots);
+  BSplCLib::Reparametrize(first, last, knots);
+  curve.SetKnots(knots);
 }
 
 std::vector<double> chordParameters(const std::vector<gp_Pnt>& points, double exponent) {

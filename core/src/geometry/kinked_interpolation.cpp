@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <BSplCLib.hxx>
-#include <TColStd_Array1OfReal.hxx>
-
 #include "airshape/error.h"
+#include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/curve_interpolation.h"
 
@@ -29,10 +27,7 @@ Handle(Geom_BSplineCurve) trimmed(const Geom_BSplineCurve& curve, double from, d
 
 /// The curve with its parameter range moved linearly onto [from, to].
 Handle(Geom_BSplineCurve) withRange(Handle(Geom_BSplineCurve) curve, double from, double to) {
-  TColStd_Array1OfReal knots(1, curve->NbKnots());
-  curve->Knots(knots);
-  BSplCLib::Reparametrize(from, to, knots);
-  curve->SetKnots(knots);
+  setParameterRange(*curve, from, to);
   return curve;
 }
 

@@ -6,9 +6,6 @@
 #include <functional>
 #include <map>
 
-#include <BSplCLib.hxx>
-#include <TColStd_Array1OfReal.hxx>
-
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/chebyshev_approximation.h"
@@ -131,14 +128,6 @@ void mirrorHalf(std::vector<gp_Pnt>& points, std::vector<int>& kinks, std::map<i
   pinned[static_cast<int>(points.size()) - 1] = last;
 }
 
-/// The curve's parameter moved linearly onto [0, 1].
-void normaliseRange(Geom_BSplineCurve& curve) {
-  TColStd_Array1OfReal knots(1, curve.NbKnots());
-  curve.Knots(knots);
-  BSplCLib::Reparametrize(0.0, 1.0, knots);
-  curve.SetKnots(knots);
-}
-
 FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   const schema::CurvePointListXYZType& list = *definition.pointList;
   const std::string xpath = list.xpath;
@@ -176,7 +165,7 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   if (profile.mirroredHalf) {  // back to the given half, over the whole range
     profile.curve->Segment(profile.curve->FirstParameter(),
                            0.5 * (profile.curve->FirstParameter() + profile.curve->LastParameter()));
-    normaliseRange(*profile.curve);
+    geometry::setParameterRange(*profile.curve, 0.0, 1.0);
     profile.closed = false;
   }
   // Without pinned parameters (a half profile always has them: its ends), re-fitted on

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <map>
 
-#include <BSplCLib.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAdaptor_Curve.hxx>
-#include <TColStd_Array1OfReal.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/coons_patches.h"
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/curve_interpolation.h"
@@ -26,10 +25,7 @@ Handle(Geom_BSplineCurve) wholeAirfoil(const SegmentEnd& end) {
   Handle(Geom_BSplineCurve) lower = geometry::transformed(end.profile->lowerCurve(), end.transform);
   lower->Reverse();
   Handle(Geom_BSplineCurve) upper = geometry::transformed(end.profile->upperCurve(), end.transform);
-  TColStd_Array1OfReal knots(1, upper->NbKnots());
-  upper->Knots(knots);
-  BSplCLib::Reparametrize(1.0, 2.0, knots);
-  upper->SetKnots(knots);
+  geometry::setParameterRange(*upper, 1.0, 2.0);
   return geometry::concatenateCurves({lower, upper});
 }
 

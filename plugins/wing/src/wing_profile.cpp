@@ -4,8 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include <BSplCLib.hxx>
-#include <TColStd_Array1OfReal.hxx>
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
@@ -27,9 +25,7 @@ Handle(Geom_BSplineCurve) piece(const Geom_BSplineCurve& curve, double from, dou
   Handle(Geom_BSplineCurve) part = Handle(Geom_BSplineCurve)::DownCast(curve.Copy());
   part->Segment(std::min(from, to), std::max(from, to));
   if (to < from) part->Reverse();
-  TColStd_Array1OfReal knots = part->Knots();
-  BSplCLib::Reparametrize(0.0, 1.0, knots);
-  part->SetKnots(knots);
+  geometry::setParameterRange(*part, 0.0, 1.0);
   return part;
 }
 

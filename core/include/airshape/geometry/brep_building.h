@@ -26,7 +26,8 @@ TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom
 /// Error when they are not planar.
 TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 
-/// Sews faces into a closed shell and makes it a solid. Throws Error when they do not close.
+/// Sews faces into a closed shell and makes it a solid, faces pointing outwards. Throws Error
+/// when they do not close or enclose no volume.
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
 
@@ -39,9 +40,5 @@ struct RuledLoft {
   TopoDS_Face firstCap, lastCap;
 };
 RuledLoft ruledLoft(const TopoDS_Wire& first, const TopoDS_Wire& last);
-
-/// Throws Error when the solid encloses no volume (less than 1e-12 of its box diagonal
-/// cubed: a segment of zero length or thickness).
-void requireVolume(const TopoDS_Shape& solid);
 
 }  // namespace airshape::geometry

@@ -23,6 +23,9 @@ KnotVector knotVectorOf(const Geom_BSplineCurve& curve);
 /// Control points of an existing curve as rows.
 PoleMatrix polesOf(const Geom_BSplineCurve& curve);
 
+/// Moves the curve's parameter linearly onto [first, last]; its shape does not change.
+void setParameterRange(Geom_BSplineCurve& curve, double first, double last);
+
 /// Chord-length (exponent 1) or centripetal (exponent 0.5) parameters of a point list,
 /// normalised to [0, 1].
 std::vector<double> chordParameters(const std::vector<gp_Pnt>& points, double exponent = 1.0);
