@@ -159,20 +159,23 @@ Handle(Geom_BSplineCurve) interpolatePart(const std::vector<Piece>& pieces, cons
     occParameters->SetValue(static_cast<int>(i) + 1, parameters[i]);
   }
   GeomAPI_Interpolate interpolation(occPoints, occParameters, false, Precision::Confusion());
-  if (part.startDerivative || part.endDerivative) {
-    TColgp_Array1OfVec tangents(1, static_cast<int>(points.size()));
-    Handle(TColStd_HArray1OfBoolean) given = new TColStd_HArray1OfBoolean(1, static_cast<int>(points.size()), false);
-    for (int i = 1; i <= tangents.Length(); ++i) tangents(i) = gp_Vec(0, 0, 0);
-    if (part.startDerivative) {
-      tangents(1) = *part.startDerivative;
-      given->SetValue(1, true);
-    }
-    if (part.endDerivative) {
-      tangents(tangents.Length()) = *part.endDerivative;
-      given->SetValue(tangents.Length(), true);
-    }
-    interpolation.Load(tangents, given, false);
+  // Tangents are loaded even when none is prescribed: that makes every part of three points
+  // or more a cubic with a knot at each point, whose free ends take OCCT's estimated
+  // tangents, as in the reference. Without them OCCT builds three points as one parabola
+  // span: the same curve for collinear points, but other poles, and the Coons patches are
+  // filled from the poles (CONVENTIONS §4.2).
+  TColgp_Array1OfVec tangents(1, static_cast<int>(points.size()));
+  Handle(TColStd_HArray1OfBoolean) given = new TColStd_HArray1OfBoolean(1, static_cast<int>(points.size()), false);
+  for (int i = 1; i <= tangents.Length(); ++i) tangents(i) = gp_Vec(0, 0, 0);
+  if (part.startDerivative) {
+    tangents(1) = *part.startDerivative;
+    given->SetValue(1, true);
   }
+  if (part.endDerivative) {
+    tangents(tangents.Length()) = *part.endDerivative;
+    given->SetValue(tangents.Length(), true);
+  }
+  if (points.size() >= 3 || part.startDerivative || part.endDerivative) interpolation.Load(tangents, given, false);
   interpolation.Perform();
   if (!interpolation.IsDone())
     throw Error(ErrorCode::InvalidModel, "the guide curve's points cannot be interpolated (repeated points?)", {},
