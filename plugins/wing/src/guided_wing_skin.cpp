@@ -134,9 +134,20 @@ bool roundedCell(const std::vector<GuideCrossing>& guides, std::size_t k, std::s
   return false;
 }
 
+/// The length that scales a guide's rX and rZ at a section, as the reference measures it:
+/// the airfoil's chord (TE − LE in the airfoil's x-z plane) laid into 3-D with its x and z
+/// swapped, then placed. The reference builds its chord line in a plane whose first axis is
+/// z, so this is the global chord length only where the section scales x and z alike (the
+/// usual case); where it does not, z's scaling counts (docs/wing.md).
+double guideScale(const SegmentEnd& section) {
+  const gp_Pnt le = section.profile->leadingEdge(), te = section.profile->trailingEdge();
+  const Eigen::Vector3d chordAsLaid(te.Z() - le.Z(), 0.0, te.X() - le.X());
+  return (section.transform.linear() * chordAsLaid).norm();
+}
+
 /// What the guide-curve builder needs of the wing's sections (CONVENTIONS §9.1): points by
-/// relative circumference on the whole airfoils, the global chord as scale, chord midpoints
-/// as centres, the wing's x axis as the default rXDirection.
+/// relative circumference on the whole airfoils, guideScale as scale, chord midpoints as
+/// centres, the wing's x axis as the default rXDirection.
 model::GuideCurveSections describeSections(const Configuration& configuration, const schema::WingType& wing,
                                            const std::vector<const SegmentEnd*>& sections,
                                            const std::vector<Handle(Geom_BSplineCurve)>& airfoils) {
@@ -145,9 +156,7 @@ model::GuideCurveSections describeSections(const Configuration& configuration, c
   described.pointAt = [&airfoils](std::size_t k, const model::ProfilePosition& at) {
     return airfoils[k]->Value(parameterAt(airfoils[k], at));
   };
-  described.scale = [sections](std::size_t k) {
-    return sections[k]->leadingEdge().Distance(sections[k]->trailingEdge());
-  };
+  described.scale = [sections](std::size_t k) { return guideScale(*sections[k]); };
   described.centre = [sections](std::size_t k) {
     return gp_Pnt(0.5 * (sections[k]->leadingEdge().XYZ() + sections[k]->trailingEdge().XYZ()));
   };
