@@ -283,6 +283,40 @@ def test_guide_offsets_scale_as_the_reference_measures_the_chord(tmp_path):
     assert math.isclose(middle[0], root[0], abs_tol=1e-12) and math.isclose(middle[1], 2.0, rel_tol=1e-12)
 
 
+def test_guides_are_parametrised_by_the_leading_edges(tmp_path):
+    """A guide running through several segments is parametrised by the distances between
+    the sections' leading edges (as in the reference), so the leading-edge guide of a wing
+    with a kinked leading edge does not change when a middle section's chord does."""
+    def kinked_wing(path, middle_chord):
+        guides = lambda i: "".join(
+            f'<guideCurve uID="K{rc}S{i}"><name>g</name><guideCurveProfileUID>Mid</guideCurveProfileUID>'
+            + (f"<fromRelativeCircumference>{rc}</fromRelativeCircumference>" if i == 0
+               else f"<fromGuideCurveUID>K{rc}S0</fromGuideCurveUID>")
+            + f"<toRelativeCircumference>{rc}</toRelativeCircumference></guideCurve>" for rc in (0, -1))
+        chords = (2, middle_chord, 1)
+        sections = "".join(
+            f'<section uID="KS{i}"><name>s</name><transformation><scaling><x>{c}</x><y>1</y><z>{c}</z></scaling>'
+            f'<translation><x>{x}</x><y>{5 * i}</y></translation></transformation><elements><element uID="KE{i}">'
+            f"<name>e</name><airfoilUID>Parabolic</airfoilUID><transformation/></element></elements></section>"
+            for i, (c, x) in enumerate(zip(chords, (0, 1, 1.5))))
+        segments = "".join(
+            f'<segment uID="KW{i}"><name>s</name><fromElementUID>KE{i}</fromElementUID>'
+            f"<toElementUID>KE{i + 1}</toElementUID><guideCurves>{guides(i)}</guideCurves></segment>" for i in range(2))
+        profile = '<guideCurveProfile uID="Mid"><name>p</name><pointList><rX>0</rX><rY>0.5</rY><rZ>0</rZ></pointList></guideCurveProfile>'
+        write_wing(path, "Kinked", sections, segments, profile)
+
+    queries = [{"op": "wing_upper_point", "wing": "Kinked", "segment": seg, "eta": eta, "xsi": 0.0}
+               for seg in (1, 2) for eta in (0.25, 0.5, 0.75)]
+    narrow, wide = tmp_path / "narrow.xml", tmp_path / "wide.xml"
+    kinked_wing(narrow, 1.2)
+    kinked_wing(wide, 1.9)
+    for a, b in zip(ask_file(narrow, *queries), ask_file(wide, *queries)):
+        assert all(math.isclose(x, y, abs_tol=1e-12) for x, y in zip(a, b)), (a, b)
+    # The guide is curved (one smooth curve through the kink), not the polyline of the edges.
+    quarter = ask_file(narrow, queries[0])[0]
+    assert abs(quarter[0] - 0.2 * quarter[1]) > 1e-4, quarter
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

@@ -146,8 +146,10 @@ double guideScale(const SegmentEnd& section) {
 }
 
 /// What the guide-curve builder needs of the wing's sections (CONVENTIONS §9.1): points by
-/// relative circumference on the whole airfoils, guideScale as scale, chord midpoints as
-/// centres, the wing's x axis as the default rXDirection.
+/// relative circumference on the whole airfoils, guideScale as scale, the leading edges as
+/// centres (the reference means chord midpoints, but its midpoint computation leaves the
+/// leading edge in place, and the guides' parameters follow from these points), the wing's
+/// x axis as the default rXDirection.
 model::GuideCurveSections describeSections(const Configuration& configuration, const schema::WingType& wing,
                                            const std::vector<const SegmentEnd*>& sections,
                                            const std::vector<Handle(Geom_BSplineCurve)>& airfoils) {
@@ -157,9 +159,7 @@ model::GuideCurveSections describeSections(const Configuration& configuration, c
     return airfoils[k]->Value(parameterAt(airfoils[k], at));
   };
   described.scale = [sections](std::size_t k) { return guideScale(*sections[k]); };
-  described.centre = [sections](std::size_t k) {
-    return gp_Pnt(0.5 * (sections[k]->leadingEdge().XYZ() + sections[k]->trailingEdge().XYZ()));
-  };
+  described.centre = [sections](std::size_t k) { return sections[k]->leadingEdge(); };
   const Eigen::Vector3d x = model::componentTransform(configuration, wing.uID).linear() * Eigen::Vector3d::UnitX();
   described.defaultXDirection = gp_Vec(x.x(), x.y(), x.z());
   return described;
