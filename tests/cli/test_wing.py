@@ -317,6 +317,19 @@ def test_guides_are_parametrised_by_the_leading_edges(tmp_path):
     assert abs(quarter[0] - 0.2 * quarter[1]) > 1e-4, quarter
 
 
+def test_a_guide_through_repeated_points_is_an_error(tmp_path):
+    """Two guide points in one place cannot be interpolated: a clear error naming the guide."""
+    path = tmp_path / "repeated.xml"
+    tapered_wing(path, with_guides=True)
+    text = path.read_text()
+    straight = "<rX>0</rX><rY>0.5</rY><rZ>0</rZ>"
+    assert straight in text
+    path.write_text(text.replace(straight, "<rX>0;0</rX><rY>0.5;0.5</rY><rZ>0;0</rZ>"))
+    result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
+    answer = json.loads(result.stdout)
+    assert "guideCurve" in answer.get("error", "") and "coincide" in answer["error"], answer
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

@@ -6,6 +6,7 @@
 
 #include <GeomAPI_Interpolate.hxx>
 #include <Precision.hxx>
+#include <Standard_Failure.hxx>
 #include <TColStd_HArray1OfBoolean.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_Array1OfVec.hxx>
@@ -144,6 +145,44 @@ struct Part {
   Handle(Geom_BSplineCurve) curve;
 };
 
+/// OCCT's cubic through the points at the parameters with the given end derivatives, or
+/// null where OCCT cannot build one (two points closer than 1e-7).
+Handle(Geom_BSplineCurve)
+    cubicThrough(const std::vector<gp_Pnt>& points, const std::vector<double>& parameters,
+                 const std::optional<gp_Vec>& startDerivative, const std::optional<gp_Vec>& endDerivative) {
+  const int count = static_cast<int>(points.size());
+  Handle(TColgp_HArray1OfPnt) occPoints = new TColgp_HArray1OfPnt(1, count);
+  Handle(TColStd_HArray1OfReal) occParameters = new TColStd_HArray1OfReal(1, count);
+  for (int i = 0; i < count; ++i) {
+    occPoints->SetValue(i + 1, points[static_cast<std::size_t>(i)]);
+    occParameters->SetValue(i + 1, parameters[static_cast<std::size_t>(i)]);
+  }
+  // Tangents are loaded even when none is prescribed: that makes every part of three points
+  // or more a cubic with a knot at each point, whose free ends take OCCT's estimated
+  // tangents, as in the reference. Without them OCCT builds three points as one parabola
+  // span: the same curve for collinear points, but other poles, and the Coons patches are
+  // filled from the poles (CONVENTIONS §4.2).
+  TColgp_Array1OfVec tangents(1, count);
+  Handle(TColStd_HArray1OfBoolean) given = new TColStd_HArray1OfBoolean(1, count, false);
+  for (int i = 1; i <= count; ++i) tangents(i) = gp_Vec(0, 0, 0);
+  if (startDerivative) {
+    tangents(1) = *startDerivative;
+    given->SetValue(1, true);
+  }
+  if (endDerivative) {
+    tangents(count) = *endDerivative;
+    given->SetValue(count, true);
+  }
+  try {
+    GeomAPI_Interpolate interpolation(occPoints, occParameters, false, Precision::Confusion());
+    if (count >= 3 || startDerivative || endDerivative) interpolation.Load(tangents, given, false);
+    interpolation.Perform();
+    return interpolation.IsDone() ? interpolation.Curve() : nullptr;
+  } catch (const Standard_Failure&) {
+    return nullptr;
+  }
+}
+
 Handle(Geom_BSplineCurve) interpolatePart(const std::vector<Piece>& pieces, const Part& part) {
   std::vector<gp_Pnt> points;
   std::vector<double> parameters;
@@ -152,35 +191,13 @@ Handle(Geom_BSplineCurve) interpolatePart(const std::vector<Piece>& pieces, cons
       points.push_back(pieces[p].points[i]);
       parameters.push_back(pieces[p].parameters[i]);
     }
-  Handle(TColgp_HArray1OfPnt) occPoints = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()));
-  Handle(TColStd_HArray1OfReal) occParameters = new TColStd_HArray1OfReal(1, static_cast<int>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    occPoints->SetValue(static_cast<int>(i) + 1, points[i]);
-    occParameters->SetValue(static_cast<int>(i) + 1, parameters[i]);
-  }
-  GeomAPI_Interpolate interpolation(occPoints, occParameters, false, Precision::Confusion());
-  // Tangents are loaded even when none is prescribed: that makes every part of three points
-  // or more a cubic with a knot at each point, whose free ends take OCCT's estimated
-  // tangents, as in the reference. Without them OCCT builds three points as one parabola
-  // span: the same curve for collinear points, but other poles, and the Coons patches are
-  // filled from the poles (CONVENTIONS §4.2).
-  TColgp_Array1OfVec tangents(1, static_cast<int>(points.size()));
-  Handle(TColStd_HArray1OfBoolean) given = new TColStd_HArray1OfBoolean(1, static_cast<int>(points.size()), false);
-  for (int i = 1; i <= tangents.Length(); ++i) tangents(i) = gp_Vec(0, 0, 0);
-  if (part.startDerivative) {
-    tangents(1) = *part.startDerivative;
-    given->SetValue(1, true);
-  }
-  if (part.endDerivative) {
-    tangents(tangents.Length()) = *part.endDerivative;
-    given->SetValue(tangents.Length(), true);
-  }
-  if (points.size() >= 3 || part.startDerivative || part.endDerivative) interpolation.Load(tangents, given, false);
-  interpolation.Perform();
-  if (!interpolation.IsDone())
-    throw Error(ErrorCode::InvalidModel, "the guide curve's points cannot be interpolated (repeated points?)", {},
-                pieces[part.firstPiece].definition->xpath);
-  return interpolation.Curve();
+  Handle(Geom_BSplineCurve) curve = cubicThrough(points, parameters, part.startDerivative, part.endDerivative);
+  if (curve.IsNull())
+    throw Error(ErrorCode::InvalidModel,
+                "the guide curve's points cannot be interpolated: two of them coincide (check the guide curve "
+                "profile's rY values)",
+                {}, pieces[part.firstPiece].definition->xpath);
+  return curve;
 }
 
 /// Whether the part starts with the end derivative of the part before ("C1/C2 from previous";
