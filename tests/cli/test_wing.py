@@ -330,6 +330,40 @@ def test_a_guide_through_repeated_points_is_an_error(tmp_path):
     assert "guideCurve" in answer.get("error", "") and "coincide" in answer["error"], answer
 
 
+def test_a_c2_join_blends_its_cells_like_a_smooth_guide(tmp_path):
+    """Cells next to a guide that runs smoothly through a section are blended round, and the
+    reference counts a "C2 from previous" join as smooth (a "C1" join is not). Straight,
+    evenly spaced guides over two tapered segments are the same curves either way, so a C2
+    join gives exactly the skin of guides without any continuity, and a C1 join another one."""
+    def two_segments(path, continuity):
+        guides = lambda i: "".join(
+            f'<guideCurve uID="J{rc}S{i}"><name>g</name><guideCurveProfileUID>Mid</guideCurveProfileUID>'
+            + (f"<fromRelativeCircumference>{rc}</fromRelativeCircumference>" if i == 0
+               else f"<fromGuideCurveUID>J{rc}S0</fromGuideCurveUID>"
+               + (f"<continuity>{continuity}</continuity>" if continuity else ""))
+            + f"<toRelativeCircumference>{rc}</toRelativeCircumference></guideCurve>" for rc in (0, -1))
+        sections = "".join(
+            f'<section uID="JS{i}"><name>s</name><transformation><scaling><x>{c}</x><y>1</y><z>{c}</z></scaling>'
+            f'<translation><x>{0.25 * i}</x><y>{4 * i}</y></translation></transformation><elements>'
+            f'<element uID="JE{i}"><name>e</name><airfoilUID>Parabolic</airfoilUID><transformation/></element>'
+            f"</elements></section>" for i, c in enumerate((2, 1.5, 1)))
+        segments = "".join(
+            f'<segment uID="JW{i}"><name>s</name><fromElementUID>JE{i}</fromElementUID>'
+            f"<toElementUID>JE{i + 1}</toElementUID><guideCurves>{guides(i)}</guideCurves></segment>" for i in range(2))
+        profile = ('<guideCurveProfile uID="Mid"><name>p</name><pointList><rX>0</rX><rY>0.5</rY><rZ>0</rZ>'
+                   "</pointList></guideCurveProfile>")
+        write_wing(path, "Joined", sections, segments, profile)
+        return path
+
+    queries = [{"op": "wing_upper_point", "wing": "Joined", "segment": seg, "eta": eta, "xsi": xsi}
+               for seg in (1, 2) for eta in (0.3, 0.8) for xsi in (0.2, 0.6)]
+    smooth, c2, c1 = (ask_file(two_segments(tmp_path / f"{name}.xml", continuity), *queries)
+                      for name, continuity in (("smooth", None), ("c2", "C2 from previous"), ("c1", "C1 from previous")))
+    for a, b in zip(smooth, c2):
+        assert all(math.isclose(x, y, abs_tol=1e-9) for x, y in zip(a, b)), (a, b)
+    assert max(abs(x - y) for a, b in zip(smooth, c1) for x, y in zip(a, b)) > 1e-5
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

@@ -279,7 +279,10 @@ std::vector<GuideCurve> buildGuideCurves(const schema::CpacsType& cpacs,
     for (const Piece& piece : pieces) positions.push_back(piece.from);
     positions.push_back(endOf(*pieces.back().definition));
     std::vector<bool> smoothAt(pieces.size() + 1, false);
-    for (std::size_t p = 1; p < pieces.size(); ++p) smoothAt[p] = !pieces[p].definition->continuity;
+    for (std::size_t p = 1; p < pieces.size(); ++p) {
+      const auto& continuity = pieces[p].definition->continuity;
+      smoothAt[p] = !continuity || *continuity == Continuity::C2FromPrevious || *continuity == Continuity::C2ToPrevious;
+    }
     result.push_back({root.uID, joinParts(pieces, parts), sectionParameters, positions, smoothAt});
   }
   return result;

@@ -82,7 +82,7 @@ struct GuideCrossing {
   Handle(Geom_BSplineCurve) curve;
   std::vector<double> airfoilParameters, guideParameters;
   double relativeCircumference = 0.0;
-  std::vector<bool> smoothAt;  ///< per section: C2 there (inside one interpolated part)
+  std::vector<bool> smoothAt;  ///< per section: counted as C2 there (model::GuideCurve::smoothAt)
 };
 
 /// The wing's guides, completed so that the skin reaches both trailing-edge ends (on a
@@ -122,7 +122,7 @@ std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& 
 
 /// Whether the cell of segment k between guides l and l+1 is blended round, as the
 /// reference decides it: when a curve runs smoothly (C2) through one of its corners, that
-/// is a guide through a section inside one interpolated part, or an airfoil through a
+/// is a guide counted as smooth through a section (GuideCurve::smoothAt), or an airfoil through a
 /// guide away from its leading edge (where the reference's airfoil is only C1, joined from
 /// two sides) and trailing edge; otherwise bilinearly.
 bool roundedCell(const std::vector<GuideCrossing>& guides, std::size_t k, std::size_t l) {

@@ -42,8 +42,9 @@ struct GuideCurve {
   Handle(Geom_BSplineCurve) curve;
   std::vector<double> sectionParameters;
   std::vector<ProfilePosition> positions;
-  /// Per section: whether the curve runs through it inside one interpolated part, so is
-  /// C2 there (false at its ends and where a piece with a <continuity> starts a new part).
+  /// Per section: whether the curve counts as C2 there, as the reference counts it: inside
+  /// one interpolated part, and where a piece joins with "C2 from/to previous" (although
+  /// only the first derivative is matched there); false at its ends and at C0 and C1 joins.
   std::vector<bool> smoothAt;
 };
 
