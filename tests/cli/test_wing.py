@@ -364,6 +364,20 @@ def test_a_c2_join_blends_its_cells_like_a_smooth_guide(tmp_path):
     assert max(abs(x - y) for a, b in zip(smooth, c1) for x, y in zip(a, b)) > 1e-5
 
 
+def test_numbers_that_are_not_finite_are_errors_naming_the_node(tmp_path):
+    """NaN and INF are numbers to XML Schema, but no wing can be built from them."""
+    for old, new, node in (("<scaling><x>2</x>", "<scaling><x>NaN</x>", "scaling/x"),
+                           ("<rX>0</rX><rY>0.5</rY>", "<rX>0</rX><rY>INF</rY>", "pointList/rY")):
+        path = tmp_path / "not-finite.xml"
+        tapered_wing(path, with_guides=True)
+        text = path.read_text()
+        assert old in text
+        path.write_text(text.replace(old, new, 1))
+        result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
+        answer = json.loads(result.stdout)
+        assert node in answer.get("error", "") and "not a finite number" in answer["error"], answer
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

@@ -14,7 +14,17 @@ namespace {
 
 double degrees(double value) { return value * M_PI / 180.0; }
 
-double coordinate(const std::optional<double>& value) { return value.value_or(0.0); }
+/// A number the geometry is built from; NaN and INF are numbers to XML Schema, but no
+/// geometry can be built from them, so they are an error naming the node.
+double finite(double value, const std::string& xpath) {
+  if (!std::isfinite(value)) throw Error(ErrorCode::InvalidModel, "not a finite number (NaN or INF)", {}, xpath);
+  return value;
+}
+
+/// One coordinate of a point type, 0 where it is left out.
+double coordinate(const std::optional<double>& value, const std::string& xpath) {
+  return value ? finite(*value, xpath) : 0.0;
+}
 
 /// The own transformation and parentUID of a wing, fuselage or rotor blade of any model.
 struct Placed {
@@ -62,14 +72,16 @@ Transform transformationMatrix(const schema::TransformationType* transformation)
   Transform result = Transform::Identity();
   if (transformation == nullptr) return result;
   if (const auto& t = transformation->translation)
-    result.translate(Eigen::Vector3d(coordinate(t->x), coordinate(t->y), coordinate(t->z)));
+    result.translate(Eigen::Vector3d(coordinate(t->x, t->xpath + "/x"), coordinate(t->y, t->xpath + "/y"),
+                                     coordinate(t->z, t->xpath + "/z")));
   if (const auto& r = transformation->rotation) {
-    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->x)), Eigen::Vector3d::UnitX()));
-    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->y)), Eigen::Vector3d::UnitY()));
-    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->z)), Eigen::Vector3d::UnitZ()));
+    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->x, r->xpath + "/x")), Eigen::Vector3d::UnitX()));
+    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->y, r->xpath + "/y")), Eigen::Vector3d::UnitY()));
+    result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->z, r->xpath + "/z")), Eigen::Vector3d::UnitZ()));
   }
   if (const auto& s = transformation->scaling)
-    result.scale(Eigen::Vector3d(coordinate(s->x), coordinate(s->y), coordinate(s->z)));
+    result.scale(Eigen::Vector3d(coordinate(s->x, s->xpath + "/x"), coordinate(s->y, s->xpath + "/y"),
+                                 coordinate(s->z, s->xpath + "/z")));
   return result;
 }
 
@@ -114,15 +126,18 @@ std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const s
     const schema::PositioningType& p = *entry->second;
     const std::string from = p.fromSectionUID.value_or("");
     const Eigen::Vector3d origin = from.empty() ? Eigen::Vector3d::Zero() : toPoint(from);
-    const double sweep = degrees(p.sweepAngle), dihedral = degrees(p.dihedralAngle);
-    const Eigen::Vector3d step = p.length * Eigen::Vector3d(std::sin(sweep), std::cos(sweep) * std::cos(dihedral),
-                                                            std::cos(sweep) * std::sin(dihedral));
+    const double sweep = degrees(finite(p.sweepAngle, p.xpath + "/sweepAngle")),
+                 dihedral = degrees(finite(p.dihedralAngle, p.xpath + "/dihedralAngle"));
+    const Eigen::Vector3d step =
+        finite(p.length, p.xpath + "/length") *
+        Eigen::Vector3d(std::sin(sweep), std::cos(sweep) * std::cos(dihedral), std::cos(sweep) * std::sin(dihedral));
     return result[section] = origin + step;
   };
   for (const auto& [section, positioning] : byTarget) {
     try {
       toPoint(section);
     } catch (const Error& error) {
+      if (!error.cpacsPath().empty()) throw;
       throw Error(error.code(), error.message(), {}, positioning->xpath);
     }
   }
@@ -133,6 +148,7 @@ std::vector<double> parseVector(const std::string& text, const std::string& xpat
   std::vector<double> values;
   if (schema::ParseError error = schema::DoubleVectorCodec::parse(text, values))
     throw Error(ErrorCode::InvalidModel, *error, {}, xpath);
+  for (double value : values) finite(value, xpath);
   return values;
 }
 
