@@ -378,6 +378,24 @@ def test_numbers_that_are_not_finite_are_errors_naming_the_node(tmp_path):
         assert node in answer.get("error", "") and "not a finite number" in answer["error"], answer
 
 
+def test_an_absurdly_large_wing_answers_in_finite_time(tmp_path):
+    """Sections scaled by 1e300 overflow the geometry: every query still answers, quickly,
+    with a finite number or an error, never with null (JSON has no infinity)."""
+    path = tmp_path / "huge.xml"
+    tapered_wing(path, with_guides=False)
+    text = path.read_text()
+    assert "<scaling><x>2</x><y>1</y><z>2</z></scaling>" in text
+    path.write_text(text.replace("<scaling><x>2</x><y>1</y><z>2</z></scaling>",
+                                 "<scaling><x>1e300</x><y>1</y><z>1e300</z></scaling>"))
+    queries = [{"op": op, "wing": "Tapered"} for op in ("wing_span", "wing_volume", "wing_surface_area", "wing_mac")]
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    answers = [json.loads(line) for line in result.stdout.splitlines()]
+    assert len(answers) == len(queries)
+    for answer in answers:
+        assert "error" in answer or "null" not in json.dumps(answer["ok"]), answer
+    assert "error" in answers[0], answers[0]  # the span of an overflowing wing
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

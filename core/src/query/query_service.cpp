@@ -1,5 +1,6 @@
 #include "airshape/query/query_service.h"
 
+#include <cmath>
 #include <string>
 
 #include <Standard_Failure.hxx>
@@ -7,6 +8,20 @@
 #include "airshape/error.h"
 
 namespace airshape::query {
+
+namespace {
+
+/// Whether every number in a result is finite (JSON has no NaN or infinity; they would
+/// be written as null).
+bool allFinite(const Json& value) {
+  if (value.is_number_float()) return std::isfinite(value.get<double>());
+  if (value.is_structured())
+    for (const auto& element : value)
+      if (!allFinite(element)) return false;
+  return true;
+}
+
+}  // namespace
 
 Json answer(Configuration& configuration, const QueryRegistry& registry, const std::string& line) {
   try {
@@ -16,7 +31,10 @@ Json answer(Configuration& configuration, const QueryRegistry& registry, const s
     if (op == query.end() || !op->is_string()) return {{"error", "the query has no \"op\" string"}};
     const Op* registered = registry.find(op->get<std::string>());
     if (registered == nullptr) return {{"error", "unknown op '" + op->get<std::string>() + "'"}};
-    return {{"ok", registered->handler(configuration, query)}};
+    Json result = registered->handler(configuration, query);
+    if (!allFinite(result))
+      return {{"error", "the result is not a finite number: the geometry is too large or degenerate"}};
+    return {{"ok", std::move(result)}};
   } catch (const Json::parse_error&) {
     return {{"error", "the line is not valid JSON"}};
   } catch (const Error& error) {

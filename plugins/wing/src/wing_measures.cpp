@@ -1,5 +1,6 @@
 #include "wing_measures.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <BRepBndLib.hxx>
@@ -53,6 +54,16 @@ int majorAxis(const WingGeometry& wing, const std::string& symmetry) {
 /// of the polygon's nodes, enlarged by the deflection and the edges' tolerance (OCCT's
 /// BRepBndLib), so only the same tessellation of the same curves gives its numbers.
 constexpr double kSpanDeflection = 1e-4;
+
+/// The deflection an outline is tessellated with: the reference's 1e-4 for every real
+/// airfoil (up to a kilometre across), a share of its size beyond, so that an absurdly
+/// large outline (a coefficient of 1e300) is tessellated in finitely many steps.
+double spanDeflection(const TopoDS_Wire& outline) {
+  Bnd_Box box;
+  BRepBndLib::Add(outline, box);
+  if (box.IsVoid()) return kSpanDeflection;
+  return std::max(kSpanDeflection, 1e-7 * std::sqrt(box.SquareExtent()));
+}
 
 /// A section's airfoil outline where the span measures it (closed by the trailing edge
 /// when blunt), as one wire.
@@ -119,7 +130,7 @@ double span(const WingGeometry& wing, const std::string& symmetry, const model::
   for (const WingSegment& s : wing.segments())
     for (const SegmentEnd* end : {&s.inner, &s.outer}) {
       const TopoDS_Wire outline = placedOutline(*end, unparented);
-      BRepMesh_IncrementalMesh tessellation(outline, kSpanDeflection);
+      BRepMesh_IncrementalMesh tessellation(outline, spanDeflection(outline));
       BRepBndLib::Add(outline, box);
       if (symmetry != "none") BRepBndLib::Add(BRepBuilderAPI_Transform(outline, mirror(symmetry)).Shape(), box);
     }
