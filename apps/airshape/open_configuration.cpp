@@ -11,12 +11,14 @@ Configuration openConfiguration(const std::string& path, const plugin::PluginHos
   configuration.useShapes(host.shapes());
   // A few lines say what was ignored; validate lists everything.
   constexpr std::size_t kShown = 5;
-  const Problems& warnings = configuration.warnings();
+  Problems warnings = configuration.unreadableValues();
+  for (Problem& unreadable : warnings) unreadable.message += " (left out of the model)";
+  warnings.insert(warnings.end(), configuration.warnings().begin(), configuration.warnings().end());
   for (std::size_t i = 0; i < warnings.size() && i < kShown; ++i)
     std::cerr << path << ": warning: " << warnings[i].describe() << '\n';
   if (warnings.size() > kShown) {
-    std::cerr << path << ": warning: " << warnings.size() - kShown
-              << " more uID problems of this kind; `airshape validate " << path << "` lists them all\n";
+    std::cerr << path << ": warning: " << warnings.size() - kShown << " more problems of this kind; `airshape validate "
+              << path << "` lists them all\n";
   }
   return configuration;
 }

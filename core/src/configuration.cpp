@@ -49,6 +49,7 @@ void Configuration::load() {
   // Only now, when nothing can fail any more, does the configuration change.
   cpacs_ = std::move(cpacs);
   schemaProblems_ = std::move(report.problems);
+  unreadableValues_ = std::move(report.unreadableValues);
   uids_ = std::move(uids);
   warnings_ = std::move(warnings);
   components_ = std::move(components);

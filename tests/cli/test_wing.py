@@ -396,6 +396,20 @@ def test_an_absurdly_large_wing_answers_in_finite_time(tmp_path):
     assert "error" in answers[0], answers[0]  # the span of an overflowing wing
 
 
+def test_a_number_that_cannot_be_read_is_reported_when_the_file_is_opened(tmp_path):
+    """'half' for a translation is left out of the model (read as 0), which changes the wing:
+    every command says so on stderr, naming the node, not only `validate`."""
+    path = tmp_path / "unreadable.xml"
+    tapered_wing(path, with_guides=False)
+    text = path.read_text()
+    assert "<translation><x>0.5</x><y>4</y></translation>" in text
+    path.write_text(text.replace("<translation><x>0.5</x><y>4</y></translation>",
+                                 "<translation><x>half</x><y>4</y></translation>"))
+    result = airshape("query", str(path), stdin='{"op":"wing_chord_point","wing":"Tapered","segment":1,"eta":1,"xsi":0}\n')
+    assert "translation/x: 'half' is not a number (left out of the model)" in result.stderr, result.stderr
+    assert json.loads(result.stdout)["ok"][:2] == [0.0, 4.0]  # the tip's leading edge, x read as 0
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

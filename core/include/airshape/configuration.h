@@ -50,6 +50,10 @@ class Configuration {
 
   /// Every schema violation found while reading (for `validate`).
   const Problems& schemaProblems() const { return schemaProblems_; }
+  /// Those schema violations whose value could not be read at all ('abc' for a number): the
+  /// value is left out of the model (a required number reads as 0), which changes the
+  /// geometry, so the CLI prints them whenever a file is opened.
+  const Problems& unreadableValues() const { return unreadableValues_; }
   /// What loading ignored or worked around: duplicate uIDs, dangling references, parents that
   /// are no components. Printed on stderr by the CLI when a file is opened.
   const Problems& warnings() const { return warnings_; }
@@ -113,6 +117,7 @@ class Configuration {
   uid::UidRegistry uids_;
   graph::ComponentGraph components_;
   Problems schemaProblems_;
+  Problems unreadableValues_;
   Problems warnings_;
   std::unique_ptr<ComponentCache> cache_ = std::make_unique<ComponentCache>();
   std::map<std::string, std::uint64_t> fingerprints_;  // of the components, as of the last edit

@@ -168,6 +168,7 @@ class ReadingVisitor final : public Visitor {
   bool assign(const FieldInfo& field, ValueSlot& slot, const std::string& text, const std::string& xpath) {
     if (ParseError error = slot.assign(text)) {
       problem(xpath, *error);
+      report_.unreadableValues.push_back(report_.problems.back());
       return false;
     }
     if (field.range != nullptr) {

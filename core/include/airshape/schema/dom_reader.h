@@ -17,6 +17,7 @@ struct UidReference {
 /// What reading a document into the model found besides the values themselves.
 struct ReadReport {
   Problems problems;                     ///< every schema violation, with its XPath
+  Problems unreadableValues;             ///< those of them whose value could not be read at all
   std::vector<UidReference> references;  ///< every uIDref of the modelled part
 };
 
