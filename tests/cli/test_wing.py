@@ -215,6 +215,15 @@ def tapered_wing(path, with_guides, tip_guide_profile="Straight"):
     write_wing(path, "Tapered", sections, segment, profiles)
 
 
+def edited_tapered_wing(path, with_guides, old, new):
+    """The tapered wing with one piece of its text replaced (which must be there)."""
+    tapered_wing(path, with_guides)
+    text = path.read_text()
+    assert old in text, old
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
 def cubic_basis(knots, i, t, degree=3):
     """The i-th B-spline basis function of the given degree at t (Cox-de Boor)."""
     if degree == 0:
@@ -319,12 +328,8 @@ def test_guides_are_parametrised_by_the_leading_edges(tmp_path):
 
 def test_a_guide_through_repeated_points_is_an_error(tmp_path):
     """Two guide points in one place cannot be interpolated: a clear error naming the guide."""
-    path = tmp_path / "repeated.xml"
-    tapered_wing(path, with_guides=True)
-    text = path.read_text()
-    straight = "<rX>0</rX><rY>0.5</rY><rZ>0</rZ>"
-    assert straight in text
-    path.write_text(text.replace(straight, "<rX>0;0</rX><rY>0.5;0.5</rY><rZ>0;0</rZ>"))
+    path = edited_tapered_wing(tmp_path / "repeated.xml", True, "<rX>0</rX><rY>0.5</rY><rZ>0</rZ>",
+                               "<rX>0;0</rX><rY>0.5;0.5</rY><rZ>0;0</rZ>")
     result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
     answer = json.loads(result.stdout)
     assert "guideCurve" in answer.get("error", "") and "coincide" in answer["error"], answer
@@ -368,11 +373,7 @@ def test_numbers_that_are_not_finite_are_errors_naming_the_node(tmp_path):
     """NaN and INF are numbers to XML Schema, but no wing can be built from them."""
     for old, new, node in (("<scaling><x>2</x>", "<scaling><x>NaN</x>", "scaling/x"),
                            ("<rX>0</rX><rY>0.5</rY>", "<rX>0</rX><rY>INF</rY>", "pointList/rY")):
-        path = tmp_path / "not-finite.xml"
-        tapered_wing(path, with_guides=True)
-        text = path.read_text()
-        assert old in text
-        path.write_text(text.replace(old, new, 1))
+        path = edited_tapered_wing(tmp_path / "not-finite.xml", True, old, new)
         result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
         answer = json.loads(result.stdout)
         assert node in answer.get("error", "") and "not a finite number" in answer["error"], answer
@@ -381,12 +382,8 @@ def test_numbers_that_are_not_finite_are_errors_naming_the_node(tmp_path):
 def test_an_absurdly_large_wing_answers_in_finite_time(tmp_path):
     """Sections scaled by 1e300 overflow the geometry: every query still answers, quickly,
     with a finite number or an error, never with null (JSON has no infinity)."""
-    path = tmp_path / "huge.xml"
-    tapered_wing(path, with_guides=False)
-    text = path.read_text()
-    assert "<scaling><x>2</x><y>1</y><z>2</z></scaling>" in text
-    path.write_text(text.replace("<scaling><x>2</x><y>1</y><z>2</z></scaling>",
-                                 "<scaling><x>1e300</x><y>1</y><z>1e300</z></scaling>"))
+    path = edited_tapered_wing(tmp_path / "huge.xml", False, "<scaling><x>2</x><y>1</y><z>2</z></scaling>",
+                               "<scaling><x>1e300</x><y>1</y><z>1e300</z></scaling>")
     queries = [{"op": op, "wing": "Tapered"} for op in ("wing_span", "wing_volume", "wing_surface_area", "wing_mac")]
     result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
     answers = [json.loads(line) for line in result.stdout.splitlines()]
@@ -399,12 +396,8 @@ def test_an_absurdly_large_wing_answers_in_finite_time(tmp_path):
 def test_a_number_that_cannot_be_read_is_reported_when_the_file_is_opened(tmp_path):
     """'half' for a translation is left out of the model (read as 0), which changes the wing:
     every command says so on stderr, naming the node, not only `validate`."""
-    path = tmp_path / "unreadable.xml"
-    tapered_wing(path, with_guides=False)
-    text = path.read_text()
-    assert "<translation><x>0.5</x><y>4</y></translation>" in text
-    path.write_text(text.replace("<translation><x>0.5</x><y>4</y></translation>",
-                                 "<translation><x>half</x><y>4</y></translation>"))
+    path = edited_tapered_wing(tmp_path / "unreadable.xml", False, "<translation><x>0.5</x><y>4</y></translation>",
+                               "<translation><x>half</x><y>4</y></translation>")
     result = airshape("query", str(path), stdin='{"op":"wing_chord_point","wing":"Tapered","segment":1,"eta":1,"xsi":0}\n')
     assert "translation/x: 'half' is not a number (left out of the model)" in result.stderr, result.stderr
     assert json.loads(result.stdout)["ok"][:2] == [0.0, 4.0]  # the tip's leading edge, x read as 0
