@@ -403,6 +403,16 @@ def test_a_number_that_cannot_be_read_is_reported_when_the_file_is_opened(tmp_pa
     assert json.loads(result.stdout)["ok"][:2] == [0.0, 4.0]  # the tip's leading edge, x read as 0
 
 
+def test_a_guided_skin_that_cannot_be_built_names_the_wing(tmp_path):
+    """A leading-edge guide that ends at the trailing edge leaves a cell of no width: the
+    error names the wing's segments, and the wing is not built."""
+    path = edited_tapered_wing(tmp_path / "crossing.xml", True, "<toRelativeCircumference>0</toRelativeCircumference>",
+                               "<toRelativeCircumference>-1</toRelativeCircumference>")
+    result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
+    error = json.loads(result.stdout).get("error", "")
+    assert "/wings/wing[" in error and "/segments: the guided skin" in error, error
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

@@ -121,9 +121,14 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
       geometry->segmentUids_.push_back(definition.uID);
       segmentXpaths.push_back(definition.xpath);
     }
-    if (model::hasGuideCurves(guidesPerSegment))
-      geometry->loftWithGuides(sections, fuselageGuideCurves(configuration.cpacs(), sections, guidesPerSegment));
-    else
+    if (model::hasGuideCurves(guidesPerSegment)) {
+      try {
+        geometry->loftWithGuides(sections, fuselageGuideCurves(configuration.cpacs(), sections, guidesPerSegment));
+      } catch (const Error& error) {
+        if (!error.cpacsPath().empty()) throw;
+        throw Error(error.code(), "the guided skin: " + error.message(), {}, fuselage.xpath + "/segments");
+      }
+    } else
       geometry->loft(sections);
     geometry->cutIntoSegments(segmentXpaths);
     return std::shared_ptr<const FuselageGeometry>(geometry);

@@ -204,7 +204,8 @@ std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration&
           return roundedCell(guides, k, l) ? geometry::PatchBlending::Rounded : geometry::PatchBlending::Bilinear;
         });
   } catch (const Error& error) {
-    throw Error(ErrorCode::InvalidModel, "the guided skin of wing '" + wing.uID + "': " + error.what());
+    if (!error.cpacsPath().empty()) throw;
+    throw Error(error.code(), "the guided skin: " + error.message(), {}, wing.xpath + "/segments");
   }
   return skin;
 }
