@@ -413,6 +413,16 @@ def test_a_guided_skin_that_cannot_be_built_names_the_wing(tmp_path):
     assert "/wings/wing[" in error and "/segments: the guided skin" in error, error
 
 
+def test_a_scaling_coordinate_left_out_is_one(tmp_path):
+    """The schema's default scaling is 1, 1, 1: a scaling that leaves out z scales z by 1."""
+    old = "<scaling><x>2</x><y>1</y><z>2</z></scaling>"
+    left_out = edited_tapered_wing(tmp_path / "left-out.xml", False, old, "<scaling><x>2</x><y>1</y></scaling>")
+    one = edited_tapered_wing(tmp_path / "one.xml", False, old, "<scaling><x>2</x><y>1</y><z>1</z></scaling>")
+    query = {"op": "wing_upper_point", "wing": "Tapered", "segment": 1, "eta": 0.0, "xsi": 0.5}
+    (a,), (b,) = ask_file(left_out, query), ask_file(one, query)
+    assert a == b and a[2] > 0, (a, b)
+
+
 def test_faces_are_named():
     (faces,) = ask({"op": "component_faces", "uid": "Rect"})
     areas = {face["name"]: face["area"] for face in faces}

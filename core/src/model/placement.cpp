@@ -21,9 +21,9 @@ double finite(double value, const std::string& xpath) {
   return value;
 }
 
-/// One coordinate of a point type, 0 where it is left out.
-double coordinate(const std::optional<double>& value, const std::string& xpath) {
-  return value ? finite(*value, xpath) : 0.0;
+/// One coordinate of a point type, `absent` where it is left out.
+double coordinate(const std::optional<double>& value, const std::string& xpath, double absent = 0.0) {
+  return value ? finite(*value, xpath) : absent;
 }
 
 /// The own transformation and parentUID of a wing, fuselage or rotor blade of any model.
@@ -79,9 +79,10 @@ Transform transformationMatrix(const schema::TransformationType* transformation)
     result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->y, r->xpath + "/y")), Eigen::Vector3d::UnitY()));
     result.rotate(Eigen::AngleAxisd(degrees(coordinate(r->z, r->xpath + "/z")), Eigen::Vector3d::UnitZ()));
   }
+  // The schema's default scaling is 1, 1, 1; a coordinate left out keeps its 1.
   if (const auto& s = transformation->scaling)
-    result.scale(Eigen::Vector3d(coordinate(s->x, s->xpath + "/x"), coordinate(s->y, s->xpath + "/y"),
-                                 coordinate(s->z, s->xpath + "/z")));
+    result.scale(Eigen::Vector3d(coordinate(s->x, s->xpath + "/x", 1.0), coordinate(s->y, s->xpath + "/y", 1.0),
+                                 coordinate(s->z, s->xpath + "/z", 1.0)));
   return result;
 }
 
