@@ -290,3 +290,17 @@ def test_guides_may_start_at_a_profile_parameter(tmp_path):
     (a,) = ask(by_circumference, query)
     (b,) = ask(by_parameter, query)
     assert all(math.isclose(x, y, abs_tol=1e-6) for x, y in zip(a, b)), (a, b)
+
+
+def test_a_loft_that_cannot_be_built_names_the_fuselage(tmp_path):
+    """Sections 1e200 apart overflow the loft's parametrisation: the error names the
+    fuselage's segments, and the other fuselage still builds."""
+    profile = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(16)}</fuselageProfile></fuselageProfiles>'
+    path = tmp_path / "far.xml"
+    path.write_text(HEADER + fuselage("Far", "Circle", 1e200, [0, 1, 1e200]) + fuselage("Near", "Circle", 10.0) +
+                    f"</fuselages></model></aircraft><profiles>{profile}</profiles></vehicles></cpacs>")
+    result = airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":"Far"}\n'
+                                                 '{"op":"fuselage_volume","fuselage":"Near"}\n')
+    far, near = (json.loads(line) for line in result.stdout.splitlines())
+    assert "/fuselages/fuselage[1]/segments" in far.get("error", ""), far
+    assert near["ok"] > 0

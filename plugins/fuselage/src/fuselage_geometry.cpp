@@ -121,16 +121,20 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
       geometry->segmentUids_.push_back(definition.uID);
       segmentXpaths.push_back(definition.xpath);
     }
-    if (model::hasGuideCurves(guidesPerSegment)) {
-      try {
+    const bool guided = model::hasGuideCurves(guidesPerSegment);
+    try {
+      if (guided)
         geometry->loftWithGuides(sections, fuselageGuideCurves(configuration.cpacs(), sections, guidesPerSegment));
-      } catch (const Error& error) {
-        if (!error.cpacsPath().empty()) throw;
-        throw Error(error.code(), "the guided skin: " + error.message(), {}, fuselage.xpath + "/segments");
-      }
-    } else
-      geometry->loft(sections);
-    geometry->cutIntoSegments(segmentXpaths);
+      else
+        geometry->loft(sections);
+      geometry->cutIntoSegments(segmentXpaths);
+    } catch (const Error& error) {
+      // Geometry errors deep in the loft know no node; the fuselage's segments are where
+      // to look.
+      if (!error.cpacsPath().empty()) throw;
+      throw Error(error.code(), std::string(guided ? "the guided skin: " : "the loft: ") + error.message(), {},
+                  fuselage.xpath + "/segments");
+    }
     return std::shared_ptr<const FuselageGeometry>(geometry);
   });
 }
