@@ -63,8 +63,9 @@ std::optional<gp_Pln> planeOfPoles(const std::vector<Handle(Geom_BSplineCurve)>&
 
 /// The planar face on a closed wire, sharing its edges. A B-spline lies in a plane exactly
 /// when its poles do, so the plane through the poles spares OCCT's search for one (a fifth
-/// of building a wing); other edges and near-planar wires are left to that search, which
-/// decides as before.
+/// of building a wing), and the plane's normal is turned so that the wire runs anticlockwise
+/// about it, which spares OCCT's classification of the face's inside (another sixth); other
+/// edges and near-planar wires are left to OCCT, which decides as before.
 TopoDS_Face planarFaceOn(const TopoDS_Wire& wire) {
   std::vector<Handle(Geom_BSplineCurve)> curves;
   for (TopExp_Explorer edges(wire, TopAbs_EDGE); edges.More(); edges.Next()) {
@@ -74,9 +75,15 @@ TopoDS_Face planarFaceOn(const TopoDS_Wire& wire) {
     if (curve.IsNull()) return BRepBuilderAPI_MakeFace(wire, true).Face();
     curves.push_back(curve);
   }
-  const std::optional<gp_Pln> plane = planeOfPoles(curves);
-  BRepBuilderAPI_MakeFace face =
-      plane ? BRepBuilderAPI_MakeFace(*plane, wire, true) : BRepBuilderAPI_MakeFace(wire, true);
+  std::optional<gp_Pln> plane = planeOfPoles(curves);
+  if (!plane) {
+    BRepBuilderAPI_MakeFace face(wire, true);
+    if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
+    return face.Face();
+  }
+  if (signedAreaEnclosed(wire, plane->Axis().Direction()) < 0.0)
+    plane = gp_Pln(plane->Location(), plane->Axis().Direction().Reversed());
+  BRepBuilderAPI_MakeFace face(*plane, wire, false);
   if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
   return face.Face();
 }
@@ -100,8 +107,8 @@ TopoDS_Face facingTheSides(TopoDS_Face cap, const TopTools_IndexedDataMapOfShape
 /// inside); throws Error when it encloses no volume (a segment of zero length or thickness).
 TopoDS_Solid outwards(TopoDS_Solid solid) {
   const double volume = roughSignedVolumeOf(solid);
-  Bnd_Box box;
-  BRepBndLib::Add(solid, box);
+  Bnd_Box box;  // of the edges: the solid's scale, at a fraction of the cost of its faces' box
+  for (TopExp_Explorer edges(solid, TopAbs_EDGE); edges.More(); edges.Next()) BRepBndLib::Add(edges.Current(), box);
   const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
   if (std::abs(volume) <= kEmptyVolume * size * size * size)
     throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");

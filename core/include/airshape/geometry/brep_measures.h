@@ -1,6 +1,8 @@
 #pragma once
 
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Dir.hxx>
 
 namespace airshape::geometry {
 
@@ -13,10 +15,15 @@ namespace airshape::geometry {
 /// A null shape measures 0.
 double volumeOf(const TopoDS_Shape& solid);
 
-/// A closed solid's volume integrated roughly (two Gauss points per knot span), with the
-/// sign of its orientation: positive when its faces point outwards. Far cheaper than
-/// classifying points, and close enough to tell an empty solid.
+/// A closed solid's volume integrated roughly (two Gauss points per knot span of its skins,
+/// its planar caps exactly), with the sign of its orientation: positive when its faces point
+/// outwards. Far cheaper than classifying points, and close enough to tell an empty solid.
 double roughSignedVolumeOf(const TopoDS_Shape& solid);
+
+/// The area a closed plane wire encloses, by Green's theorem along its edges as the wire
+/// runs them: positive when it runs anticlockwise seen from the tip of `normal`, negative
+/// when clockwise.
+double signedAreaEnclosed(const TopoDS_Wire& wire, const gp_Dir& normal);
 
 /// Area of faces: rectangular B-spline patches by Gauss–Legendre per knot span (2p + 4
 /// points per direction; the integrand is smooth there), planar faces by Green's theorem
