@@ -5,7 +5,11 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <TopoDS.hxx>
+#include <gp.hxx>
 
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/curve_interpolation.h"
@@ -56,6 +60,17 @@ TEST(Measures, APrismsVolumeIsItsCapTimesItsLengthWhereverItLies) {
   const TopoDS_Shape moved = BRepBuilderAPI_Transform(piece.solid, shift, true).Shape();
   EXPECT_NEAR(volumeOf(moved), volume, 1e-11 * volume);
   EXPECT_NEAR(areaOf(piece.startCap), capArea, 1e-9 * capArea);
+}
+
+TEST(Measures, AWiresEnclosedAreaIsSignedByItsTurnAboutTheNormal) {
+  // The wavy profile (x = 0) runs from +z through +y: clockwise seen from +x.
+  const std::vector<gp_Pnt> points = wavyProfile(0.0, 200);
+  const Handle(Geom_BSplineCurve) curve = interpolateCurve(points, chordParameters(points, 0.5), 3, true);
+  const TopoDS_Wire wire = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve)).Wire();
+  const double area = polygonArea(*curve, 200000);
+  EXPECT_NEAR(signedAreaEnclosed(wire, gp::DX()), -area, 1e-9 * area);
+  EXPECT_NEAR(signedAreaEnclosed(wire, -gp::DX()), area, 1e-9 * area);
+  EXPECT_NEAR(signedAreaEnclosed(TopoDS::Wire(wire.Reversed()), gp::DX()), area, 1e-9 * area);
 }
 
 }  // namespace
