@@ -1,4 +1,5 @@
 // Curve interpolation, approximation and compatibility meet their constraints.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -100,6 +101,45 @@ TEST(Approximation, LeastSquaresMeetsItsInterpolationConstraints) {
                           used.points(static_cast<Eigen::Index>(i), 2));
       EXPECT_LT(curve->Value(used.parameters[i]).Distance(wanted), 1e-10);
     }
+  }
+}
+
+/// The largest distance of the samples from the curve (their feet, not their parameters).
+double largestDistance(const Geom_BSplineCurve& curve, const PoleMatrix& points) {
+  double largest = 0.0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    double nearest = 1e300;
+    for (int k = 0; k <= 4000; ++k)
+      nearest = std::min(nearest, curve.Value(k / 4000.0).Distance(gp_Pnt(points(i, 0), points(i, 1), points(i, 2))));
+    largest = std::max(largest, nearest);
+  }
+  return largest;
+}
+
+TEST(Approximation, CorrectedParametersFitCloserAndKeepTheConstraints) {
+  // Points crowded at one end of a quarter circle, given evenly spread parameters: the plain
+  // fit is pulled along the curve; moving each parameter to its sample's foot and fitting
+  // again lies closer. The constraints stay where they were put.
+  std::vector<double> parameters;
+  PoleMatrix points(41, 3);
+  for (int i = 0; i <= 40; ++i) {
+    const double a = 0.5 * M_PI * std::pow(i / 40.0, 2);
+    parameters.push_back(i / 40.0);
+    points.row(i) << std::cos(a), std::sin(a), 0.0;
+  }
+  InterpolationConstraints constraints;
+  constraints.parameters = {0.0, 1.0};
+  constraints.points.resize(2, 3);
+  constraints.points << 1, 0, 0, 0, 1, 0;
+  const KnotVector space = uniformKnots(0, 1, 6, 3);
+  const auto plain = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+  const auto unchanged = fitCorrectingParameters(space, parameters, points, constraints, FitError::Largest, 0);
+  for (int k = 0; k <= 10; ++k) EXPECT_LT(plain->Value(k / 10.0).Distance(unchanged->Value(k / 10.0)), 1e-14);
+  for (FitError measure : {FitError::Largest, FitError::RootMeanSquare}) {
+    const auto corrected = fitCorrectingParameters(space, parameters, points, constraints, measure);
+    EXPECT_LT(largestDistance(*corrected, points), 0.7 * largestDistance(*plain, points));
+    EXPECT_LT(corrected->Value(0.0).Distance(gp_Pnt(1, 0, 0)), 1e-12);
+    EXPECT_LT(corrected->Value(1.0).Distance(gp_Pnt(0, 1, 0)), 1e-12);
   }
 }
 

@@ -1,6 +1,10 @@
 #include "airshape/geometry/curve_approximation.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/SparseLU>
+#include <gp_Vec.hxx>
 
 #include "airshape/error.h"
 
@@ -50,6 +54,63 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
                     std::to_string(fixed) + " constraints for " + std::to_string(poles) + " control points");
   const Eigen::MatrixXd solution = solver.solve(rightSide);
   return solution.topRows(poles);
+}
+
+namespace {
+
+/// The parameter of the foot of `point` on `curve`, by Newton's method on the squared
+/// distance from `start`; a step out of the curve's range returns to `start` and stops.
+double footParameter(const Geom_BSplineCurve& curve, const gp_Pnt& point, double start) {
+  constexpr int kMaxSteps = 10;
+  constexpr double kStepTolerance = 1e-6;
+  double t = start;
+  for (int step = 0; step < kMaxSteps; ++step) {
+    gp_Pnt at;
+    gp_Vec d1, d2;
+    curve.D2(t, at, d1, d2);
+    const gp_Vec offset(point, at);
+    const double slope = offset.Dot(d1), curvature = offset.Dot(d2) + d1.SquareMagnitude();
+    double dt = -slope / curvature;
+    if (!std::isfinite(dt) || t + dt < curve.FirstParameter() || t + dt > curve.LastParameter()) return start;
+    t += dt;
+    if (std::abs(dt) <= kStepTolerance) break;
+  }
+  return t;
+}
+
+double fitError(const Geom_BSplineCurve& curve, const std::vector<double>& parameters, const PoleMatrix& points,
+                FitError measure) {
+  double largest = 0.0, squares = 0.0;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    const double d = curve.Value(parameters[i]).Distance(gp_Pnt(points(row, 0), points(row, 1), points(row, 2)));
+    largest = std::max(largest, d);
+    squares += d * d;
+  }
+  if (measure == FitError::Largest || parameters.empty()) return largest;
+  return std::sqrt(squares / static_cast<double>(parameters.size()));
+}
+
+}  // namespace
+
+Handle(Geom_BSplineCurve)
+    fitCorrectingParameters(const KnotVector& space, std::vector<double> parameters, const PoleMatrix& points,
+                            const InterpolationConstraints& constraints, FitError measure, int maxCorrections) {
+  constexpr double kWorthwhileGain = 1e-3;
+  Handle(Geom_BSplineCurve) curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+  double error = fitError(*curve, parameters, points, measure), previous = 2.0 * error;
+  for (int correction = 0;
+       correction < maxCorrections && error > 0.0 && (previous - error) / std::max(error, 1e-6) > kWorthwhileGain;
+       ++correction) {
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+      const auto row = static_cast<Eigen::Index>(i);
+      parameters[i] = footParameter(*curve, gp_Pnt(points(row, 0), points(row, 1), points(row, 2)), parameters[i]);
+    }
+    curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+    previous = error;
+    error = fitError(*curve, parameters, points, measure);
+  }
+  return curve;
 }
 
 }  // namespace airshape::geometry

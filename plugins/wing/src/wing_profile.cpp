@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <utility>
 
 #include <gp_Vec.hxx>
@@ -30,11 +31,37 @@ Handle(Geom_BSplineCurve) piece(const Geom_BSplineCurve& curve, double from, dou
 }
 
 /// Puts a point list in the order trailing edge → lower side → leading edge → upper side:
-/// reversed when its lowest point comes after its highest.
-void orderFromLowerSide(std::vector<gp_Pnt>& points) {
+/// reversed (and true returned) when its lowest point comes after its highest.
+bool orderFromLowerSide(std::vector<gp_Pnt>& points) {
   const auto byZ = [](const gp_Pnt& a, const gp_Pnt& b) { return a.Z() < b.Z(); };
-  if (std::min_element(points.begin(), points.end(), byZ) > std::max_element(points.begin(), points.end(), byZ))
-    std::reverse(points.begin(), points.end());
+  if (!(std::min_element(points.begin(), points.end(), byZ) > std::max_element(points.begin(), points.end(), byZ)))
+    return false;
+  std::reverse(points.begin(), points.end());
+  return true;
+}
+
+/// The leading edge: the point farthest from the middle of the first and last points.
+std::size_t leadingEdgeIndex(const std::vector<gp_Pnt>& points) {
+  const gp_Pnt middle((points.front().XYZ() + points.back().XYZ()) / 2.0);
+  std::size_t index = 0;
+  double farthest = -1.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double d = points[i].Distance(middle);
+    if (d > farthest) {
+      farthest = d;
+      index = i;
+    }
+  }
+  return index;
+}
+
+/// How the settings' errorComputationMethod measures a fit (RMSE when not given).
+geometry::FitError fitErrorOf(const xercesc::DOMElement& settings, const std::string& xpath) {
+  const std::string method = xml::attribute(settings, "errorComputationMethod");
+  if (method.empty() || method == "RMSE") return geometry::FitError::RootMeanSquare;
+  if (method == "MaxError") return geometry::FitError::Largest;
+  throw Error(ErrorCode::InvalidModel, "errorComputationMethod must be RMSE or MaxError (got '" + method + "')", {},
+              xpath);
 }
 
 /// A NACA four-digit airfoil: the standard thickness law about the standard camber line,
@@ -133,29 +160,45 @@ WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, cons
   const auto* count = xml::firstChild(settings, "controlPointNumber");
   if (!count) throw Error(ErrorCode::InvalidModel, "approximationSettings need a controlPointNumber", {}, xpath);
   const int poles = static_cast<int>(model::parseVector(xml::text(*count), xpath + "/controlPointNumber").at(0));
-  std::vector<int> pinned;
-  if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
-    for (double index : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices"))
-      pinned.push_back(static_cast<int>(index) - 1);  // given 1-based
   if (poles < 4) throw Error(ErrorCode::InvalidModel, "controlPointNumber must be 4 or more", {}, xpath);
-  for (int index : pinned)
-    if (index < 0 || index >= static_cast<int>(points.size()))
-      throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
+  const geometry::FitError measure = fitErrorOf(settings, xpath);
+  const int last = static_cast<int>(points.size()) - 1;
+  const bool reversed = orderFromLowerSide(points);
+  std::set<int> pinned;
+  if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
+    for (double given : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices")) {
+      const int index = static_cast<int>(given) - 1;  // given 1-based, in the order of the file
+      if (index < 0 || index > last)
+        throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
+      pinned.insert(reversed ? last - index : index);
+    }
   WingProfile profile = fromPoints(points, xpath);  // chord, blunt or sharp
-  orderFromLowerSide(points);
-  const std::vector<double> parameters = geometry::chordParameters(points, 0.5);
-  const geometry::KnotVector space = geometry::uniformKnots(0.0, 1.0, poles, 3);
+  const auto le = static_cast<int>(leadingEdgeIndex(points));
+  if (le == 0 || le == last) throw Error(ErrorCode::InvalidModel, "the leading edge is an end point", {}, xpath);
+  pinned.insert({0, last, le});
+
+  // Centripetal parameters, stretched on either side so that the leading edge is at 0.5.
+  std::vector<double> parameters = geometry::chordParameters(points, 0.5);
+  const double tLe = parameters[static_cast<std::size_t>(le)];
+  for (double& t : parameters) t = t <= tLe ? 0.5 * t / tLe : 0.5 + 0.5 * (t - tLe) / (1.0 - tLe);
+
+  std::vector<double> sampleParameters;
+  std::vector<gp_Pnt> samples;
   geometry::InterpolationConstraints constraints;
-  std::vector<int> kept = {0, static_cast<int>(points.size()) - 1};
-  for (int index : pinned) kept.push_back(index);
-  constraints.points = geometry::PoleMatrix(static_cast<Eigen::Index>(kept.size()), 3);
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    const gp_Pnt& p = points.at(static_cast<std::size_t>(kept[i]));
-    constraints.parameters.push_back(parameters[static_cast<std::size_t>(kept[i])]);
-    constraints.points.row(static_cast<Eigen::Index>(i)) << p.X(), p.Y(), p.Z();
+  std::vector<gp_Pnt> kept;
+  for (int i = 0; i <= last; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    if (pinned.count(i)) {
+      constraints.parameters.push_back(parameters[at]);
+      kept.push_back(points[at]);
+    } else {
+      sampleParameters.push_back(parameters[at]);
+      samples.push_back(points[at]);
+    }
   }
-  const Handle(Geom_BSplineCurve) curve = geometry::makeCurve(
-      space, geometry::approximatePoles(space, parameters, geometry::toMatrix(points), constraints));
+  constraints.points = geometry::toMatrix(kept);
+  const Handle(Geom_BSplineCurve) curve = geometry::fitCorrectingParameters(
+      geometry::uniformKnots(0.0, 1.0, poles, 3), sampleParameters, geometry::toMatrix(samples), constraints, measure);
   profile.upper_ = [curve](double xsi) { return curve->Value(0.5 + 0.5 * xsi); };
   profile.lower_ = [curve](double xsi) { return curve->Value(0.5 - 0.5 * xsi); };
   profile.upperCurve_ = piece(*curve, 0.5, 1.0);
@@ -174,15 +217,7 @@ WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::strin
 
   // The chord: the leading edge is the point farthest from the trailing-edge midpoint.
   gp_Pnt middle((first.XYZ() + last.XYZ()) / 2.0);
-  std::size_t leIndex = 0;
-  double farthest = -1.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double d = points[i].Distance(middle);
-    if (d > farthest) {
-      farthest = d;
-      leIndex = i;
-    }
-  }
+  const std::size_t leIndex = leadingEdgeIndex(points);
   gp_Pnt le = points[leIndex];
   le.SetY(0.0);
   middle.SetY(0.0);

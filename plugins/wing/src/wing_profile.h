@@ -53,9 +53,9 @@ class WingProfile {
   /// the standard thickness and camber laws, evaluated exactly along each side.
   static WingProfile fromNaca(const xercesc::DOMElement& naca, const std::string& xpath);
   /// The reference's approximationSettings (outside CPACS 3.5): a least-squares cubic with
-  /// controlPointNumber poles on uniform knots through the points at centripetal parameters,
-  /// passing exactly through both ends and the interpolatedPointsIndices (1-based); the
-  /// leading edge at parameter 0.5.
+  /// controlPointNumber poles on uniform knots, passing exactly through both ends, the
+  /// leading edge (at parameter 0.5) and the interpolatedPointsIndices (1-based), its sample
+  /// parameters corrected towards the samples' feet as the reference corrects them.
   static WingProfile fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
                                             const std::string& xpath);
   /// An airfoil through points (any orientation), as a point list gives them.

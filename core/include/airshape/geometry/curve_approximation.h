@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <Geom_BSplineCurve.hxx>
+
 #include "airshape/geometry/bspline_curve.h"
 
 namespace airshape::geometry {
@@ -22,5 +24,20 @@ struct InterpolationConstraints {
 /// Throws Error when the system is singular (too few samples for the control points).
 PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& parameters, const PoleMatrix& points,
                             const InterpolationConstraints& constraints = {});
+
+/// How far a fitted curve is from its samples: the largest distance of a sample from the
+/// curve's point at the sample's parameter, or the root mean square of those distances.
+enum class FitError { Largest, RootMeanSquare };
+
+/// A least-squares fit (approximatePoles) whose sample parameters are corrected: after each
+/// fit, every sample's parameter moves to the foot of the sample on the curve (Newton's
+/// method from its current parameter, at most 10 steps, a step leaving the curve's range
+/// ending the search where it began), and the curve is fitted again. The corrections go on
+/// while they lower the error by more than a thousandth of it, at most `maxCorrections`
+/// times; the last fit is returned (also when the last correction raised the error a little,
+/// as the reference library's fit does). The constraints keep their parameters.
+Handle(Geom_BSplineCurve)
+    fitCorrectingParameters(const KnotVector& space, std::vector<double> parameters, const PoleMatrix& points,
+                            const InterpolationConstraints& constraints, FitError measure, int maxCorrections = 10);
 
 }  // namespace airshape::geometry
