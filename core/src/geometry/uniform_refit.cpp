@@ -16,7 +16,6 @@ constexpr int kFewestSamples = 101;
 constexpr double kCornerAngle = 6.0 * M_PI / 180.0;
 constexpr double kSameKnot = 1e-12;
 constexpr double kKnotSnap = 1e-4;  ///< a corner this close to a uniform knot sits on that knot
-constexpr int kMostCorrections = 10;
 
 /// Spans of the curve counting the point parameters as knots too: a measure of how much
 /// detail the curve carries.
@@ -70,27 +69,6 @@ KnotVector uniformSpaceWithCorners(double first, double last, int spans, const s
   return space;
 }
 
-/// The parameter of the point on `curve` nearest to `target`, by Newton steps from `start`;
-/// a step that leaves the range ends the search at `start`.
-double projectedParameter(const Geom_BSplineCurve& curve, const gp_Pnt& target, double start) {
-  constexpr double kParameterAccuracy = 1e-6;
-  constexpr int kMostSteps = 10;
-  double t = start;
-  for (int step = 0; step < kMostSteps; ++step) {
-    gp_Pnt p;
-    gp_Vec d1, d2;
-    curve.D2(t, p, d1, d2);
-    const gp_Vec offset(target, p);
-    const double slope = offset.Dot(d1), curvature = offset.Dot(d2) + d1.SquareMagnitude();
-    const double next = t - slope / curvature;
-    if (next < curve.FirstParameter() || next > curve.LastParameter()) return start;
-    const double moved = std::abs(next - t);
-    t = next;
-    if (moved <= kParameterAccuracy) break;
-  }
-  return t;
-}
-
 }  // namespace
 
 Handle(Geom_BSplineCurve)
@@ -123,26 +101,9 @@ Handle(Geom_BSplineCurve)
 
   std::vector<gp_Pnt> targets;
   for (double t : fitted) targets.push_back(curve.Value(t));
-  const PoleMatrix targetMatrix = toMatrix(targets);
 
-  auto fit = [&](const std::vector<double>& parameters, double& error) {
-    Handle(Geom_BSplineCurve) result = makeCurve(space, approximatePoles(space, parameters, targetMatrix, constraints));
-    error = 0.0;
-    for (std::size_t i = 0; i < parameters.size(); ++i)
-      error = std::max(error, result->Value(parameters[i]).Distance(targets[i]));
-    return result;
-  };
-  double error = 0.0;
-  Handle(Geom_BSplineCurve) result = fit(fitted, error);
-  double previousError = 2.0 * error;
-  // Correct the sample parameters while the fit still improves noticeably.
-  for (int round = 0; round < kMostCorrections && error > 0.0 && (previousError - error) / std::max(error, 1e-6) > 1e-3;
-       ++round) {
-    previousError = error;
-    for (std::size_t i = 0; i < fitted.size(); ++i) fitted[i] = projectedParameter(*result, targets[i], fitted[i]);
-    result = fit(fitted, error);
-  }
-  return result;
+  // The sample parameters are corrected while the fit still improves noticeably.
+  return fitCorrectingParameters(space, fitted, toMatrix(targets), constraints, FitError::Largest);
 }
 
 }  // namespace airshape::geometry
