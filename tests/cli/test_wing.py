@@ -519,13 +519,16 @@ def test_approximated_point_list_airfoils(tmp_path):
     the given number of control points instead of the interpolating one, through both ends,
     the leading edge (at parameter 0.5) and the interpolatedPointsIndices; bad settings are
     errors naming the node."""
-    files = {name: tmp_path / f"{name}.xml" for name in ("exact", "fitted", "reversed", "largest", "bad", "method")}
+    files = {name: tmp_path / f"{name}.xml"
+             for name in ("exact", "fitted", "reversed", "largest", "bad", "method", "many", "fraction")}
     point_list_wing(files["exact"])
     point_list_wing(files["fitted"], approximation(12, "10"))
     point_list_wing(files["reversed"], approximation(12, "32"), reverse=True)  # point 10 counted from the end
     point_list_wing(files["largest"], approximation(12, "10", "MaxError"))
     point_list_wing(files["bad"], approximation(12, "99"))
     point_list_wing(files["method"], approximation(12, "10", "Largest"))
+    point_list_wing(files["many"], approximation(42))
+    point_list_wing(files["fraction"], approximation(12, "10.5"))
     # Point 10 lies on the lower side at the same xsi in both: its centripetal parameter's
     # share of the leading edge's (the fit stretches the lower side's parameters to [0, 0.5]).
     xs, zs = naca0012_points()
@@ -547,6 +550,8 @@ def test_approximated_point_list_airfoils(tmp_path):
     # same fit).
     assert math.isclose(ask_file(files["largest"], queries[0])[0], fitted[0], rel_tol=1e-2)
     for name, words in (("bad", ["interpolatedPointsIndices", "approximationSettings"]),
-                        ("method", ["errorComputationMethod", "Largest", "approximationSettings"])):
+                        ("method", ["errorComputationMethod", "Largest", "approximationSettings"]),
+                        ("many", ["controlPointNumber", "got 42 for 41 points"]),
+                        ("fraction", ["interpolatedPointsIndices", "not a whole number: 10.5"])):
         answer = airshape("query", str(files[name]), stdin='{"op":"wing_volume","wing":"Rect"}\n')
         assert all(word in answer.stdout for word in words), answer.stdout

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include <gp_Vec.hxx>
@@ -53,6 +54,13 @@ std::size_t leadingEdgeIndex(const std::vector<gp_Pnt>& points) {
     }
   }
   return index;
+}
+
+/// A count or index given as a number: whole, or an error naming the node.
+int wholeNumber(double value, const std::string& xpath) {
+  if (value != std::floor(value) || std::abs(value) > 1e9)
+    throw Error(ErrorCode::InvalidModel, (std::ostringstream() << "not a whole number: " << value).str(), {}, xpath);
+  return static_cast<int>(value);
 }
 
 /// How the settings' errorComputationMethod measures a fit (RMSE when not given).
@@ -158,16 +166,23 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
 WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
                                                 const std::string& xpath) {
   const auto* count = xml::firstChild(settings, "controlPointNumber");
-  if (!count) throw Error(ErrorCode::InvalidModel, "approximationSettings need a controlPointNumber", {}, xpath);
-  const int poles = static_cast<int>(model::parseVector(xml::text(*count), xpath + "/controlPointNumber").at(0));
-  if (poles < 4) throw Error(ErrorCode::InvalidModel, "controlPointNumber must be 4 or more", {}, xpath);
-  const geometry::FitError measure = fitErrorOf(settings, xpath);
+  if (!count)
+    throw Error(ErrorCode::InvalidModel,
+                "approximationSettings need a controlPointNumber (a maximumError alone is not supported)", {}, xpath);
+  const std::string countPath = xpath + "/controlPointNumber";
+  const int poles = wholeNumber(model::parseVector(xml::text(*count), countPath).at(0), countPath);
   const int last = static_cast<int>(points.size()) - 1;
+  if (poles < 4 || poles > last + 1)
+    throw Error(ErrorCode::InvalidModel,
+                "controlPointNumber must lie in [4, number of points] (got " + std::to_string(poles) + " for " +
+                    std::to_string(last + 1) + " points)",
+                {}, countPath);
+  const geometry::FitError measure = fitErrorOf(settings, xpath);
   const bool reversed = orderFromLowerSide(points);
   std::set<int> pinned;
   if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
     for (double given : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices")) {
-      const int index = static_cast<int>(given) - 1;  // given 1-based, in the order of the file
+      const int index = wholeNumber(given, xpath + "/interpolatedPointsIndices") - 1;  // 1-based, file order
       if (index < 0 || index > last)
         throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
       pinned.insert(reversed ? last - index : index);
