@@ -52,8 +52,7 @@ TEST(BrepBuilding, ARuledLoftIsAValidSolidWithSharedEdges) {
   const gp_Vec x(1, 0, 0), y(0, 1, 0);
   const Handle(Geom_BSplineCurve) bottom = ellipse(gp_Pnt(0, 0, 0), x, y);
   const Handle(Geom_BSplineCurve) top = ellipse(gp_Pnt(0, 0, 3), 0.5 * x, 0.5 * y);
-  const RuledLoft loft = ruledLoft(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(bottom).Edge()).Wire(),
-                                   BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(top).Edge()).Wire());
+  const RuledLoft loft = ruledLoft({bottom}, {top});
   EXPECT_TRUE(BRepCheck_Analyzer(loft.solid).IsValid());
   // A frustum of elliptic caps: h/3 (A1 + A2 + sqrt(A1 A2)), A2 = A1 / 4.
   const double a1 = areaOf(loft.firstCap), a2 = areaOf(loft.lastCap);
@@ -64,6 +63,34 @@ TEST(BrepBuilding, ARuledLoftIsAValidSolidWithSharedEdges) {
   EXPECT_EQ(outside.State(), TopAbs_OUT);
   BRepClass3d_SolidClassifier inside(loft.solid, gp_Pnt(0, 0, 1), 1e-7);
   EXPECT_EQ(inside.State(), TopAbs_IN);
+}
+
+/// A lens of two arcs from (0, 0, 0) to (1, 0, 0) in the plane y = 0, turned by `angle`
+/// about the vertical line through (1, 0, 0): its upper arc (first to last) and lower arc
+/// (last to first, as a loop runs it, here given first to last).
+std::vector<Handle(Geom_BSplineCurve)> lens(double angle) {
+  std::vector<gp_Pnt> upper, lower;
+  for (int i = 0; i <= 16; ++i) {
+    const double x = i / 16.0, z = 0.1 * std::sin(M_PI * x);
+    const gp_Vec arm(x - 1.0, 0.0, 0.0);
+    const gp_Pnt p = gp_Pnt(1.0 + arm.X() * std::cos(angle), arm.X() * std::sin(angle), 0.0);
+    upper.emplace_back(p.X(), p.Y(), z);
+    lower.emplace_back(p.X(), p.Y(), -z);
+  }
+  return {interpolateCurve(upper, chordParameters(upper, 0.5), 3),
+          interpolateCurve(lower, chordParameters(lower, 0.5), 3)};
+}
+
+TEST(BrepBuilding, ARuledLoftBetweenProfilesThatTouchIsValid) {
+  // The lenses share their point (1, 0, 0): the side edge there degenerates.
+  const RuledLoft loft = ruledLoft(lens(0.0), lens(0.5));
+  EXPECT_TRUE(BRepCheck_Analyzer(loft.solid).IsValid());
+  ASSERT_EQ(loft.sides.size(), 2u);
+  EXPECT_GT(volumeOf(loft.solid), 0.0);
+  BRepClass3d_SolidClassifier inside(loft.solid, gp_Pnt(0.3, -0.2, 0.0), 1e-7);
+  EXPECT_EQ(inside.State(), TopAbs_IN);
+  // Profiles that coincide enclose nothing: an error, not an empty solid.
+  EXPECT_THROW(ruledLoft(lens(0.0), lens(0.0)), Error);
 }
 
 }  // namespace

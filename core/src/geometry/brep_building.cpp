@@ -11,10 +11,10 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
-#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Geom2d_Line.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -25,7 +25,9 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Dir2d.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
@@ -107,8 +109,12 @@ TopoDS_Face facingTheSides(TopoDS_Face cap, const TopTools_IndexedDataMapOfShape
 /// inside); throws Error when it encloses no volume (a segment of zero length or thickness).
 TopoDS_Solid outwards(TopoDS_Solid solid) {
   const double volume = roughSignedVolumeOf(solid);
-  Bnd_Box box;  // of the edges: the solid's scale, at a fraction of the cost of its faces' box
-  for (TopExp_Explorer edges(solid, TopAbs_EDGE); edges.More(); edges.Next()) BRepBndLib::Add(edges.Current(), box);
+  // The solid's scale: the box of its vertices costs next to nothing (the whole solid's box
+  // is taken where the vertices all coincide).
+  Bnd_Box box;
+  for (TopExp_Explorer vertices(solid, TopAbs_VERTEX); vertices.More(); vertices.Next())
+    box.Add(BRep_Tool::Pnt(TopoDS::Vertex(vertices.Current())));
+  if (box.IsVoid() || box.SquareExtent() == 0.0) BRepBndLib::Add(solid, box);
   const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
   if (std::abs(volume) <= kEmptyVolume * size * size * size)
     throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
@@ -169,24 +175,158 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
   return solid;
 }
 
-RuledLoft ruledLoft(const TopoDS_Wire& first, const TopoDS_Wire& last) {
-  BRepOffsetAPI_ThruSections sides(false, true, kSewingTolerance);
-  sides.CheckCompatibility(false);
-  sides.AddWire(first);
-  sides.AddWire(last);
-  sides.Build();
-  if (!sides.IsDone()) throw Error(ErrorCode::InvalidModel, "no ruled skin joins the two profiles");
-  TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges;
-  TopExp::MapShapesAndAncestors(sides.Shape(), TopAbs_EDGE, TopAbs_FACE, facesOfEdges);
-  RuledLoft loft;
-  // The ruled skin keeps the wires' own edges along its ends: the caps share them.
-  loft.firstCap = facingTheSides(planarFaceOn(first), facesOfEdges);
-  loft.lastCap = facingTheSides(planarFaceOn(last), facesOfEdges);
+namespace {
+
+/// A closed loop of curves joined end to end, as topology: edge k on curve k, the vertex
+/// where the loop enters edge k, and whether the loop runs curve k along its parameter.
+struct Loop {
+  std::vector<TopoDS_Edge> edges;
+  std::vector<TopoDS_Vertex> entries;
+  std::vector<bool> forward;
+  TopoDS_Wire wire;
+};
+
+/// `shared[k]`, where not null, is taken as the loop's entry vertex of curve k (the vertex
+/// where another loop touches this one).
+Loop loopOf(const std::vector<Handle(Geom_BSplineCurve)>& curves, const std::vector<TopoDS_Vertex>& shared = {}) {
+  const std::size_t n = curves.size();
+  auto meets = [](const gp_Pnt& a, const gp_Pnt& b) { return a.Distance(b) <= kSewingTolerance; };
+  Loop loop;
+  // The first curve runs towards the second; each next one onwards from where it ended.
+  loop.forward.push_back(n == 1 || meets(curves[0]->EndPoint(), curves[1]->StartPoint()) ||
+                         meets(curves[0]->EndPoint(), curves[1]->EndPoint()));
+  std::vector<gp_Pnt> entryPoints = {loop.forward[0] ? curves[0]->StartPoint() : curves[0]->EndPoint()};
+  gp_Pnt exit = loop.forward[0] ? curves[0]->EndPoint() : curves[0]->StartPoint();
+  for (std::size_t k = 1; k < n; ++k) {
+    const bool forward = meets(curves[k]->StartPoint(), exit);
+    if (!forward && !meets(curves[k]->EndPoint(), exit))
+      throw Error(ErrorCode::InvalidModel, "a profile's curves do not join end to end");
+    loop.forward.push_back(forward);
+    entryPoints.push_back(exit);
+    exit = forward ? curves[k]->EndPoint() : curves[k]->StartPoint();
+  }
+  if (!meets(exit, entryPoints.front())) throw Error(ErrorCode::InvalidModel, "a profile's curves do not close");
+
   BRep_Builder builder;
+  for (std::size_t k = 0; k < n; ++k) {
+    TopoDS_Vertex vertex = k < shared.size() ? shared[k] : TopoDS_Vertex();
+    if (vertex.IsNull()) builder.MakeVertex(vertex, entryPoints[k], kSewingTolerance);
+    loop.entries.push_back(vertex);
+  }
+  builder.MakeWire(loop.wire);
+  for (std::size_t k = 0; k < n; ++k) {
+    const TopoDS_Vertex& entry = loop.entries[k];
+    const TopoDS_Vertex& leave = loop.entries[(k + 1) % n];
+    TopoDS_Edge edge;
+    builder.MakeEdge(edge, curves[k], kTolerance);
+    builder.Add(edge, (loop.forward[k] ? entry : leave).Oriented(TopAbs_FORWARD));
+    builder.Add(edge, (loop.forward[k] ? leave : entry).Oriented(TopAbs_REVERSED));
+    builder.Range(edge, curves[k]->FirstParameter(), curves[k]->LastParameter());
+    loop.edges.push_back(edge);
+    builder.Add(loop.wire, loop.forward[k] ? edge : TopoDS::Edge(edge.Reversed()));
+  }
+  loop.wire.Closed(true);
+  return loop;
+}
+
+/// The straight edge from a vertex of one loop to the matching vertex of the other; a
+/// degenerate edge (no curve in space, only in the faces' parameters) where the loops share
+/// the vertex.
+TopoDS_Edge sideEdge(const TopoDS_Vertex& from, const TopoDS_Vertex& to) {
+  BRep_Builder builder;
+  TopoDS_Edge edge;
+  if (from.IsSame(to)) {
+    builder.MakeEdge(edge);
+    builder.Degenerated(edge, true);
+  } else {
+    builder.MakeEdge(edge, straightLine(BRep_Tool::Pnt(from), BRep_Tool::Pnt(to)), kTolerance);
+  }
+  builder.Add(edge, from.Oriented(TopAbs_FORWARD));
+  builder.Add(edge, to.Oriented(TopAbs_REVERSED));
+  builder.Range(edge, 0.0, 1.0);
+  return edge;
+}
+
+/// The line u = const of a face's parameter plane, running with v.
+Handle(Geom2d_Line) alongV(double u) { return new Geom2d_Line(gp_Pnt2d(u, 0.0), gp_Dir2d(0.0, 1.0)); }
+
+/// The line v = const, running with u.
+Handle(Geom2d_Line) alongU(double v) { return new Geom2d_Line(gp_Pnt2d(0.0, v), gp_Dir2d(1.0, 0.0)); }
+
+}  // namespace
+
+RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
+                    const std::vector<Handle(Geom_BSplineCurve)>& last) {
+  if (first.empty() || first.size() != last.size())
+    throw Error(ErrorCode::InvalidModel, "the two profiles have different numbers of curves");
+  const Loop a = loopOf(first);
+  const std::size_t n = first.size();
+  // Where the profiles touch (a segment tapering to a point, or of no length), the second
+  // loop takes the first one's vertex and the side edge there degenerates.
+  std::vector<TopoDS_Vertex> touching(n);
+  const Loop alone = loopOf(last);
+  for (std::size_t k = 0; k < n; ++k)
+    if (BRep_Tool::Pnt(a.entries[k]).Distance(BRep_Tool::Pnt(alone.entries[k])) <= kSewingTolerance)
+      touching[k] = a.entries[k];
+  const Loop b = loopOf(last, touching);
+  std::vector<TopoDS_Edge> sides;
+  for (std::size_t k = 0; k < n; ++k) sides.push_back(sideEdge(a.entries[k], b.entries[k]));
+
+  // Face k: the ruled surface S(u, v) between curve k of each profile; its edges carry their
+  // exact lines in (u, v): the profiles' edges at v = 0 and 1, the side edges at the curve's
+  // ends. Built directly, the edges need no check of their parameters (OCCT's ruled skin
+  // spent most of its time on that).
+  BRep_Builder builder;
+  const std::vector<double> sites = {0.0, 1.0};
+  RuledLoft loft;
   TopoDS_Shell shell;
   builder.MakeShell(shell);
-  for (TopExp_Explorer faces(sides.Shape(), TopAbs_FACE); faces.More(); faces.Next())
-    builder.Add(shell, faces.Current());
+  for (std::size_t k = 0; k < n; ++k) {
+    if (a.forward[k] != b.forward[k] || std::abs(first[k]->FirstParameter() - last[k]->FirstParameter()) > 1e-12 ||
+        std::abs(first[k]->LastParameter() - last[k]->LastParameter()) > 1e-12)
+      throw Error(ErrorCode::InvalidModel, "the two profiles' curves do not correspond");
+    const double u0 = first[k]->FirstParameter(), u1 = first[k]->LastParameter();
+    const TopoDS_Edge& entrySide = sides[k];
+    const TopoDS_Edge& leaveSide = sides[(k + 1) % n];
+    const TopoDS_Edge& sideAtStart = a.forward[k] ? entrySide : leaveSide;
+    const TopoDS_Edge& sideAtEnd = a.forward[k] ? leaveSide : entrySide;
+    TopoDS_Face face;
+    builder.MakeFace(face, skinCurves({first[k], last[k]}, sites, skinningSpace(sites, 1, false)), kTolerance);
+    builder.UpdateEdge(a.edges[k], alongU(0.0), face, kTolerance);
+    builder.UpdateEdge(b.edges[k], alongU(1.0), face, kTolerance);
+    if (n == 1) {  // a closed curve: one side edge is the face's seam
+      builder.UpdateEdge(sideAtEnd, alongV(u1), alongV(u0), face, kTolerance);
+    } else {
+      builder.UpdateEdge(sideAtStart, alongV(u0), face, kTolerance);
+      builder.UpdateEdge(sideAtEnd, alongV(u1), face, kTolerance);
+    }
+    // Anticlockwise in (u, v): along the first profile, up the end side, back along the
+    // second profile, down the start side.
+    TopoDS_Wire boundary;
+    builder.MakeWire(boundary);
+    builder.Add(boundary, a.edges[k]);
+    builder.Add(boundary, sideAtEnd);
+    builder.Add(boundary, b.edges[k].Reversed());
+    builder.Add(boundary, sideAtStart.Reversed());
+    boundary.Closed(true);
+    builder.Add(face, boundary);
+    // Where the loop runs against the curve, the face turns too, so that each side edge is
+    // run once each way by the two faces that share it.
+    loft.sides.push_back(a.forward[k] ? face : TopoDS::Face(face.Reversed()));
+    builder.Add(shell, loft.sides.back());
+  }
+  // The lines in the faces' parameters run over the edges' ranges (a degenerate side edge
+  // has no other curve to take its range from).
+  for (const TopoDS_Edge& side : sides) builder.Range(side, 0.0, 1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    builder.Range(a.edges[k], first[k]->FirstParameter(), first[k]->LastParameter());
+    builder.Range(b.edges[k], last[k]->FirstParameter(), last[k]->LastParameter());
+  }
+  TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges;
+  TopExp::MapShapesAndAncestors(shell, TopAbs_EDGE, TopAbs_FACE, facesOfEdges);
+  // The caps lie on the profiles' own edges, turned against the sides.
+  loft.firstCap = facingTheSides(planarFaceOn(a.wire), facesOfEdges);
+  loft.lastCap = facingTheSides(planarFaceOn(b.wire), facesOfEdges);
   builder.Add(shell, loft.firstCap);
   builder.Add(shell, loft.lastCap);
   shell.Closed(true);

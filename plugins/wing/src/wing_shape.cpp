@@ -14,8 +14,6 @@ namespace airshape::wing {
 
 namespace {
 
-using geometry::ruledFace;
-
 /// The three (or two) curves of a placed airfoil: upper, lower and the blunt trailing edge.
 struct PlacedAirfoil {
   Handle(Geom_BSplineCurve) upper, lower, trailingEdge;
@@ -30,31 +28,26 @@ PlacedAirfoil placedAirfoil(const SegmentEnd& end) {
   return airfoil;
 }
 
-/// The airfoil as one closed wire: upper side (LE -> TE), the blunt trailing edge, and the
-/// lower side back to the LE.
-TopoDS_Wire airfoilWire(const PlacedAirfoil& airfoil) {
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(BRepBuilderAPI_MakeEdge(airfoil.upper).Edge());
-  if (!airfoil.trailingEdge.IsNull()) wire.Add(BRepBuilderAPI_MakeEdge(airfoil.trailingEdge).Edge());
-  wire.Add(BRepBuilderAPI_MakeEdge(airfoil.lower).Edge());
-  if (!wire.IsDone()) throw Error(ErrorCode::InvalidModel, "the airfoil's curves do not join into a closed wire");
-  return wire.Wire();
+/// The airfoil as one loop of curves: upper side (LE -> TE), the blunt trailing edge, and
+/// the lower side (TE -> LE as the loop runs it).
+std::vector<Handle(Geom_BSplineCurve)> airfoilLoop(const PlacedAirfoil& airfoil) {
+  if (airfoil.trailingEdge.IsNull()) return {airfoil.upper, airfoil.lower};
+  return {airfoil.upper, airfoil.trailingEdge, airfoil.lower};
 }
 
 /// An unguided segment: ruled faces between its airfoils' upper sides, lower sides and blunt
-/// trailing edges (their parameters are xsi and eta), closed by planar caps. The solid is
-/// the ruled loft through the two airfoil wires with shared edges (geometry::ruledLoft), the
-/// same surfaces without sewing: a wing builds in a third of the instructions.
+/// trailing edges (their parameters are xsi and eta), closed by planar caps: the ruled loft
+/// through the two airfoils with shared edges (geometry::ruledLoft), no sewing.
 SegmentShape segmentShape(const WingSegment& segment) {
   const PlacedAirfoil inner = placedAirfoil(segment.inner), outer = placedAirfoil(segment.outer);
   if (inner.trailingEdge.IsNull() != outer.trailingEdge.IsNull())
     throw Error(ErrorCode::InvalidModel, "segment '" + segment.uid + "' joins a blunt and a sharp trailing edge");
   SegmentShape shape;
-  shape.upper = ruledFace(inner.upper, outer.upper);
-  shape.lower = ruledFace(inner.lower, outer.lower);
-  if (!inner.trailingEdge.IsNull()) shape.trailingEdge = ruledFace(inner.trailingEdge, outer.trailingEdge);
   try {
-    const geometry::RuledLoft loft = geometry::ruledLoft(airfoilWire(inner), airfoilWire(outer));
+    const geometry::RuledLoft loft = geometry::ruledLoft(airfoilLoop(inner), airfoilLoop(outer));
+    shape.upper = loft.sides.front();
+    shape.lower = loft.sides.back();
+    if (!inner.trailingEdge.IsNull()) shape.trailingEdge = loft.sides[1];
     shape.innerCap = loft.firstCap;
     shape.outerCap = loft.lastCap;
     shape.solid = loft.solid;

@@ -31,14 +31,19 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
 
-/// The ruled loft between two closed wires of B-spline edges (edge k to edge k, as OCCT's
-/// ruled ThruSections joins them) closed by planar caps on the wires: one shell with shared
-/// edges, no sewing, oriented outwards. Throws Error when a wire is not planar or the solid
+/// The ruled loft between two closed profiles, each a loop of B-spline curves joined end
+/// to end (curve k of one to curve k of the other, over the same parameter range and run
+/// the same way round), closed by planar caps: one shell with shared edges, no sewing,
+/// oriented outwards. `sides[k]` is the ruled face of curve k, its surface the one of
+/// ruledFace (u the curves' parameter, v from the first profile to the last). Throws Error
+/// when the curves do not close or correspond, a profile is not planar or the solid
 /// encloses no volume.
 struct RuledLoft {
   TopoDS_Shape solid;
   TopoDS_Face firstCap, lastCap;
+  std::vector<TopoDS_Face> sides;
 };
-RuledLoft ruledLoft(const TopoDS_Wire& first, const TopoDS_Wire& last);
+RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
+                    const std::vector<Handle(Geom_BSplineCurve)>& last);
 
 }  // namespace airshape::geometry
