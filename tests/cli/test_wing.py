@@ -125,6 +125,18 @@ def test_a_segment_of_zero_length_is_an_error(tmp_path):
     assert "error" in answer and "'ZW'" in answer["error"] and "no volume" in answer["error"], answer
 
 
+def test_a_profile_flattened_to_a_line_is_an_error(tmp_path):
+    """A section scaled to no thickness: no cap closes its profile (the solid was invalid)."""
+    text = open(os.path.join(os.path.dirname(DATA), "..", "examples", "generic-airliner.xml")).read()
+    at = text.index('uID="Wing_S3_E_T"')
+    scaling = text.index("<z>", at)
+    path = tmp_path / "flat.xml"
+    path.write_text(text[:scaling] + "<z>0</z>" + text[text.index("</z>", scaling) + 4:])
+    result = airshape("build", str(path))
+    wing = next(line for line in result.stdout.splitlines() if line.split()[:2] == ["wing", "Wing"])
+    assert "FAILED" in wing and "'Wing_Seg2'" in wing and "encloses no area" in wing, wing
+
+
 def write_wing(path, uid, sections, segments, guide_profiles):
     """The test wings' file with one more wing of the given sections and segments, and the
     given guide curve profiles."""

@@ -11,6 +11,7 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -41,6 +42,9 @@ constexpr double kTolerance = 1e-7;
 constexpr double kSewingTolerance = 1e-6;
 /// A solid enclosing less than this fraction of its box diagonal cubed encloses nothing.
 constexpr double kEmptyVolume = 1e-12;
+/// A profile thinner on average (its area over its box diagonal) than this many sewing
+/// tolerances encloses nothing: its cap would be a face whose edges touch.
+constexpr double kThinnest = 10.0;
 
 /// The plane through every pole of the curves (their least-squares plane) when they all lie
 /// on it within kTolerance; nothing otherwise.
@@ -77,17 +81,30 @@ TopoDS_Face planarFaceOn(const TopoDS_Wire& wire) {
     if (curve.IsNull()) return BRepBuilderAPI_MakeFace(wire, true).Face();
     curves.push_back(curve);
   }
+  Bnd_Box poles;
+  for (const auto& curve : curves)
+    for (int i = 1; i <= curve->NbPoles(); ++i) poles.Add(curve->Pole(i));
+  const double enclosesNothing =
+      kThinnest * kSewingTolerance * (poles.IsVoid() ? 0.0 : std::sqrt(poles.SquareExtent()));
   std::optional<gp_Pln> plane = planeOfPoles(curves);
-  if (!plane) {
-    BRepBuilderAPI_MakeFace face(wire, true);
-    if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
-    return face.Face();
+  TopoDS_Face face;
+  double area = 0.0;
+  if (plane) {
+    area = signedAreaEnclosed(wire, plane->Axis().Direction());
+    if (area < 0.0) plane = gp_Pln(plane->Location(), plane->Axis().Direction().Reversed());
+    BRepBuilderAPI_MakeFace onPlane(*plane, wire, false);
+    if (onPlane.IsDone()) face = onPlane.Face();
+  } else {
+    BRepBuilderAPI_MakeFace found(wire, true);
+    if (found.IsDone()) face = found.Face();
+    if (!face.IsNull()) area = areaOf(face);
   }
-  if (signedAreaEnclosed(wire, plane->Axis().Direction()) < 0.0)
-    plane = gp_Pln(plane->Location(), plane->Axis().Direction().Reversed());
-  BRepBuilderAPI_MakeFace face(*plane, wire, false);
-  if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
-  return face.Face();
+  if (face.IsNull()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
+  // A profile flattened to a line (scaled to no thickness or chord) may still bound a valid
+  // face of no area (its edges apart); where its edges touch, no face closes it.
+  if (std::abs(area) <= enclosesNothing && !BRepCheck_Analyzer(face).IsValid())
+    throw Error(ErrorCode::InvalidModel, "a profile encloses no area (scaled to no thickness?)");
+  return face;
 }
 
 /// The cap turned, where needed, so that it runs each of its edges against the side face
@@ -186,26 +203,46 @@ struct Loop {
   TopoDS_Wire wire;
 };
 
-/// `shared[k]`, where not null, is taken as the loop's entry vertex of curve k (the vertex
-/// where another loop touches this one).
-Loop loopOf(const std::vector<Handle(Geom_BSplineCurve)>& curves, const std::vector<TopoDS_Vertex>& shared = {}) {
-  const std::size_t n = curves.size();
-  auto meets = [](const gp_Pnt& a, const gp_Pnt& b) { return a.Distance(b) <= kSewingTolerance; };
-  Loop loop;
-  // The first curve runs towards the second; each next one onwards from where it ended.
-  loop.forward.push_back(n == 1 || meets(curves[0]->EndPoint(), curves[1]->StartPoint()) ||
-                         meets(curves[0]->EndPoint(), curves[1]->EndPoint()));
-  std::vector<gp_Pnt> entryPoints = {loop.forward[0] ? curves[0]->StartPoint() : curves[0]->EndPoint()};
-  gp_Pnt exit = loop.forward[0] ? curves[0]->EndPoint() : curves[0]->StartPoint();
-  for (std::size_t k = 1; k < n; ++k) {
-    const bool forward = meets(curves[k]->StartPoint(), exit);
-    if (!forward && !meets(curves[k]->EndPoint(), exit))
-      throw Error(ErrorCode::InvalidModel, "a profile's curves do not join end to end");
-    loop.forward.push_back(forward);
-    entryPoints.push_back(exit);
-    exit = forward ? curves[k]->EndPoint() : curves[k]->StartPoint();
+bool meets(const gp_Pnt& a, const gp_Pnt& b) { return a.Distance(b) <= kSewingTolerance; }
+gp_Pnt entryOf(const Geom_BSplineCurve& curve, bool forward) { return forward ? curve.StartPoint() : curve.EndPoint(); }
+gp_Pnt exitOf(const Geom_BSplineCurve& curve, bool forward) { return forward ? curve.EndPoint() : curve.StartPoint(); }
+
+/// Whether a loop can run the curves in these directions: each entered where the one before
+/// left, and the last leaving where the first is entered.
+bool runsRound(const std::vector<Handle(Geom_BSplineCurve)>& curves, const std::vector<bool>& forward) {
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const std::size_t next = (k + 1) % curves.size();
+    if (!meets(exitOf(*curves[k], forward[k]), entryOf(*curves[next], forward[next]))) return false;
   }
-  if (!meets(exit, entryPoints.front())) throw Error(ErrorCode::InvalidModel, "a profile's curves do not close");
+  return true;
+}
+
+/// The directions in which a loop runs curves joined end to end: the first towards the
+/// second, each next one onwards from where the one before ended. Throws Error when they do
+/// not join or close.
+std::vector<bool> directionsOf(const std::vector<Handle(Geom_BSplineCurve)>& curves) {
+  const std::size_t n = curves.size();
+  std::vector<bool> forward = {n == 1 || meets(curves[0]->EndPoint(), curves[1]->StartPoint()) ||
+                               meets(curves[0]->EndPoint(), curves[1]->EndPoint())};
+  for (std::size_t k = 1; k < n; ++k) {
+    const gp_Pnt exit = exitOf(*curves[k - 1], forward[k - 1]);
+    if (!meets(curves[k]->StartPoint(), exit) && !meets(curves[k]->EndPoint(), exit))
+      throw Error(ErrorCode::InvalidModel, "a profile's curves do not join end to end");
+    forward.push_back(meets(curves[k]->StartPoint(), exit));
+  }
+  if (!runsRound(curves, forward)) throw Error(ErrorCode::InvalidModel, "a profile's curves do not close");
+  return forward;
+}
+
+/// The loop running the curves in the given directions. `shared[k]`, where not null, is
+/// taken as its entry vertex of curve k (where another loop touches this one).
+Loop loopOf(const std::vector<Handle(Geom_BSplineCurve)>& curves, const std::vector<bool>& forward,
+            const std::vector<TopoDS_Vertex>& shared = {}) {
+  const std::size_t n = curves.size();
+  Loop loop;
+  loop.forward = forward;
+  std::vector<gp_Pnt> entryPoints;
+  for (std::size_t k = 0; k < n; ++k) entryPoints.push_back(entryOf(*curves[k], forward[k]));
 
   BRep_Builder builder;
   for (std::size_t k = 0; k < n; ++k) {
@@ -259,16 +296,23 @@ RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
                     const std::vector<Handle(Geom_BSplineCurve)>& last) {
   if (first.empty() || first.size() != last.size())
     throw Error(ErrorCode::InvalidModel, "the two profiles have different numbers of curves");
-  const Loop a = loopOf(first);
+  // Both loops run their curves the same way; a curve shrunk to a point runs either way,
+  // so one loop may take the other's directions.
+  std::vector<bool> forward = directionsOf(first);
+  if (const std::vector<bool> other = directionsOf(last); other != forward) {
+    if (!runsRound(last, forward)) {
+      if (!runsRound(first, other)) throw Error(ErrorCode::InvalidModel, "the two profiles run differently");
+      forward = other;
+    }
+  }
+  const Loop a = loopOf(first, forward);
   const std::size_t n = first.size();
   // Where the profiles touch (a segment tapering to a point, or of no length), the second
   // loop takes the first one's vertex and the side edge there degenerates.
   std::vector<TopoDS_Vertex> touching(n);
-  const Loop alone = loopOf(last);
   for (std::size_t k = 0; k < n; ++k)
-    if (BRep_Tool::Pnt(a.entries[k]).Distance(BRep_Tool::Pnt(alone.entries[k])) <= kSewingTolerance)
-      touching[k] = a.entries[k];
-  const Loop b = loopOf(last, touching);
+    if (meets(BRep_Tool::Pnt(a.entries[k]), entryOf(*last[k], forward[k]))) touching[k] = a.entries[k];
+  const Loop b = loopOf(last, forward, touching);
   std::vector<TopoDS_Edge> sides;
   for (std::size_t k = 0; k < n; ++k) sides.push_back(sideEdge(a.entries[k], b.entries[k]));
 
@@ -284,7 +328,7 @@ RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
   for (std::size_t k = 0; k < n; ++k) {
     if (a.forward[k] != b.forward[k] || std::abs(first[k]->FirstParameter() - last[k]->FirstParameter()) > 1e-12 ||
         std::abs(first[k]->LastParameter() - last[k]->LastParameter()) > 1e-12)
-      throw Error(ErrorCode::InvalidModel, "the two profiles' curves do not correspond");
+      throw Error(ErrorCode::InvalidModel, "the two profiles' curves span different parameter ranges");
     const double u0 = first[k]->FirstParameter(), u1 = first[k]->LastParameter();
     const TopoDS_Edge& entrySide = sides[k];
     const TopoDS_Edge& leaveSide = sides[(k + 1) % n];
