@@ -195,11 +195,10 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
 namespace {
 
 /// A closed loop of curves joined end to end, as topology: edge k on curve k, the vertex
-/// where the loop enters edge k, and whether the loop runs curve k along its parameter.
+/// where the loop enters edge k, and the wire running round.
 struct Loop {
   std::vector<TopoDS_Edge> edges;
   std::vector<TopoDS_Vertex> entries;
-  std::vector<bool> forward;
   TopoDS_Wire wire;
 };
 
@@ -240,7 +239,6 @@ Loop loopOf(const std::vector<Handle(Geom_BSplineCurve)>& curves, const std::vec
             const std::vector<TopoDS_Vertex>& shared = {}) {
   const std::size_t n = curves.size();
   Loop loop;
-  loop.forward = forward;
   std::vector<gp_Pnt> entryPoints;
   for (std::size_t k = 0; k < n; ++k) entryPoints.push_back(entryOf(*curves[k], forward[k]));
 
@@ -256,11 +254,11 @@ Loop loopOf(const std::vector<Handle(Geom_BSplineCurve)>& curves, const std::vec
     const TopoDS_Vertex& leave = loop.entries[(k + 1) % n];
     TopoDS_Edge edge;
     builder.MakeEdge(edge, curves[k], kTolerance);
-    builder.Add(edge, (loop.forward[k] ? entry : leave).Oriented(TopAbs_FORWARD));
-    builder.Add(edge, (loop.forward[k] ? leave : entry).Oriented(TopAbs_REVERSED));
+    builder.Add(edge, (forward[k] ? entry : leave).Oriented(TopAbs_FORWARD));
+    builder.Add(edge, (forward[k] ? leave : entry).Oriented(TopAbs_REVERSED));
     builder.Range(edge, curves[k]->FirstParameter(), curves[k]->LastParameter());
     loop.edges.push_back(edge);
-    builder.Add(loop.wire, loop.forward[k] ? edge : TopoDS::Edge(edge.Reversed()));
+    builder.Add(loop.wire, forward[k] ? edge : TopoDS::Edge(edge.Reversed()));
   }
   loop.wire.Closed(true);
   return loop;
@@ -290,6 +288,41 @@ Handle(Geom2d_Line) alongV(double u) { return new Geom2d_Line(gp_Pnt2d(u, 0.0), 
 /// The line v = const, running with u.
 Handle(Geom2d_Line) alongU(double v) { return new Geom2d_Line(gp_Pnt2d(0.0, v), gp_Dir2d(1.0, 0.0)); }
 
+/// The ruled surface S(u, v) between two curves over the same range (v = 0 on the first) as
+/// a face on the edges of those curves and the side edges at the curves' start and end (one
+/// seam edge for closed curves). The edges carry their exact lines in (u, v), so, built
+/// directly, nothing needs checking (OCCT's ruled skin spent most of its time on that).
+TopoDS_Face ruledSideFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & last,
+                          const TopoDS_Edge& onFirst, const TopoDS_Edge& onLast, const TopoDS_Edge& sideAtStart,
+                          const TopoDS_Edge& sideAtEnd) {
+  const double u0 = first->FirstParameter(), u1 = first->LastParameter();
+  if (std::abs(u0 - last->FirstParameter()) > 1e-12 || std::abs(u1 - last->LastParameter()) > 1e-12)
+    throw Error(ErrorCode::InvalidModel, "the two profiles' curves span different parameter ranges");
+  const std::vector<double> sites = {0.0, 1.0};
+  BRep_Builder builder;
+  TopoDS_Face face;
+  builder.MakeFace(face, skinCurves({first, last}, sites, skinningSpace(sites, 1, false)), kTolerance);
+  builder.UpdateEdge(onFirst, alongU(0.0), face, kTolerance);
+  builder.UpdateEdge(onLast, alongU(1.0), face, kTolerance);
+  if (sideAtStart.IsSame(sideAtEnd)) {
+    builder.UpdateEdge(sideAtEnd, alongV(u1), alongV(u0), face, kTolerance);
+  } else {
+    builder.UpdateEdge(sideAtStart, alongV(u0), face, kTolerance);
+    builder.UpdateEdge(sideAtEnd, alongV(u1), face, kTolerance);
+  }
+  // Anticlockwise in (u, v): along the first curve, up the end side, back along the last
+  // curve, down the start side.
+  TopoDS_Wire boundary;
+  builder.MakeWire(boundary);
+  builder.Add(boundary, onFirst);
+  builder.Add(boundary, sideAtEnd);
+  builder.Add(boundary, onLast.Reversed());
+  builder.Add(boundary, sideAtStart.Reversed());
+  boundary.Closed(true);
+  builder.Add(face, boundary);
+  return face;
+}
+
 }  // namespace
 
 RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
@@ -316,47 +349,18 @@ RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
   std::vector<TopoDS_Edge> sides;
   for (std::size_t k = 0; k < n; ++k) sides.push_back(sideEdge(a.entries[k], b.entries[k]));
 
-  // Face k: the ruled surface S(u, v) between curve k of each profile; its edges carry their
-  // exact lines in (u, v): the profiles' edges at v = 0 and 1, the side edges at the curve's
-  // ends. Built directly, the edges need no check of their parameters (OCCT's ruled skin
-  // spent most of its time on that).
   BRep_Builder builder;
-  const std::vector<double> sites = {0.0, 1.0};
   RuledLoft loft;
   TopoDS_Shell shell;
   builder.MakeShell(shell);
   for (std::size_t k = 0; k < n; ++k) {
-    if (a.forward[k] != b.forward[k] || std::abs(first[k]->FirstParameter() - last[k]->FirstParameter()) > 1e-12 ||
-        std::abs(first[k]->LastParameter() - last[k]->LastParameter()) > 1e-12)
-      throw Error(ErrorCode::InvalidModel, "the two profiles' curves span different parameter ranges");
-    const double u0 = first[k]->FirstParameter(), u1 = first[k]->LastParameter();
     const TopoDS_Edge& entrySide = sides[k];
     const TopoDS_Edge& leaveSide = sides[(k + 1) % n];
-    const TopoDS_Edge& sideAtStart = a.forward[k] ? entrySide : leaveSide;
-    const TopoDS_Edge& sideAtEnd = a.forward[k] ? leaveSide : entrySide;
-    TopoDS_Face face;
-    builder.MakeFace(face, skinCurves({first[k], last[k]}, sites, skinningSpace(sites, 1, false)), kTolerance);
-    builder.UpdateEdge(a.edges[k], alongU(0.0), face, kTolerance);
-    builder.UpdateEdge(b.edges[k], alongU(1.0), face, kTolerance);
-    if (n == 1) {  // a closed curve: one side edge is the face's seam
-      builder.UpdateEdge(sideAtEnd, alongV(u1), alongV(u0), face, kTolerance);
-    } else {
-      builder.UpdateEdge(sideAtStart, alongV(u0), face, kTolerance);
-      builder.UpdateEdge(sideAtEnd, alongV(u1), face, kTolerance);
-    }
-    // Anticlockwise in (u, v): along the first profile, up the end side, back along the
-    // second profile, down the start side.
-    TopoDS_Wire boundary;
-    builder.MakeWire(boundary);
-    builder.Add(boundary, a.edges[k]);
-    builder.Add(boundary, sideAtEnd);
-    builder.Add(boundary, b.edges[k].Reversed());
-    builder.Add(boundary, sideAtStart.Reversed());
-    boundary.Closed(true);
-    builder.Add(face, boundary);
+    const TopoDS_Face face = ruledSideFace(first[k], last[k], a.edges[k], b.edges[k],
+                                           forward[k] ? entrySide : leaveSide, forward[k] ? leaveSide : entrySide);
     // Where the loop runs against the curve, the face turns too, so that each side edge is
     // run once each way by the two faces that share it.
-    loft.sides.push_back(a.forward[k] ? face : TopoDS::Face(face.Reversed()));
+    loft.sides.push_back(forward[k] ? face : TopoDS::Face(face.Reversed()));
     builder.Add(shell, loft.sides.back());
   }
   // The lines in the faces' parameters run over the edges' ranges (a degenerate side edge
