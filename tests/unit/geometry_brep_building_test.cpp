@@ -15,6 +15,7 @@
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/ruled_loft.h"
 
 namespace airshape::geometry {
 namespace {

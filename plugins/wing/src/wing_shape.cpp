@@ -9,6 +9,7 @@
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/loft_piece.h"
+#include "airshape/geometry/ruled_loft.h"
 
 namespace airshape::wing {
 

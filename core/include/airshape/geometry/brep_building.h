@@ -6,12 +6,18 @@
 #include <Geom_BSplineCurve.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
 #include <TopoDS_Wire.hxx>
 
 namespace airshape::geometry {
 
 // Small B-rep building blocks for lofted components: ruled faces between profile curves,
 // planar caps, sewing into a solid.
+
+/// The tolerance of the edges, faces and vertices built here.
+inline constexpr double kBrepTolerance = 1e-7;
+/// Curve ends this close join; faces this close are sewn.
+inline constexpr double kJoinTolerance = 1e-6;
 
 /// The curve moved by an affine map (applied to its poles, which is exact for B-splines).
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform);
@@ -31,19 +37,13 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
 
-/// The ruled loft between two closed profiles, each a loop of B-spline curves joined end
-/// to end (curve k of one to curve k of the other, over the same parameter range and run
-/// the same way round), closed by planar caps: one shell with shared edges, no sewing,
-/// oriented outwards. `sides[k]` is the ruled face of curve k, its surface the one of
-/// ruledFace (u the curves' parameter, v from the first profile to the last). Throws Error
-/// when the curves do not close or correspond, a profile is not planar or the solid
-/// encloses no volume.
-struct RuledLoft {
-  TopoDS_Shape solid;
-  TopoDS_Face firstCap, lastCap;
-  std::vector<TopoDS_Face> sides;
-};
-RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
-                    const std::vector<Handle(Geom_BSplineCurve)>& last);
+/// The planar face on a closed wire, sharing its edges, its normal turned so that the wire
+/// runs anticlockwise about it. Throws Error when the wire is not planar, or encloses no
+/// area where such a face would not be valid (a profile flattened to a line).
+TopoDS_Face planarFace(const TopoDS_Wire& wire);
+
+/// The solid turned so that its faces point outwards (Boolean operations then see its
+/// inside); throws Error when it encloses no volume (a segment of zero length or thickness).
+TopoDS_Solid outwards(TopoDS_Solid solid);
 
 }  // namespace airshape::geometry
