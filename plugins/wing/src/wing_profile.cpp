@@ -117,6 +117,39 @@ class NacaFourDigit {
   double camber_, camberAt_, thickness_, a4_;
 };
 
+/// What approximationSettings ask for: the number of poles, the error measure and the
+/// points (0-based, in the file's order) the curve must pass through.
+struct ApproximationRequest {
+  int poles = 0;
+  geometry::FitError measure = geometry::FitError::RootMeanSquare;
+  std::vector<int> pinned;
+};
+
+ApproximationRequest approximationRequest(const xercesc::DOMElement& settings, const std::string& xpath,
+                                          int pointCount) {
+  const auto* count = xml::firstChild(settings, "controlPointNumber");
+  if (!count)
+    throw Error(ErrorCode::InvalidModel,
+                "approximationSettings need a controlPointNumber (a maximumError alone is not supported)", {}, xpath);
+  ApproximationRequest request;
+  const std::string countPath = xpath + "/controlPointNumber";
+  request.poles = wholeNumber(model::parseVector(xml::text(*count), countPath).at(0), countPath);
+  if (request.poles < 4 || request.poles > pointCount)
+    throw Error(ErrorCode::InvalidModel,
+                "controlPointNumber must lie in [4, number of points] (got " + std::to_string(request.poles) + " for " +
+                    std::to_string(pointCount) + " points)",
+                {}, countPath);
+  request.measure = fitErrorOf(settings, xpath);
+  if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
+    for (double given : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices")) {
+      const int index = wholeNumber(given, xpath + "/interpolatedPointsIndices") - 1;  // given 1-based
+      if (index < 0 || index >= pointCount)
+        throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
+      request.pinned.push_back(index);
+    }
+  return request;
+}
+
 }  // namespace
 
 WingProfile WingProfile::fromDefinition(const schema::ProfileGeometryType& definition) {
@@ -165,55 +198,38 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
 
 WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
                                                 const std::string& xpath) {
-  const auto* count = xml::firstChild(settings, "controlPointNumber");
-  if (!count)
-    throw Error(ErrorCode::InvalidModel,
-                "approximationSettings need a controlPointNumber (a maximumError alone is not supported)", {}, xpath);
-  const std::string countPath = xpath + "/controlPointNumber";
-  const int poles = wholeNumber(model::parseVector(xml::text(*count), countPath).at(0), countPath);
+  const ApproximationRequest request = approximationRequest(settings, xpath, static_cast<int>(points.size()));
   const int last = static_cast<int>(points.size()) - 1;
-  if (poles < 4 || poles > last + 1)
-    throw Error(ErrorCode::InvalidModel,
-                "controlPointNumber must lie in [4, number of points] (got " + std::to_string(poles) + " for " +
-                    std::to_string(last + 1) + " points)",
-                {}, countPath);
-  const geometry::FitError measure = fitErrorOf(settings, xpath);
   const bool reversed = orderFromLowerSide(points);
-  std::set<int> pinned;
-  if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
-    for (double given : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices")) {
-      const int index = wholeNumber(given, xpath + "/interpolatedPointsIndices") - 1;  // 1-based, file order
-      if (index < 0 || index > last)
-        throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
-      pinned.insert(reversed ? last - index : index);
-    }
+  std::set<int> pinned = {0, last};
+  for (int index : request.pinned) pinned.insert(reversed ? last - index : index);
   WingProfile profile = fromPoints(points, xpath);  // chord, blunt or sharp
   const auto le = static_cast<int>(leadingEdgeIndex(points));
   if (le == 0 || le == last) throw Error(ErrorCode::InvalidModel, "the leading edge is an end point", {}, xpath);
-  pinned.insert({0, last, le});
+  pinned.insert(le);
 
   // Centripetal parameters, stretched on either side so that the leading edge is at 0.5.
   std::vector<double> parameters = geometry::chordParameters(points, 0.5);
   const double tLe = parameters[static_cast<std::size_t>(le)];
   for (double& t : parameters) t = t <= tLe ? 0.5 * t / tLe : 0.5 + 0.5 * (t - tLe) / (1.0 - tLe);
 
+  // The pinned points are constraints, the others samples whose parameters get corrected.
   std::vector<double> sampleParameters;
-  std::vector<gp_Pnt> samples;
+  std::vector<gp_Pnt> samples, kept;
   geometry::InterpolationConstraints constraints;
-  std::vector<gp_Pnt> kept;
   for (int i = 0; i <= last; ++i) {
     const auto at = static_cast<std::size_t>(i);
-    if (pinned.count(i)) {
-      constraints.parameters.push_back(parameters[at]);
-      kept.push_back(points[at]);
-    } else {
-      sampleParameters.push_back(parameters[at]);
-      samples.push_back(points[at]);
-    }
+    (pinned.count(i) ? constraints.parameters : sampleParameters).push_back(parameters[at]);
+    (pinned.count(i) ? kept : samples).push_back(points[at]);
   }
   constraints.points = geometry::toMatrix(kept);
-  const Handle(Geom_BSplineCurve) curve = geometry::fitCorrectingParameters(
-      geometry::uniformKnots(0.0, 1.0, poles, 3), sampleParameters, geometry::toMatrix(samples), constraints, measure);
+  Handle(Geom_BSplineCurve) curve;
+  try {
+    curve = geometry::fitCorrectingParameters(geometry::uniformKnots(0.0, 1.0, request.poles, 3), sampleParameters,
+                                              geometry::toMatrix(samples), constraints, request.measure);
+  } catch (const Error& error) {  // a singular system: too few distinct points between knots
+    throw Error(error.code(), error.message(), {}, xpath);
+  }
   profile.upper_ = [curve](double xsi) { return curve->Value(0.5 + 0.5 * xsi); };
   profile.lower_ = [curve](double xsi) { return curve->Value(0.5 - 0.5 * xsi); };
   profile.upperCurve_ = piece(*curve, 0.5, 1.0);
