@@ -137,6 +137,30 @@ def test_a_profile_flattened_to_a_line_is_an_error(tmp_path):
     assert "FAILED" in wing and "'Wing_Seg2'" in wing and "encloses no area" in wing, wing
 
 
+def test_the_span_of_an_approximated_airfoil_measures_the_fitted_outline(tmp_path):
+    """A wing whose tip airfoil stands upright (turned 90 degrees about x): its span reaches
+    the tip's lower side, so it follows the airfoil's curve, the fitted one where the points
+    are approximated (it measured the interpolated curve instead)."""
+    upright = ('<wing uID="Upright"><name>w</name><transformation/><sections>'
+               '<section uID="U0"><name>s</name><transformation/><elements><element uID="UE0"><name>e</name>'
+               "<airfoilUID>Parabolic</airfoilUID><transformation/></element></elements></section>"
+               '<section uID="U1"><name>s</name><transformation><rotation><x>90</x></rotation>'
+               "<translation><y>5</y></translation></transformation><elements>"
+               '<element uID="UE1"><name>e</name><airfoilUID>Parabolic</airfoilUID><transformation/></element>'
+               '</elements></section></sections><segments><segment uID="US"><name>s</name>'
+               "<fromElementUID>UE0</fromElementUID><toElementUID>UE1</toElementUID></segment></segments></wing>")
+    for name, settings in (("exact", ""), ("fitted", approximation(12))):
+        path = tmp_path / f"{name}.xml"
+        point_list_wing(path, settings)
+        path.write_text(path.read_text().replace("<wings>", "<wings>" + upright))
+        lower = [{"op": "wing_lower_point", "wing": "Upright", "segment": 1, "eta": 1, "xsi": i / 2000}
+                 for i in range(2001)]
+        span, *points = ask_file(path, {"op": "wing_span", "wing": "Upright"}, *lower)
+        reach = max(p[1] for p in points)  # the root lies at y = 0
+        # The span's box is the tessellated outline's, widened by deflection and tolerance.
+        assert math.isclose(span, reach + 2 * (1e-4 + 1e-7), abs_tol=2e-5), (name, span, reach)
+
+
 def write_wing(path, uid, sections, segments, guide_profiles):
     """The test wings' file with one more wing of the given sections and segments, and the
     given guide curve profiles."""

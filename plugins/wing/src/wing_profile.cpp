@@ -230,10 +230,7 @@ WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, cons
   } catch (const Error& error) {  // a singular system: too few distinct points between knots
     throw Error(error.code(), error.message(), {}, xpath);
   }
-  profile.upper_ = [curve](double xsi) { return curve->Value(0.5 + 0.5 * xsi); };
-  profile.lower_ = [curve](double xsi) { return curve->Value(0.5 - 0.5 * xsi); };
-  profile.upperCurve_ = piece(*curve, 0.5, 1.0);
-  profile.lowerCurve_ = piece(*curve, 0.5, 0.0);
+  profile.takeWholeCurve(curve, 0.5);
   return profile;
 }
 
@@ -272,20 +269,23 @@ WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::strin
   }
   const std::vector<double> parameters = geometry::chordParameters(kept, 0.5);
   Handle(Geom_BSplineCurve) curve = geometry::interpolateCurve(kept, parameters, 3);
-  const double tLe = parameters[keptLe];
   // Both sides run whole to the trailing edge, also where it is skewed: the reference means
   // to cut the side that reaches further aft square to the chord, but its cut never takes
   // effect, and its numbers are those of the whole sides (see docs/wing.md).
-  profile.upper_ = [curve, tLe](double xsi) { return curve->Value(tLe + xsi * (1.0 - tLe)); };
-  profile.lower_ = [curve, tLe](double xsi) { return curve->Value(tLe - xsi * tLe); };
-  profile.upperCurve_ = piece(*curve, tLe, 1.0);
-  profile.lowerCurve_ = piece(*curve, tLe, 0.0);
-  profile.interpolated_ = curve;
+  profile.takeWholeCurve(curve, parameters[keptLe]);
   return profile;
 }
 
+void WingProfile::takeWholeCurve(const Handle(Geom_BSplineCurve) & curve, double leadingEdge) {
+  upper_ = [curve, leadingEdge](double xsi) { return curve->Value(leadingEdge + xsi * (1.0 - leadingEdge)); };
+  lower_ = [curve, leadingEdge](double xsi) { return curve->Value(leadingEdge - xsi * leadingEdge); };
+  upperCurve_ = piece(*curve, leadingEdge, 1.0);
+  lowerCurve_ = piece(*curve, leadingEdge, 0.0);
+  whole_ = curve;
+}
+
 std::vector<Handle(Geom_BSplineCurve)> WingProfile::outline() const {
-  if (!interpolated_.IsNull()) return {interpolated_};
+  if (!whole_.IsNull()) return {whole_};
   Handle(Geom_BSplineCurve) lower = Handle(Geom_BSplineCurve)::DownCast(lowerCurve_->Copy());
   lower->Reverse();
   return {lower, upperCurve_};

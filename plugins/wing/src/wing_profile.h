@@ -65,11 +65,14 @@ class WingProfile {
   /// of them: piecewise Chebyshev of the given degree, error 1e-5 of the chord. Points at a
   /// given xsi lie on these curves, so they agree with the reference's.
   void approximateSides(const Side& upper, const Side& lower, int degree);
+  /// Both sides from one curve over [0, 1] running lower trailing edge -> leading edge (at
+  /// parameter `leadingEdge`) -> upper trailing edge; xsi runs linearly in its parameter.
+  void takeWholeCurve(const Handle(Geom_BSplineCurve) & curve, double leadingEdge);
 
   // Each side as a function of xsi (0 at the LE).
   Side upper_, lower_;
   Handle(Geom_BSplineCurve) upperCurve_, lowerCurve_;
-  Handle(Geom_BSplineCurve) interpolated_;  ///< a point list's whole curve, else null
+  Handle(Geom_BSplineCurve) whole_;  ///< a point list's whole curve (the outline), else null
   gp_Pnt leadingEdge_, trailingEdge_;
   bool blunt_ = false;
   bool lowerXsiFromTrailingEdge_ = false;
