@@ -81,10 +81,14 @@ Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b) {
   return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
 }
 
-TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second) {
+Handle(Geom_BSplineSurface)
+    ruledSurface(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second) {
   const std::vector<double> sites = {0.0, 1.0};
-  const auto surface = skinCurves({first, second}, sites, skinningSpace(sites, 1, false));
-  return BRepBuilderAPI_MakeFace(surface, kBrepTolerance).Face();
+  return skinCurves({first, second}, sites, skinningSpace(sites, 1, false));
+}
+
+TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second) {
+  return BRepBuilderAPI_MakeFace(ruledSurface(first, second), kBrepTolerance).Face();
 }
 
 TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {

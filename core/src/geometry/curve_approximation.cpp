@@ -58,6 +58,11 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
 
 namespace {
 
+gp_Pnt rowPoint(const PoleMatrix& points, std::size_t i) {
+  const auto row = static_cast<Eigen::Index>(i);
+  return gp_Pnt(points(row, 0), points(row, 1), points(row, 2));
+}
+
 /// The parameter of the foot of `point` on `curve`, by Newton's method on the squared
 /// distance from `start`; a step out of the curve's range returns to `start` and stops.
 double footParameter(const Geom_BSplineCurve& curve, const gp_Pnt& point, double start) {
@@ -82,8 +87,7 @@ double fitError(const Geom_BSplineCurve& curve, const std::vector<double>& param
                 FitError measure) {
   double largest = 0.0, squares = 0.0;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
-    const auto row = static_cast<Eigen::Index>(i);
-    const double d = curve.Value(parameters[i]).Distance(gp_Pnt(points(row, 0), points(row, 1), points(row, 2)));
+    const double d = curve.Value(parameters[i]).Distance(rowPoint(points, i));
     largest = std::max(largest, d);
     squares += d * d;
   }
@@ -102,10 +106,8 @@ Handle(Geom_BSplineCurve)
   for (int correction = 0;
        correction < maxCorrections && error > 0.0 && (previous - error) / std::max(error, 1e-6) > kWorthwhileGain;
        ++correction) {
-    for (std::size_t i = 0; i < parameters.size(); ++i) {
-      const auto row = static_cast<Eigen::Index>(i);
-      parameters[i] = footParameter(*curve, gp_Pnt(points(row, 0), points(row, 1), points(row, 2)), parameters[i]);
-    }
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+      parameters[i] = footParameter(*curve, rowPoint(points, i), parameters[i]);
     curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
     previous = error;
     error = fitError(*curve, parameters, points, measure);

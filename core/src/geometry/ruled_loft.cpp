@@ -22,7 +22,6 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
-#include "airshape/geometry/skinning.h"
 
 namespace airshape::geometry {
 
@@ -149,10 +148,9 @@ TopoDS_Face ruledSideFace(const Handle(Geom_BSplineCurve) & first, const Handle(
   const double u0 = first->FirstParameter(), u1 = first->LastParameter();
   if (std::abs(u0 - last->FirstParameter()) > 1e-12 || std::abs(u1 - last->LastParameter()) > 1e-12)
     throw Error(ErrorCode::InvalidModel, "the two profiles' curves span different parameter ranges");
-  const std::vector<double> sites = {0.0, 1.0};
   BRep_Builder builder;
   TopoDS_Face face;
-  builder.MakeFace(face, skinCurves({first, last}, sites, skinningSpace(sites, 1, false)), kBrepTolerance);
+  builder.MakeFace(face, ruledSurface(first, last), kBrepTolerance);
   builder.UpdateEdge(onFirst, alongU(0.0), face, kBrepTolerance);
   builder.UpdateEdge(onLast, alongU(1.0), face, kBrepTolerance);
   if (sideAtStart.IsSame(sideAtEnd)) {

@@ -203,8 +203,9 @@ WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, cons
   const bool reversed = orderFromLowerSide(points);
   std::set<int> pinned = {0, last};
   for (int index : request.pinned) pinned.insert(reversed ? last - index : index);
-  WingProfile profile = fromPoints(points, xpath);  // chord, blunt or sharp
+  if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
   const auto le = static_cast<int>(leadingEdgeIndex(points));
+  WingProfile profile = withChord(points, static_cast<std::size_t>(le));
   if (le == 0 || le == last) throw Error(ErrorCode::InvalidModel, "the leading edge is an end point", {}, xpath);
   pinned.insert(le);
 
@@ -234,19 +235,11 @@ WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, cons
   return profile;
 }
 
-WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::string& xpath) {
-  if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
-
-  orderFromLowerSide(points);
-
+WingProfile WingProfile::withChord(const std::vector<gp_Pnt>& points, std::size_t leIndex) {
   WingProfile profile;
   const gp_Pnt first = points.front(), last = points.back();
   profile.blunt_ = first.Distance(last) >= kSamePoint;
-
-  // The chord: the leading edge is the point farthest from the trailing-edge midpoint.
-  gp_Pnt middle((first.XYZ() + last.XYZ()) / 2.0);
-  const std::size_t leIndex = leadingEdgeIndex(points);
-  gp_Pnt le = points[leIndex];
+  gp_Pnt middle((first.XYZ() + last.XYZ()) / 2.0), le = points[leIndex];
   le.SetY(0.0);
   middle.SetY(0.0);
   if (profile.blunt_) {
@@ -258,6 +251,15 @@ WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::strin
     profile.trailingEdge_ = first;
   }
   profile.leadingEdge_ = le;
+  return profile;
+}
+
+WingProfile WingProfile::fromPoints(std::vector<gp_Pnt> points, const std::string& xpath) {
+  if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
+
+  orderFromLowerSide(points);
+  const std::size_t leIndex = leadingEdgeIndex(points);
+  WingProfile profile = withChord(points, leIndex);
 
   // The curve: consecutive duplicates dropped, cubic through centripetal parameters.
   std::vector<gp_Pnt> kept;

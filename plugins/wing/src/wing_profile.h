@@ -58,6 +58,10 @@ class WingProfile {
   /// parameters corrected towards the samples' feet as the reference corrects them.
   static WingProfile fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
                                             const std::string& xpath);
+  /// A profile with only its chord: the leading edge is the point at `leIndex` (the one
+  /// farthest from the trailing-edge midpoint), the trailing edge the end point (sharp) or
+  /// the less far aft end's place on the chord line (blunt). `points` run from the lower side.
+  static WingProfile withChord(const std::vector<gp_Pnt>& points, std::size_t leIndex);
   /// An airfoil through points (any orientation), as a point list gives them.
   static WingProfile fromPoints(std::vector<gp_Pnt> points, const std::string& xpath);
 

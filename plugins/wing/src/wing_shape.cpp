@@ -1,9 +1,5 @@
 #include "wing_shape.h"
 
-#include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeWire.hxx>
-#include <TopoDS_Wire.hxx>
-
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"

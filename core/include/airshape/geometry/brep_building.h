@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
@@ -24,6 +25,11 @@ Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, c
 
 /// The straight segment from a to b as a degree-1 B-spline over [0, 1].
 Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b);
+
+/// The ruled surface joining the points of equal parameter of two curves over the same
+/// range: u the curves' parameter, v from 0 on the first to 1 on the second.
+Handle(Geom_BSplineSurface)
+    ruledSurface(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second);
 
 /// The ruled face joining the points of equal parameter of two curves over the same range.
 TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second);
