@@ -3,7 +3,7 @@ import json
 import math
 import os
 
-from conftest import DATA, airshape, conformance_passed, query_answers as ask_file
+from conftest import DATA, airshape, conformance_passed, query_answers as ask_file, shared_path
 
 WINGS = os.path.join(DATA, "wing-cst-rectangular.xml")
 
@@ -135,6 +135,37 @@ def test_a_profile_flattened_to_a_line_is_an_error(tmp_path):
     result = airshape("build", str(path))
     wing = next(line for line in result.stdout.splitlines() if line.split()[:2] == ["wing", "Wing"])
     assert "FAILED" in wing and "'Wing_Seg2'" in wing and "encloses no area" in wing, wing
+
+
+def flattened_section_build(source, path, section, thickness):
+    """`airshape build` of `source` with the section's scaling in z set to `thickness`: the
+    report line of the wing that section belongs to."""
+    text = open(source).read()
+    scaling = text.index("<scaling", text.index(f'uID="{section}"'))
+    z = text.index("<z>", scaling)
+    path.write_text(text[:z] + f"<z>{thickness}</z>" + text[text.index("</z>", z) + 4:])
+    wing = text[:scaling].rsplit("<wing ", 1)[1].split('"')[1]
+    result = airshape("build", str(path))
+    return next(line for line in result.stdout.splitlines() if line.split()[:2] == ["wing", wing])
+
+
+def test_a_guided_wing_flattened_where_its_solid_stays_valid_is_kept(tmp_path):
+    """Sections scaled to almost no thickness pinch the guided test wing; it stays a valid solid."""
+    guided = tmp_path / "guided.xml"
+    guided_wing(guided, "C0")
+    for section in ("GS0", "GS1", "GS2"):
+        line = flattened_section_build(guided, tmp_path / "flat.xml", section, "1e-9")
+        assert "valid solid" in line and "INVALID" not in line, (section, line)
+
+
+def test_a_guided_wing_flattened_at_its_root_or_tip_is_an_error_where_its_solid_is_invalid(tmp_path):
+    """The guided skin only approximates a section scaled to almost no thickness: sewn to it,
+    a root or tip cap crossed itself or faced the wrong way (an INVALID solid)."""
+    source = shared_path("data", "cpacs", "simpletest-with-guides.cpacs.xml")
+    for section, segment in (("Cpacs2Test_Wing_Sec1", "Cpacs2Test_Wing_Seg_1_2"),
+                             ("Cpacs2Test_Wing_Sec3", "Cpacs2Test_Wing_Seg_2_3")):
+        line = flattened_section_build(source, tmp_path / "flat.xml", section, "1e-9")
+        assert "FAILED" in line and f"'{segment}'" in line and "encloses no area" in line, line
 
 
 def test_the_span_of_an_approximated_airfoil_measures_the_fitted_outline(tmp_path):

@@ -12,6 +12,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <TColStd_Array1OfInteger.hxx>
@@ -35,6 +36,27 @@ constexpr double kEmptyVolume = 1e-12;
 /// A profile thinner on average (its area over its box diagonal) than this many sewing
 /// tolerances encloses nothing: its cap would be a face whose edges touch.
 constexpr double kThinnest = 10.0;
+
+/// Whether `area`, bounded by these curves, is none (see enclosesNoArea).
+bool isNoArea(double area, const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
+  Bnd_Box poles;
+  for (const auto& curve : boundary)
+    for (int i = 1; i <= curve->NbPoles(); ++i) poles.Add(curve->Pole(i));
+  return std::abs(area) <= kThinnest * kJoinTolerance * (poles.IsVoid() ? 0.0 : std::sqrt(poles.SquareExtent()));
+}
+
+/// The B-spline curves of a wire's edges; nothing when an edge is not a B-spline.
+std::optional<std::vector<Handle(Geom_BSplineCurve)>> splinesOf(const TopoDS_Wire& wire) {
+  std::vector<Handle(Geom_BSplineCurve)> curves;
+  for (TopExp_Explorer edges(wire, TopAbs_EDGE); edges.More(); edges.Next()) {
+    double first, last;
+    const auto curve =
+        Handle(Geom_BSplineCurve)::DownCast(BRep_Tool::Curve(TopoDS::Edge(edges.Current()), first, last));
+    if (curve.IsNull()) return std::nullopt;
+    curves.push_back(curve);
+  }
+  return curves;
+}
 
 /// The plane through every pole of the curves (their least-squares plane) when they all lie
 /// on it within kBrepTolerance; nothing otherwise.
@@ -115,19 +137,9 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
 }
 
 TopoDS_Face planarFace(const TopoDS_Wire& wire) {
-  std::vector<Handle(Geom_BSplineCurve)> curves;
-  for (TopExp_Explorer edges(wire, TopAbs_EDGE); edges.More(); edges.Next()) {
-    double first, last;
-    const auto curve =
-        Handle(Geom_BSplineCurve)::DownCast(BRep_Tool::Curve(TopoDS::Edge(edges.Current()), first, last));
-    if (curve.IsNull()) return BRepBuilderAPI_MakeFace(wire, true).Face();
-    curves.push_back(curve);
-  }
-  Bnd_Box poles;
-  for (const auto& curve : curves)
-    for (int i = 1; i <= curve->NbPoles(); ++i) poles.Add(curve->Pole(i));
-  const double enclosesNothing = kThinnest * kJoinTolerance * (poles.IsVoid() ? 0.0 : std::sqrt(poles.SquareExtent()));
-  std::optional<gp_Pln> plane = planeOfPoles(curves);
+  const auto curves = splinesOf(wire);
+  if (!curves) return BRepBuilderAPI_MakeFace(wire, true).Face();
+  std::optional<gp_Pln> plane = planeOfPoles(*curves);
   TopoDS_Face face;
   double area = 0.0;
   if (plane) {
@@ -143,10 +155,16 @@ TopoDS_Face planarFace(const TopoDS_Wire& wire) {
   if (face.IsNull()) throw Error(ErrorCode::InvalidModel, "a profile is not planar, so no planar cap closes it");
   // A profile flattened to a line (scaled to no thickness or chord) may still bound a valid
   // face of no area (its edges apart); where its edges touch, no face closes it.
-  if (std::abs(area) <= enclosesNothing && !BRepCheck_Analyzer(face).IsValid())
-    throw Error(ErrorCode::InvalidModel, "a profile encloses no area (scaled to no thickness?)");
+  if (isNoArea(area, *curves) && !BRepCheck_Analyzer(face).IsValid()) throw noAreaError();
   return face;
 }
+
+bool enclosesNoArea(const TopoDS_Face& planarFace) {
+  const auto curves = splinesOf(BRepTools::OuterWire(planarFace));
+  return curves && isNoArea(areaOf(planarFace), *curves);
+}
+
+Error noAreaError() { return Error(ErrorCode::InvalidModel, "a profile encloses no area (scaled to no thickness?)"); }
 
 TopoDS_Solid outwards(TopoDS_Solid solid) {
   const double volume = roughSignedVolumeOf(solid);

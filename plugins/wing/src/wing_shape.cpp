@@ -1,5 +1,7 @@
 #include "wing_shape.h"
 
+#include <BRepCheck_Analyzer.hxx>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
@@ -124,7 +126,15 @@ NamedShape WingShape::solid(const std::string& wingUid, const std::vector<std::s
     named.emplace_back(segmentUids[k] + "/lower", segment.lower);
     named.emplace_back(segmentUids[k] + "/trailingEdge", segment.trailingEdge);
   }
-  return sewnNamedSolid(named);
+  NamedShape solid = sewnNamedSolid(named);
+  // A root or tip cap on a profile flattened to a line is a valid face on its own, but a
+  // guided skin only approximates that profile, and sewn to it the cap may cross itself or
+  // face the wrong way. Such a solid is refused (checked only then: the check is dear).
+  for (const auto& [cap, segmentUid] : {std::pair(segments_.front().innerCap, segmentUids.front()),
+                                        std::pair(segments_.back().outerCap, segmentUids.back())})
+    if (!cap.IsNull() && geometry::enclosesNoArea(cap) && !BRepCheck_Analyzer(solid.shape).IsValid())
+      throw Error(ErrorCode::InvalidModel, "segment '" + segmentUid + "': " + geometry::noAreaError().message());
+  return solid;
 }
 
 }  // namespace airshape::wing

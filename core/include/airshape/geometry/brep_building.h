@@ -10,6 +10,8 @@
 #include <TopoDS_Solid.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include "airshape/error.h"
+
 namespace airshape::geometry {
 
 // Small B-rep building blocks for lofted components: ruled faces between profile curves,
@@ -47,6 +49,13 @@ TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS
 /// runs anticlockwise about it. Throws Error when the wire is not planar, or encloses no
 /// area where such a face would not be valid (a profile flattened to a line).
 TopoDS_Face planarFace(const TopoDS_Wire& wire);
+
+/// Whether a planar face encloses no area: on average thinner (its area over its boundary's
+/// size) than a few join tolerances, as the cap of a profile flattened to a line.
+bool enclosesNoArea(const TopoDS_Face& planarFace);
+
+/// The error of a profile that encloses no area where no face can close it.
+Error noAreaError();
 
 /// The solid turned so that its faces point outwards (Boolean operations then see its
 /// inside); throws Error when it encloses no volume (a segment of zero length or thickness).
