@@ -439,7 +439,12 @@ def test_a_c2_join_blends_its_cells_like_a_smooth_guide(tmp_path):
 def test_numbers_that_are_not_finite_are_errors_naming_the_node(tmp_path):
     """NaN and INF are numbers to XML Schema, but no wing can be built from them."""
     for old, new, node in (("<scaling><x>2</x>", "<scaling><x>NaN</x>", "scaling/x"),
-                           ("<rX>0</rX><rY>0.5</rY>", "<rX>0</rX><rY>INF</rY>", "pointList/rY")):
+                           ("<rX>0</rX><rY>0.5</rY>", "<rX>0</rX><rY>INF</rY>", "pointList/rY"),
+                           ("<toRelativeCircumference>0</toRelativeCircumference>",
+                            "<toRelativeCircumference>NaN</toRelativeCircumference>", "toRelativeCircumference"),
+                           ("<toRelativeCircumference>0</toRelativeCircumference>",
+                            "<toRelativeCircumference>0</toRelativeCircumference><rXDirection><x>1</x><y>-INF</y>"
+                            "<z>0</z></rXDirection>", "rXDirection/y")):
         path = edited_tapered_wing(tmp_path / "not-finite.xml", True, old, new)
         result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
         answer = json.loads(result.stdout)

@@ -65,14 +65,15 @@ std::optional<double> extensionNumber(const GuideCurveType& curve, const char* n
 
 /// Where a root guide curve starts on its first profile.
 ProfilePosition startOf(const GuideCurveType& curve) {
-  if (curve.fromRelativeCircumference) return {*curve.fromRelativeCircumference, false};
+  if (curve.fromRelativeCircumference)
+    return {finite(*curve.fromRelativeCircumference, curve.xpath + "/fromRelativeCircumference"), false};
   return {*extensionNumber(curve, "fromParameter"), true};
 }
 
 /// Where a guide curve piece ends on its outer profile.
 ProfilePosition endOf(const GuideCurveType& curve) {
   if (const auto parameter = extensionNumber(curve, "toParameter")) return {*parameter, true};
-  return {curve.toRelativeCircumference, false};
+  return {finite(curve.toRelativeCircumference, curve.xpath + "/toRelativeCircumference"), false};
 }
 
 /// One piece of a guide curve: the curve definition in segment `segment` and its points.
@@ -112,8 +113,10 @@ void placePiece(Piece& piece, const GuideProfile& profile, const GuideCurveSecti
   const GuideCurveType& curve = *piece.definition;
   const std::size_t k = piece.segment;
   const gp_Pnt p0 = sections.pointAt(k, piece.from), p1 = sections.pointAt(k + 1, endOf(curve));
-  gp_Vec x = curve.rXDirection ? gp_Vec(curve.rXDirection->x, curve.rXDirection->y, curve.rXDirection->z)
-                               : sections.defaultXDirection;
+  gp_Vec x = sections.defaultXDirection;
+  if (const auto& given = curve.rXDirection)
+    x = gp_Vec(finite(given->x, given->xpath + "/x"), finite(given->y, given->xpath + "/y"),
+               finite(given->z, given->xpath + "/z"));
   const gp_Vec chord(p0, p1);
   if (x.Magnitude() < Precision::Confusion() || chord.Magnitude() < Precision::Confusion() ||
       x.Crossed(chord).Magnitude() < Precision::Confusion() * x.Magnitude() * chord.Magnitude())

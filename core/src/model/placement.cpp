@@ -14,13 +14,6 @@ namespace {
 
 double degrees(double value) { return value * M_PI / 180.0; }
 
-/// A number the geometry is built from; NaN and INF are numbers to XML Schema, but no
-/// geometry can be built from them, so they are an error naming the node.
-double finite(double value, const std::string& xpath) {
-  if (!std::isfinite(value)) throw Error(ErrorCode::InvalidModel, "not a finite number (NaN or INF)", {}, xpath);
-  return value;
-}
-
 /// One coordinate of a point type, `absent` where it is left out.
 double coordinate(const std::optional<double>& value, const std::string& xpath, double absent = 0.0) {
   return value ? finite(*value, xpath) : absent;
@@ -143,6 +136,11 @@ std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const s
     }
   }
   return result;
+}
+
+double finite(double value, const std::string& xpath) {
+  if (!std::isfinite(value)) throw Error(ErrorCode::InvalidModel, "not a finite number (NaN or INF)", {}, xpath);
+  return value;
 }
 
 std::vector<double> parseVector(const std::string& text, const std::string& xpath) {

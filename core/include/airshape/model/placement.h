@@ -32,6 +32,10 @@ Transform componentTransform(const Configuration& configuration, const std::stri
 /// fromSectionUID names a section no positioning reaches, or when positionings loop.
 std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const schema::PositioningsType* positionings);
 
+/// A number the geometry is built from. NaN and INF are numbers to XML Schema, but no
+/// geometry can be built from them: Error(InvalidModel) naming `xpath`.
+double finite(double value, const std::string& xpath);
+
 /// Numbers of a CPACS vector text ("1;2.5;3"). Throws Error(InvalidModel) naming `xpath`.
 std::vector<double> parseVector(const std::string& text, const std::string& xpath);
 
