@@ -304,3 +304,21 @@ def test_a_loft_that_cannot_be_built_names_the_fuselage(tmp_path):
     far, near = (json.loads(line) for line in result.stdout.splitlines())
     assert "/fuselages/fuselage[1]/segments" in far.get("error", ""), far
     assert near["ok"] > 0
+
+
+def test_a_fuselage_whose_end_profile_is_flattened_names_the_fuselage(tmp_path):
+    """A nose profile scaled to a line (y = 0) closes with no cap: `build` names the fuselage's
+    CPACS path (it said "the fuselage"), and the other fuselage still builds."""
+    profile = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(16)}</fuselageProfile></fuselageProfiles>'
+    flat = fuselage("Flat", "Circle", 10.0).replace(
+        '<element uID="FlatE0"><name>e</name><profileUID>Circle</profileUID><transformation/>',
+        '<element uID="FlatE0"><name>e</name><profileUID>Circle</profileUID>'
+        "<transformation><scaling><x>1</x><y>0</y><z>1</z></scaling></transformation>", 1)
+    assert "<y>0</y>" in flat
+    path = tmp_path / "flat.xml"
+    path.write_text(HEADER + flat + fuselage("Round", "Circle", 10.0) +
+                    f"</fuselages></model></aircraft><profiles>{profile}</profiles></vehicles></cpacs>")
+    lines = {line.split()[1]: line for line in airshape("build", str(path)).stdout.splitlines()
+             if line.startswith("  fuselage")}
+    assert "FAILED: /cpacs/vehicles/aircraft/model[1]/fuselages/fuselage[1]: " in lines["Flat"], lines
+    assert "encloses no area" in lines["Flat"] and "valid solid" in lines["Round"], lines

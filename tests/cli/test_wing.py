@@ -122,7 +122,8 @@ def test_a_segment_of_zero_length_is_an_error(tmp_path):
     write_wing(path, "Flat", sections, segments, "")
     result = airshape("query", str(path), stdin='{"op":"wing_segment_volume","wing":"Flat","segment":1}\n')
     answer = json.loads(result.stdout)
-    assert "error" in answer and "'ZW'" in answer["error"] and "no volume" in answer["error"], answer
+    assert answer.get("error", "").startswith("/cpacs/vehicles/aircraft/model[1]/wings/wing[1]/segments/segment[1]: "), answer
+    assert "no volume" in answer["error"], answer
 
 
 def test_a_profile_flattened_to_a_line_is_an_error(tmp_path):
@@ -134,7 +135,8 @@ def test_a_profile_flattened_to_a_line_is_an_error(tmp_path):
     path.write_text(text[:scaling] + "<z>0</z>" + text[text.index("</z>", scaling) + 4:])
     result = airshape("build", str(path))
     wing = next(line for line in result.stdout.splitlines() if line.split()[:2] == ["wing", "Wing"])
-    assert "FAILED" in wing and "'Wing_Seg2'" in wing and "encloses no area" in wing, wing
+    assert "FAILED: /cpacs/vehicles/aircraft/model[1]/wings/wing[1]/segments/segment[2]: " in wing, wing
+    assert "encloses no area" in wing, wing
 
 
 def flattened_section_build(source, path, section, thickness):
@@ -162,10 +164,10 @@ def test_a_guided_wing_flattened_at_its_root_or_tip_is_an_error_where_its_solid_
     """The guided skin only approximates a section scaled to almost no thickness: sewn to it,
     a root or tip cap crossed itself or faced the wrong way (an INVALID solid)."""
     source = shared_path("data", "cpacs", "simpletest-with-guides.cpacs.xml")
-    for section, segment in (("Cpacs2Test_Wing_Sec1", "Cpacs2Test_Wing_Seg_1_2"),
-                             ("Cpacs2Test_Wing_Sec3", "Cpacs2Test_Wing_Seg_2_3")):
+    for section, segment in (("Cpacs2Test_Wing_Sec1", 1), ("Cpacs2Test_Wing_Sec3", 2)):
         line = flattened_section_build(source, tmp_path / "flat.xml", section, "1e-9")
-        assert "FAILED" in line and f"'{segment}'" in line and "encloses no area" in line, line
+        assert f"FAILED: /cpacs/vehicles/aircraft/model[1]/wings/wing[1]/segments/segment[{segment}]: " in line, line
+        assert "encloses no area" in line, line
 
 
 def test_the_span_of_an_approximated_airfoil_measures_the_fitted_outline(tmp_path):
@@ -449,6 +451,15 @@ def test_numbers_that_are_not_finite_are_errors_naming_the_node(tmp_path):
         result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
         answer = json.loads(result.stdout)
         assert node in answer.get("error", "") and "not a finite number" in answer["error"], answer
+
+
+def test_a_wing_guide_curve_placed_by_curve_parameter_is_an_error_naming_it(tmp_path):
+    """fromParameter (the reference's extension) has no meaning on a wing's airfoil."""
+    path = edited_tapered_wing(tmp_path / "parameter.xml", True, "<fromRelativeCircumference>0</fromRelativeCircumference>",
+                               "<fromParameter>0</fromParameter>")
+    result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n')
+    answer = json.loads(result.stdout)
+    assert "guideCurves/guideCurve[1]" in answer.get("error", "") and "relative circumferences" in answer["error"], answer
 
 
 def test_an_absurdly_large_wing_answers_in_finite_time(tmp_path):

@@ -112,7 +112,14 @@ std::vector<Piece> chainOf(const GuideCurveType& root, const std::vector<const s
 void placePiece(Piece& piece, const GuideProfile& profile, const GuideCurveSections& sections, double from, double to) {
   const GuideCurveType& curve = *piece.definition;
   const std::size_t k = piece.segment;
-  const gp_Pnt p0 = sections.pointAt(k, piece.from), p1 = sections.pointAt(k + 1, endOf(curve));
+  gp_Pnt p0, p1;
+  try {
+    p0 = sections.pointAt(k, piece.from);
+    p1 = sections.pointAt(k + 1, endOf(curve));
+  } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;
+    throw Error(error.code(), error.message(), {}, curve.xpath);  // the component cannot place this curve's ends
+  }
   gp_Vec x = sections.defaultXDirection;
   if (const auto& given = curve.rXDirection)
     x = gp_Vec(finite(given->x, given->xpath + "/x"), finite(given->y, given->xpath + "/y"),

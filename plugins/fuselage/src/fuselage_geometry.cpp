@@ -51,9 +51,10 @@ class ProfileLibrary {
   std::unordered_map<std::string, FuselageProfile> built_;
 };
 
-const TopoDS_Shape& solidOf(const geometry::LoftPiece& segment) {
-  if (segment.solid.IsNull()) throw Error(ErrorCode::InvalidModel, segment.solidProblem);
-  return segment.solid;
+/// The piece's solid; where it has none, an error naming `xpath`.
+const TopoDS_Shape& solidOf(const geometry::LoftPiece& piece, const std::string& xpath) {
+  if (piece.solid.IsNull()) throw Error(ErrorCode::InvalidModel, piece.solidProblem, {}, xpath);
+  return piece.solid;
 }
 
 /// The parameter of the point of `curve` at `target` (within 1e-7), found by Newton's method
@@ -90,6 +91,7 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
                                                              const schema::FuselageType& fuselage) {
   return configuration.cache().obtain<FuselageGeometry>("fuselage-geometry:" + fuselage.uID, [&] {
     auto geometry = std::make_shared<FuselageGeometry>();
+    geometry->xpath_ = fuselage.xpath;
     ProfileLibrary profiles(configuration.cpacs());
     const auto placed = model::placedElements(configuration, fuselage);
     if (!fuselage.segments) return std::shared_ptr<const FuselageGeometry>(geometry);
@@ -232,6 +234,7 @@ void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXp
   for (std::size_t k = 0; k < segmentUids_.size(); ++k) {
     FuselageSegment segment;
     segment.uid = segmentUids_[k];
+    segment.xpath = segmentXpaths[k];
     segment.vStart = sectionSites_[k];
     segment.vEnd = sectionSites_[k + 1];
     if (!(segment.vEnd > segment.vStart))
@@ -260,12 +263,9 @@ TopoDS_Face FuselageGeometry::profileCap(std::size_t section) const {
   return geometry::planarFace({profile, geometry::straightLine(profile->EndPoint(), profile->StartPoint())});
 }
 
-geometry::LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to, const std::string& name) const {
-  geometry::LoftPiece piece = patchRows_.empty()
-                                  ? geometry::loftPiece(loft_, sectionSites_[from], sectionSites_[to], closedProfiles_)
-                                  : geometry::loftPiece(patchRows_[from], 0.0, 1.0, closedProfiles_);
-  if (!piece.solidProblem.empty()) piece.solidProblem = name + ": " + piece.solidProblem;
-  return piece;
+geometry::LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to) const {
+  return patchRows_.empty() ? geometry::loftPiece(loft_, sectionSites_[from], sectionSites_[to], closedProfiles_)
+                            : geometry::loftPiece(patchRows_[from], 0.0, 1.0, closedProfiles_);
 }
 
 TopoDS_Face FuselageGeometry::skinFace(std::size_t from, std::size_t to) const {
@@ -276,9 +276,7 @@ TopoDS_Face FuselageGeometry::skinFace(std::size_t from, std::size_t to) const {
 const geometry::LoftPiece& FuselageGeometry::segmentPiece(std::size_t segment) const {
   std::lock_guard<std::mutex> lock(piecesMutex_);
   auto& built = segmentPieces_[segment];
-  if (!built)
-    built =
-        std::make_unique<geometry::LoftPiece>(piece(segment, segment + 1, "segment '" + segments_[segment].uid + "'"));
+  if (!built) built = std::make_unique<geometry::LoftPiece>(piece(segment, segment + 1));
   return *built;
 }
 
@@ -308,7 +306,7 @@ double FuselageGeometry::circumference(std::size_t segment, double eta) const {
 }
 
 double FuselageGeometry::segmentVolume(std::size_t segment) const {
-  return geometry::volumeOf(solidOf(segmentPiece(segment)));
+  return geometry::volumeOf(solidOf(segmentPiece(segment), segments_[segment].xpath));
 }
 
 double FuselageGeometry::segmentSurfaceArea(std::size_t segment) const {
@@ -323,7 +321,7 @@ double FuselageGeometry::volume() const {
     return total;
   }
   // One skin face over the whole loft and its two caps: quicker than the named solid.
-  const geometry::LoftPiece whole = piece(0, segments_.size(), "the fuselage");
+  const geometry::LoftPiece whole = piece(0, segments_.size());
   if (!whole.solid.IsNull()) return geometry::volumeOf(whole.solid);
   double total = 0.0;  // sewing can fail on one face with many degenerate spans; segments do not
   for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentVolume(k);
@@ -340,7 +338,7 @@ double FuselageGeometry::surfaceArea() const {
 }
 
 NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
-  if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid");
+  if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid", {}, xpath_);
   std::vector<std::pair<std::string, TopoDS_Face>> named;
   try {
     if (patchRows_.empty())
@@ -349,7 +347,7 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
     else
       named = {{fuselageUid + "/front", profileCap(0)}, {fuselageUid + "/rear", profileCap(profiles_.size() - 1)}};
   } catch (const Error& error) {
-    throw Error(error.code(), "the fuselage: " + error.message());
+    throw Error(error.code(), error.message(), {}, xpath_);
   }
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     named.emplace_back(segments_[k].uid + "/skin", skinFace(k, k + 1));
@@ -361,7 +359,7 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
   try {
     return sewnNamedSolid(named);
   } catch (const Error& error) {
-    throw Error(error.code(), "the fuselage: " + error.message());
+    throw Error(error.code(), error.message(), {}, xpath_);
   }
 }
 

@@ -25,6 +25,7 @@ namespace airshape::fuselage {
 /// One segment of a fuselage: its share [vStart, vEnd] of the fuselage's loft.
 struct FuselageSegment {
   std::string uid;
+  std::string xpath;  ///< where the segment is defined, for errors
   double vStart = 0.0, vEnd = 1.0;
 };
 
@@ -72,7 +73,7 @@ class FuselageGeometry {
   /// The loft's skin between sections `from` and `to` (chain order) as one face.
   TopoDS_Face skinFace(std::size_t from, std::size_t to) const;
   /// The B-rep of the loft between sections `from` and `to`.
-  geometry::LoftPiece piece(std::size_t from, std::size_t to, const std::string& name) const;
+  geometry::LoftPiece piece(std::size_t from, std::size_t to) const;
   /// A segment's B-rep, built on first use: most queries need none.
   const geometry::LoftPiece& segmentPiece(std::size_t segment) const;
 
@@ -87,6 +88,7 @@ class FuselageGeometry {
   std::vector<Handle(Geom_BSplineSurface)> patchRows_;
   std::vector<double> cellParameters_;
   bool closedProfiles_ = true;
+  std::string xpath_;  ///< where the fuselage is defined, for errors
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;
   mutable std::mutex piecesMutex_;

@@ -74,8 +74,8 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
         return found->second;
       };
       geometry->segmentUids_.push_back(segment.uID);
-      geometry->segments_.push_back(
-          {segment.uID, end(segment.fromElementUID, "fromElementUID"), end(segment.toElementUID, "toElementUID")});
+      geometry->segments_.push_back({segment.uID, segment.xpath, end(segment.fromElementUID, "fromElementUID"),
+                                     end(segment.toElementUID, "toElementUID")});
     }
     geometry->configuration_ = &configuration;
     geometry->wing_ = &wing;

@@ -32,6 +32,7 @@ struct SegmentEnd {
 
 struct WingSegment {
   std::string uid;
+  std::string xpath;  ///< where the segment is defined, for errors
   SegmentEnd inner, outer;
 };
 

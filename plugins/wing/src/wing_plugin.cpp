@@ -68,7 +68,7 @@ class WingPlugin final : public plugin::BasicPlugin {
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("wing", [](const Configuration& c, const std::string& uid) {
       const schema::WingType& wing = model::findByUid(c, model::primaryModel(c).wings, uid, "wing");
-      return WingShape::of(c, wing)->solid(wing.uID, WingGeometry::of(c, wing)->segmentUids());
+      return WingShape::of(c, wing)->solid();
     });
   }
 

@@ -40,7 +40,7 @@ std::vector<Handle(Geom_BSplineCurve)> airfoilLoop(const PlacedAirfoil& airfoil)
 SegmentShape segmentShape(const WingSegment& segment) {
   const PlacedAirfoil inner = placedAirfoil(segment.inner), outer = placedAirfoil(segment.outer);
   if (inner.trailingEdge.IsNull() != outer.trailingEdge.IsNull())
-    throw Error(ErrorCode::InvalidModel, "segment '" + segment.uid + "' joins a blunt and a sharp trailing edge");
+    throw Error(ErrorCode::InvalidModel, "joins a blunt and a sharp trailing edge", {}, segment.xpath);
   SegmentShape shape;
   try {
     const geometry::RuledLoft loft = geometry::ruledLoft(airfoilLoop(inner), airfoilLoop(outer));
@@ -51,7 +51,7 @@ SegmentShape segmentShape(const WingSegment& segment) {
     shape.outerCap = loft.lastCap;
     shape.solid = loft.solid;
   } catch (const Error& error) {
-    throw Error(error.code(), "segment '" + segment.uid + "': " + error.message());
+    throw Error(error.code(), error.message(), {}, segment.xpath);
   }
   return shape;
 }
@@ -77,7 +77,7 @@ SegmentShape guidedSegmentShape(const WingGeometry& geometry, std::size_t segmen
     shape.outerCap = geometry::loftCap(surface, v1, closed);
     shape.solid = geometry::sewnSolid({shape.upper, shape.lower, shape.trailingEdge, shape.innerCap, shape.outerCap});
   } catch (const Error& error) {
-    throw Error(ErrorCode::InvalidModel, "segment '" + geometry.segments()[segment].uid + "': " + error.message());
+    throw Error(error.code(), error.message(), {}, geometry.segments()[segment].xpath);
   }
   return shape;
 }
@@ -88,6 +88,9 @@ std::shared_ptr<const WingShape> WingShape::of(const Configuration& configuratio
   return configuration.cache().obtain<WingShape>("wing-shape:" + wing.uID, [&] {
     auto shape = std::make_shared<WingShape>();
     const auto geometry = WingGeometry::of(configuration, wing);
+    shape->wingUid_ = wing.uID;
+    shape->wingPath_ = wing.xpath;
+    shape->segmentDefinitions_ = geometry->segments();
     for (std::size_t k = 0; k < geometry->segments().size(); ++k)
       shape->segments_.push_back(geometry->guidedSkin() ? guidedSegmentShape(*geometry, k)
                                                         : segmentShape(geometry->segments()[k]));
@@ -115,25 +118,26 @@ double WingShape::surfaceArea() const {
   return total;
 }
 
-NamedShape WingShape::solid(const std::string& wingUid, const std::vector<std::string>& segmentUids) const {
-  if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the wing has no segments, so no solid");
-  std::vector<std::pair<std::string, TopoDS_Face>> named = {{wingUid + "/root", segments_.front().innerCap},
-                                                            {wingUid + "/tip", segments_.back().outerCap}};
+NamedShape WingShape::solid() const {
+  if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the wing has no segments, so no solid", {}, wingPath_);
+  std::vector<std::pair<std::string, TopoDS_Face>> named = {{wingUid_ + "/root", segments_.front().innerCap},
+                                                            {wingUid_ + "/tip", segments_.back().outerCap}};
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     const SegmentShape& segment = segments_[k];
+    const std::string& uid = segmentDefinitions_[k].uid;
     // A guided skin is one face for both sides.
-    named.emplace_back(segmentUids[k] + (segment.lower.IsNull() ? "/skin" : "/upper"), segment.upper);
-    named.emplace_back(segmentUids[k] + "/lower", segment.lower);
-    named.emplace_back(segmentUids[k] + "/trailingEdge", segment.trailingEdge);
+    named.emplace_back(uid + (segment.lower.IsNull() ? "/skin" : "/upper"), segment.upper);
+    named.emplace_back(uid + "/lower", segment.lower);
+    named.emplace_back(uid + "/trailingEdge", segment.trailingEdge);
   }
   NamedShape solid = sewnNamedSolid(named);
   // A root or tip cap on a profile flattened to a line is a valid face on its own, but a
   // guided skin only approximates that profile, and sewn to it the cap may cross itself or
   // face the wrong way. Such a solid is refused (checked only then: the check is dear).
-  for (const auto& [cap, segmentUid] : {std::pair(segments_.front().innerCap, segmentUids.front()),
-                                        std::pair(segments_.back().outerCap, segmentUids.back())})
+  for (const auto& [cap, end] : {std::pair(segments_.front().innerCap, &segmentDefinitions_.front()),
+                                 std::pair(segments_.back().outerCap, &segmentDefinitions_.back())})
     if (!cap.IsNull() && geometry::enclosesNoArea(cap) && !BRepCheck_Analyzer(solid.shape).IsValid())
-      throw Error(ErrorCode::InvalidModel, "segment '" + segmentUid + "': " + geometry::noAreaError().message());
+      throw Error(geometry::noAreaError().code(), geometry::noAreaError().message(), {}, end->xpath);
   return solid;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <TopoDS_Face.hxx>
@@ -42,9 +43,11 @@ class WingShape {
   /// The whole wing as one solid: every segment's skins and strips, the root and tip caps,
   /// named "<segment uID>/upper", "/lower", "/trailingEdge" ("/skin" where a guided skin
   /// has no leading-edge guide to split it), "<wing uID>/root" and "/tip".
-  NamedShape solid(const std::string& wingUid, const std::vector<std::string>& segmentUids) const;
+  NamedShape solid() const;
 
  private:
+  std::string wingUid_, wingPath_;
+  std::vector<WingSegment> segmentDefinitions_;  ///< per segment: its uID, CPACS path and airfoils
   std::vector<SegmentShape> segments_;
 };
 
