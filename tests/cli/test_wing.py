@@ -591,6 +591,20 @@ def point_list_wing(path, settings="", reverse=False):
     path.write_text(text[:start] + points + text[end:])
 
 
+def test_a_standard_profile_wing_airfoil_is_an_error_naming_it(tmp_path):
+    """The schema lets a wing airfoil be a fuselage's rectangle or superellipse; it has no
+    leading or trailing edge, so it is refused, naming the node."""
+    text = open(WINGS).read()
+    start, end = text.index("<cst2D>"), text.index("</cst2D>") + len("</cst2D>")
+    path = tmp_path / "standard.xml"
+    path.write_text(text[:start] + "<standardProfile><rectangle><heightToWidthRatio>0.2</heightToWidthRatio>"
+                    "</rectangle></standardProfile>" + text[end:])
+    result = airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Rect"}\n')
+    answer = json.loads(result.stdout)
+    assert answer.get("error", "").endswith("/standardProfile: a standardProfile (rectangle or superellipse) is a "
+                                            "fuselage profile; a wing airfoil needs a pointList, cst2D or nacaProfile"), answer
+
+
 def approximation(count, indices="", method=""):
     attribute = f' errorComputationMethod="{method}"' if method else ""
     pinned = f"<interpolatedPointsIndices>{indices}</interpolatedPointsIndices>" if indices else ""

@@ -157,6 +157,14 @@ WingProfile WingProfile::fromDefinition(const schema::ProfileGeometryType& defin
   if (definition.cst2D) return fromCst(*definition.cst2D, definition.xpath + "/cst2D");
   if (const auto* naca = definition.binding ? xml::firstChild(*definition.binding, "nacaProfile") : nullptr)
     return fromNaca(*naca, definition.xpath + "/nacaProfile");
+  // The schema shares the profile type with fuselages, whose rectangle and superellipse are
+  // drawn in y and z: no leading or trailing edge (the reference builds none either).
+  if (definition.standardProfile)
+    throw Error(
+        ErrorCode::InvalidModel,
+        "a standardProfile (rectangle or superellipse) is a fuselage profile; a wing airfoil needs a pointList, "
+        "cst2D or nacaProfile",
+        {}, definition.xpath + "/standardProfile");
   throw Error(ErrorCode::InvalidModel,
               "wing airfoil '" + definition.uID + "' has neither pointList nor cst2D nor a 4-digit nacaProfile", {},
               definition.xpath);
