@@ -591,6 +591,35 @@ def point_list_wing(path, settings="", reverse=False):
     path.write_text(text[:start] + points + text[end:])
 
 
+def test_cst_parameters_that_leave_the_airfoil_open_are_errors_naming_them(tmp_path):
+    """A negative class-function exponent makes a side infinite at an end, an exponent of 0
+    leaves it off the chord there; a gap at the trailing edge is fine where a thickness is
+    given (a blunt trailing edge)."""
+    cst = "/cpacs/vehicles/profiles/wingAirfoils/wingAirfoil[1]/cst2D"
+    thick = "</lowerB><trailingEdgeThickness>0.01</trailingEdgeThickness>"
+    for edits, expected in (
+            ({"<upperN1>1</upperN1>": "<upperN1>-1</upperN1>"}, f"{cst}/upperN1: must not be negative"),
+            ({"<lowerN2>1</lowerN2>": "<lowerN2>-0.5</lowerN2>"}, f"{cst}/lowerN2: must not be negative"),
+            ({"</lowerB>": "</lowerB><trailingEdgeThickness>-0.01</trailingEdgeThickness>"},
+             f"{cst}/trailingEdgeThickness: must not be negative"),
+            ({"<lowerN1>1</lowerN1>": "<lowerN1>0</lowerN1>"}, f"{cst}: the upper and lower sides do not meet at the leading"),
+            ({"<upperN2>1</upperN2>": "<upperN2>0</upperN2>"}, f"{cst}: the upper and lower sides do not meet at the sharp"),
+            ({"<upperN2>1</upperN2>": "<upperN2>0</upperN2>", "</lowerB>": thick}, None)):
+        text = open(WINGS).read()
+        for old, new in edits.items():
+            assert old in text, old
+            text = text.replace(old, new, 1)
+        path = tmp_path / "cst.xml"
+        path.write_text(text)
+        answer = json.loads(airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Rect"}\n').stdout)
+        if expected:
+            assert answer.get("error", "").startswith(expected), (edits, answer)
+        else:
+            assert answer.get("ok", 0) > 0, (edits, answer)
+            build = airshape("build", str(path)).stdout
+            assert "INVALID" not in build and "FAILED" not in build, build
+
+
 def test_a_standard_profile_wing_airfoil_is_an_error_naming_it(tmp_path):
     """The schema lets a wing airfoil be a fuselage's rectangle or superellipse; it has no
     leading or trailing edge, so it is refused, naming the node."""

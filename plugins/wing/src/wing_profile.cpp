@@ -340,15 +340,34 @@ class CstSide {
 
 }  // namespace
 
+/// A CST number that must be finite and not negative: an exponent of the class function
+/// x^N1 (1 − x)^N2 (negative, it is infinite at an end) or the trailing-edge thickness.
+double notNegative(double value, const std::string& xpath) {
+  if (!(model::finite(value, xpath) >= 0.0)) throw Error(ErrorCode::InvalidModel, "must not be negative", {}, xpath);
+  return value;
+}
+
 WingProfile WingProfile::fromCst(const schema::Cst2DType& cst, const std::string& xpath) {
   WingProfile profile;
-  const double thickness = cst.trailingEdgeThickness.value_or(0.0);
+  const double thickness = notNegative(cst.trailingEdgeThickness.value_or(0.0), xpath + "/trailingEdgeThickness");
   profile.blunt_ = thickness > 0.0;
   profile.leadingEdge_ = gp_Pnt(0, 0, 0);
   profile.trailingEdge_ = gp_Pnt(1, 0, 0);
-  profile.approximateSides(
-      CstSide(cst.upperN1, cst.upperN2, model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0),
-      CstSide(cst.lowerN1, cst.lowerN2, model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0), 4);
+  const CstSide upper(notNegative(cst.upperN1, xpath + "/upperN1"), notNegative(cst.upperN2, xpath + "/upperN2"),
+                      model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0);
+  const CstSide lower(notNegative(cst.lowerN1, xpath + "/lowerN1"), notNegative(cst.lowerN2, xpath + "/lowerN2"),
+                      model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0);
+  // An exponent of 0 leaves the side's end at its first or last coefficient, off the chord.
+  constexpr double kApart = 1e-9;  // of the chord
+  if (upper(0.0).Distance(lower(0.0)) > kApart)
+    throw Error(ErrorCode::InvalidModel, "the upper and lower sides do not meet at the leading edge (an N1 of 0?)", {},
+                xpath);
+  if (!profile.blunt_ && upper(1.0).Distance(lower(1.0)) > kApart)
+    throw Error(ErrorCode::InvalidModel,
+                "the upper and lower sides do not meet at the sharp trailing edge (an N2 of 0? a gap there needs a "
+                "trailingEdgeThickness)",
+                {}, xpath);
+  profile.approximateSides(upper, lower, 4);
   return profile;
 }
 
