@@ -634,6 +634,23 @@ def test_a_standard_profile_wing_airfoil_is_an_error_naming_it(tmp_path):
                                             "fuselage profile; a wing airfoil needs a pointList, cst2D or nacaProfile"), answer
 
 
+def test_an_airfoil_whose_points_are_out_of_order_is_an_error_naming_it(tmp_path):
+    """Points given out of order make an outline that crosses itself (an INVALID solid before)."""
+    path = tmp_path / "scrambled.xml"
+    point_list_wing(path)
+    text = path.read_text()
+    start, end = text.index("<pointList>"), text.index("</pointList>") + len("</pointList>")
+    xs, zs = naca0012_points()
+    order = list(range(0, len(xs), 2)) + list(range(1, len(xs), 2))  # every other point, then the rest
+    scrambled = (f'<pointList><x mapType="vector">{";".join(str(xs[i]) for i in order)}</x>'
+                 f'<y mapType="vector">{";".join("0" for _ in order)}</y>'
+                 f'<z mapType="vector">{";".join(str(zs[i]) for i in order)}</z></pointList>')
+    path.write_text(text[:start] + scrambled + text[end:])
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Rect"}\n').stdout)
+    assert answer.get("error", "").startswith(
+        "/cpacs/vehicles/profiles/wingAirfoils/wingAirfoil[1]/pointList: the points' outline crosses itself"), answer
+
+
 def approximation(count, indices="", method=""):
     attribute = f' errorComputationMethod="{method}"' if method else ""
     pinned = f"<interpolatedPointsIndices>{indices}</interpolatedPointsIndices>" if indices else ""

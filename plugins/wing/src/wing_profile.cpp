@@ -13,6 +13,7 @@
 #include "airshape/geometry/chebyshev_approximation.h"
 #include "airshape/geometry/curve_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/polygon_crossing.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
 
@@ -198,7 +199,16 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
   if (x.size() != y.size() || x.size() != z.size())
     throw Error(ErrorCode::InvalidModel, "x, y and z have different lengths", {}, xpath);
   std::vector<gp_Pnt> points;
-  for (std::size_t i = 0; i < x.size(); ++i) points.emplace_back(x[i], y[i], z[i]);
+  std::vector<gp_Pnt2d> outline;  // in the airfoil's plane
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    points.emplace_back(x[i], y[i], z[i]);
+    outline.emplace_back(x[i], z[i]);
+  }
+  if (const auto crossing = geometry::polygonCrossing(outline, kSamePoint))
+    throw Error(ErrorCode::InvalidModel,
+                "the points' outline crosses itself (its sides from point " + std::to_string(crossing->first + 1) +
+                    " and from point " + std::to_string(crossing->second + 1) + " cross): points out of order?",
+                {}, xpath);
   if (const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr)
     return fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings");
   return fromPoints(std::move(points), xpath);

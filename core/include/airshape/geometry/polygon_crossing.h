@@ -1,0 +1,20 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <gp_Pnt2d.hxx>
+
+namespace airshape::geometry {
+
+/// Where a closed polygon (the last corner joins the first) crosses itself: the indices of
+/// the first corners of two of its sides that cross, or nothing when none do. Sides that
+/// only touch (a corner within `tolerance` of the other side, or sides along one line) do
+/// not count, nor do sides shorter than `tolerance`. A profile's points outline its curve,
+/// so a crossing here is a curve that crosses itself (points given out of order).
+std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::vector<gp_Pnt2d>& corners,
+                                                                   double tolerance);
+
+}  // namespace airshape::geometry

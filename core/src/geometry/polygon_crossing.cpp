@@ -1,0 +1,39 @@
+#include "airshape/geometry/polygon_crossing.h"
+
+namespace airshape::geometry {
+
+namespace {
+
+/// Which side of the line a -> b (a side longer than `tolerance`) the point p lies on: +1
+/// left, -1 right, 0 within `tolerance` of the line.
+int sideOf(const gp_Pnt2d& a, const gp_Pnt2d& b, const gp_Pnt2d& p, double tolerance) {
+  const double distance = ((b.X() - a.X()) * (p.Y() - a.Y()) - (b.Y() - a.Y()) * (p.X() - a.X())) / a.Distance(b);
+  return (distance > tolerance) - (distance < -tolerance);
+}
+
+/// Whether the sides ab and cd cross at a point inside both.
+bool cross(const gp_Pnt2d& a, const gp_Pnt2d& b, const gp_Pnt2d& c, const gp_Pnt2d& d, double tolerance) {
+  return sideOf(a, b, c, tolerance) * sideOf(a, b, d, tolerance) < 0 &&
+         sideOf(c, d, a, tolerance) * sideOf(c, d, b, tolerance) < 0;
+}
+
+}  // namespace
+
+std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::vector<gp_Pnt2d>& corners,
+                                                                   double tolerance) {
+  const std::size_t n = corners.size();
+  if (n < 4) return std::nullopt;
+  auto next = [n](std::size_t i) { return (i + 1) % n; };
+  auto tooShort = [&](std::size_t i) { return corners[i].Distance(corners[next(i)]) <= tolerance; };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (tooShort(i)) continue;
+    // Neighbouring sides share a corner: they can only touch.
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (next(j) == i || tooShort(j)) continue;
+      if (cross(corners[i], corners[next(i)], corners[j], corners[next(j)], tolerance)) return std::pair(i, j);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace airshape::geometry

@@ -1,0 +1,46 @@
+// A polygon crosses itself where two of its sides cross inside both; touching sides, sides
+// of no length and the closing side of a closed outline count as the polygon says.
+#include <gtest/gtest.h>
+
+#include "airshape/geometry/polygon_crossing.h"
+
+namespace airshape::geometry {
+namespace {
+
+TEST(PolygonCrossing, AConvexOutlineDoesNotCross) {
+  EXPECT_FALSE(polygonCrossing({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 1e-9));
+  // An airfoil-like outline, trailing edge given twice (a side of no length).
+  EXPECT_FALSE(polygonCrossing({{1, 0}, {0.5, 0.06}, {0, 0}, {0.5, -0.05}, {1, 0}}, 1e-9));
+}
+
+TEST(PolygonCrossing, ABowTieCrossesBetweenItsLongSides) {
+  const auto crossing = polygonCrossing({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, 1e-9);
+  ASSERT_TRUE(crossing);
+  EXPECT_EQ(crossing->first, 0u);   // side (0,0)-(1,1) ...
+  EXPECT_EQ(crossing->second, 2u);  // ... crosses side (1,0)-(0,1)
+}
+
+TEST(PolygonCrossing, TheClosingSideCounts) {
+  // Corners in order but for the last, whose closing side back to the first cuts through.
+  const auto crossing = polygonCrossing({{0, 0}, {2, 0}, {2, 2}, {1, -1}}, 1e-9);
+  ASSERT_TRUE(crossing);
+  EXPECT_EQ(crossing->first, 0u);
+  EXPECT_EQ(crossing->second, 2u);
+}
+
+TEST(PolygonCrossing, SidesThatOnlyTouchDoNotCross) {
+  // A corner resting on another side, and two sides along one line.
+  EXPECT_FALSE(polygonCrossing({{0, 0}, {2, 0}, {1, 1}, {1, 0}, {0.5, 1}}, 1e-9));
+  EXPECT_FALSE(polygonCrossing({{0, 0}, {2, 0}, {3, 0}, {1, 0}, {1, 1}}, 1e-9));
+}
+
+TEST(PolygonCrossing, ACrossingWithinTheToleranceIsATouch) {
+  // An airfoil whose trailing-edge ends lie 2e-17 apart, the upper side starting just below
+  // the lower side's end: its first and last sides cross, by far less than the tolerance.
+  const std::vector<gp_Pnt2d> airfoil = {{1, -1e-17}, {0.998, 3e-4}, {0, 0}, {0.998, -1e-4}, {1, 1e-17}};
+  EXPECT_TRUE(polygonCrossing(airfoil, 0.0));
+  EXPECT_FALSE(polygonCrossing(airfoil, 1e-9));
+}
+
+}  // namespace
+}  // namespace airshape::geometry
