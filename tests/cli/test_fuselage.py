@@ -322,3 +322,21 @@ def test_a_fuselage_whose_end_profile_is_flattened_names_the_fuselage(tmp_path):
              if line.startswith("  fuselage")}
     assert "FAILED: /cpacs/vehicles/aircraft/model[1]/fuselages/fuselage[1]: " in lines["Flat"], lines
     assert "encloses no area" in lines["Flat"] and "valid solid" in lines["Round"], lines
+
+
+def test_a_profile_whose_points_are_out_of_order_is_an_error_naming_it(tmp_path):
+    """A circle's points given every other one first: the outline crosses itself (the
+    fuselage was an INVALID solid with a volume)."""
+    count = 32
+    order = list(range(0, count + 1, 2)) + list(range(1, count + 1, 2))
+    angles = [2 * math.pi * i / count for i in order]
+    points = (f'<pointList><x>{";".join("0" for _ in angles)}</x>'
+              f'<y>{";".join(f"{math.sin(a):.17g}" for a in angles)}</y>'
+              f'<z>{";".join(f"{math.cos(a):.17g}" for a in angles)}</z></pointList>')
+    profile = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{points}</fuselageProfile></fuselageProfiles>'
+    path = tmp_path / "scrambled.xml"
+    path.write_text(HEADER + fuselage("Scrambled", "Circle", 10.0) +
+                    f"</fuselages></model></aircraft><profiles>{profile}</profiles></vehicles></cpacs>")
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n').stdout)
+    assert answer.get("error", "").startswith(
+        "/cpacs/vehicles/profiles/fuselageProfiles/fuselageProfile[1]/pointList: the points' outline crosses itself"), answer

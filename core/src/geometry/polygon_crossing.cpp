@@ -1,5 +1,7 @@
 #include "airshape/geometry/polygon_crossing.h"
 
+#include "airshape/error.h"
+
 namespace airshape::geometry {
 
 namespace {
@@ -34,6 +36,19 @@ std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::ve
     }
   }
   return std::nullopt;
+}
+
+void requireOutlineWithoutCrossing(const std::vector<gp_Pnt2d>& corners, double tolerance, const std::string& xpath,
+                                   const std::vector<int>& placeInFile) {
+  const auto crossing = polygonCrossing(corners, tolerance);
+  if (!crossing) return;
+  auto number = [&](std::size_t corner) {
+    return std::to_string((placeInFile.empty() ? static_cast<int>(corner) : placeInFile[corner]) + 1);
+  };
+  throw Error(ErrorCode::InvalidModel,
+              "the points' outline crosses itself (its sides from point " + number(crossing->first) +
+                  " and from point " + number(crossing->second) + " cross): points out of order?",
+              {}, xpath);
 }
 
 }  // namespace airshape::geometry

@@ -204,11 +204,7 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
     points.emplace_back(x[i], y[i], z[i]);
     outline.emplace_back(x[i], z[i]);
   }
-  if (const auto crossing = geometry::polygonCrossing(outline, kSamePoint))
-    throw Error(ErrorCode::InvalidModel,
-                "the points' outline crosses itself (its sides from point " + std::to_string(crossing->first + 1) +
-                    " and from point " + std::to_string(crossing->second + 1) + " cross): points out of order?",
-                {}, xpath);
+  geometry::requireOutlineWithoutCrossing(outline, kSamePoint, xpath);
   if (const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr)
     return fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings");
   return fromPoints(std::move(points), xpath);

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -16,5 +17,11 @@ namespace airshape::geometry {
 /// so a crossing here is a curve that crosses itself (points given out of order).
 std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::vector<gp_Pnt2d>& corners,
                                                                    double tolerance);
+
+/// Throws Error naming `xpath` (a profile's point list) when the outline of its points
+/// crosses itself, saying which sides cross: by the corners' places in the file
+/// (`placeInFile[k]`, 0-based; the corners' own order when empty), counted from 1.
+void requireOutlineWithoutCrossing(const std::vector<gp_Pnt2d>& corners, double tolerance, const std::string& xpath,
+                                   const std::vector<int>& placeInFile = {});
 
 }  // namespace airshape::geometry
