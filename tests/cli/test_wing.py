@@ -634,6 +634,21 @@ def test_a_standard_profile_wing_airfoil_is_an_error_naming_it(tmp_path):
                                             "fuselage profile; a wing airfoil needs a pointList, cst2D or nacaProfile"), answer
 
 
+def test_an_airfoil_whose_points_lie_on_a_line_is_an_error_naming_it(tmp_path):
+    """A flat plate (every z = 0) encloses nothing: the point list says so (the segment said
+    its faces enclosed no volume)."""
+    path = tmp_path / "flat.xml"
+    point_list_wing(path)
+    text = path.read_text()
+    start = text.index('<z mapType="vector">')
+    end = text.index("</z>", start)
+    count = text[start:end].count(";") + 1
+    path.write_text(text[:start] + '<z mapType="vector">' + ";".join("0" for _ in range(count)) + text[end:])
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Rect"}\n').stdout)
+    assert answer.get("error") == ("/cpacs/vehicles/profiles/wingAirfoils/wingAirfoil[1]/pointList: "
+                                   "the points enclose no area (they lie on a line)"), answer
+
+
 def test_an_airfoil_whose_points_are_out_of_order_is_an_error_naming_it(tmp_path):
     """Points given out of order make an outline that crosses itself (an INVALID solid before)."""
     path = tmp_path / "scrambled.xml"

@@ -12,7 +12,7 @@
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/geometry/kinked_interpolation.h"
-#include "airshape/geometry/polygon_crossing.h"
+#include "airshape/geometry/profile_outline.h"
 #include "airshape/geometry/uniform_refit.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
@@ -56,7 +56,7 @@ std::vector<gp_Pnt> readPoints(const schema::CurvePointListXYZType& list, const 
     throw Error(ErrorCode::InvalidModel, "a fuselage profile needs at least three points", {}, xpath);
   std::vector<gp_Pnt2d> outline;  // in the profile's plane
   for (const gp_Pnt& p : points) outline.emplace_back(p.Y(), p.Z());
-  geometry::requireOutlineWithoutCrossing(outline, kSamePoint, xpath, listIndex);
+  geometry::requireProfileOutline(outline, kSamePoint, xpath, listIndex);
   return points;
 }
 

@@ -13,7 +13,7 @@
 #include "airshape/geometry/chebyshev_approximation.h"
 #include "airshape/geometry/curve_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
-#include "airshape/geometry/polygon_crossing.h"
+#include "airshape/geometry/profile_outline.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
 
@@ -204,7 +204,7 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
     points.emplace_back(x[i], y[i], z[i]);
     outline.emplace_back(x[i], z[i]);
   }
-  geometry::requireOutlineWithoutCrossing(outline, kSamePoint, xpath);
+  geometry::requireProfileOutline(outline, kSamePoint, xpath);
   if (const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr)
     return fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings");
   return fromPoints(std::move(points), xpath);

@@ -19,9 +19,11 @@ std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::ve
                                                                    double tolerance);
 
 /// Throws Error naming `xpath` (a profile's point list) when the outline of its points
+/// encloses no area (thinner on average than `tolerance`: the points lie on a line) or
 /// crosses itself, saying which sides cross: by the corners' places in the file
-/// (`placeInFile[k]`, 0-based; the corners' own order when empty), counted from 1.
-void requireOutlineWithoutCrossing(const std::vector<gp_Pnt2d>& corners, double tolerance, const std::string& xpath,
-                                   const std::vector<int>& placeInFile = {});
+/// (`placeInFile[k]`, 0-based; the corners' own order when empty), counted from 1. Fewer
+/// than three corners are left to the caller.
+void requireProfileOutline(const std::vector<gp_Pnt2d>& corners, double tolerance, const std::string& xpath,
+                           const std::vector<int>& placeInFile = {});
 
 }  // namespace airshape::geometry

@@ -1,8 +1,10 @@
-// A polygon crosses itself where two of its sides cross inside both; touching sides, sides
-// of no length and the closing side of a closed outline count as the polygon says.
+// A profile's points must outline some area without crossing themselves. A polygon crosses
+// itself where two of its sides cross inside both; sides that touch within the tolerance
+// and sides of no length do not count; the closing side of the outline does.
 #include <gtest/gtest.h>
 
-#include "airshape/geometry/polygon_crossing.h"
+#include "airshape/error.h"
+#include "airshape/geometry/profile_outline.h"
 
 namespace airshape::geometry {
 namespace {
@@ -40,6 +42,34 @@ TEST(PolygonCrossing, ACrossingWithinTheToleranceIsATouch) {
   const std::vector<gp_Pnt2d> airfoil = {{1, -1e-17}, {0.998, 3e-4}, {0, 0}, {0.998, -1e-4}, {1, 1e-17}};
   EXPECT_TRUE(polygonCrossing(airfoil, 0.0));
   EXPECT_FALSE(polygonCrossing(airfoil, 1e-9));
+}
+
+/// The message requireProfileOutline throws for these corners, or "" when it throws none.
+std::string outlineError(const std::vector<gp_Pnt2d>& corners, const std::vector<int>& placeInFile = {}) {
+  try {
+    requireProfileOutline(corners, 1e-7, "/profile/pointList", placeInFile);
+  } catch (const Error& error) {
+    EXPECT_EQ(error.cpacsPath(), "/profile/pointList");
+    return error.message();
+  }
+  return "";
+}
+
+TEST(ProfileOutline, PointsOnALineEncloseNoArea) {
+  EXPECT_EQ(outlineError({{1, 0}, {0.5, 0}, {0, 0}, {0.5, 0}, {1, 0}}),
+            "the points enclose no area (they lie on a line)");
+  EXPECT_EQ(outlineError({{1, 0}, {0.5, 0.05}, {0, 0}, {0.5, -0.05}, {1, 0}}), "");
+  EXPECT_EQ(outlineError({{1, 0}, {0, 0}}), "");  // too few points: the caller's error
+}
+
+TEST(ProfileOutline, ACrossingNamesTheSidesByTheirPlaceInTheFile) {
+  const std::vector<gp_Pnt2d> bowTie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  EXPECT_EQ(outlineError(bowTie),
+            "the points' outline crosses itself (its sides from point 1 and from point 3 "
+            "cross): points out of order?");
+  // The same corners read from a list in which duplicates were dropped.
+  EXPECT_EQ(outlineError(bowTie, {0, 2, 3, 5}),
+            "the points' outline crosses itself (its sides from point 1 and from point 4 cross): points out of order?");
 }
 
 }  // namespace
