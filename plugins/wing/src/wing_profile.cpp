@@ -16,6 +16,8 @@
 #include "airshape/geometry/profile_outline.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
+#include "cst_airfoil.h"
+#include "naca_four_digit.h"
 
 namespace airshape::wing {
 
@@ -72,51 +74,6 @@ geometry::FitError fitErrorOf(const xercesc::DOMElement& settings, const std::st
   throw Error(ErrorCode::InvalidModel, "errorComputationMethod must be RMSE or MaxError (got '" + method + "')", {},
               xpath);
 }
-
-/// A NACA four-digit airfoil: the standard thickness law about the standard camber line,
-/// the thickness law's last coefficient chosen so that the trailing edge has the given
-/// thickness (-0.1015 would give the classic 0.00252 of a NACA 0012; closed by default).
-class NacaFourDigit {
- public:
-  NacaFourDigit(double camber, double camberAt, double thickness, double trailingEdge)
-      : camber_(camber),
-        camberAt_(camberAt),
-        thickness_(thickness),
-        a4_(thickness > 0.0 ? trailingEdge / (10.0 * thickness) - 0.1036 : 0.0) {}
-
-  double thickness() const { return thickness_; }
-
-  /// The point of the upper (sign 1) or lower (sign -1) side above chord station x.
-  gp_Pnt side(double x, double sign) const {
-    const auto [height, slope] = camberLine(x);
-    const double t = halfThickness(x), norm = std::sqrt(1.0 + slope * slope);
-    return gp_Pnt(x - sign * t * slope / norm, 0.0, height + sign * t / norm);
-  }
-
-  /// The chord station at side parameter xsi: x = (1 + e)·xsi²/(xsi + e) with e = 0.02 is
-  /// quadratic at the leading edge, which takes away the √x of the thickness law so that
-  /// the side is smooth in xsi, and close to xsi elsewhere. The reference library
-  /// parametrises its NACA sides the same way, and xsi of a point query depends on it.
-  static double chordwise(double xsi) {
-    constexpr double e = 0.02;
-    return (1.0 + e) * xsi * xsi / (xsi + e);
-  }
-
- private:
-  double halfThickness(double x) const {
-    return 5.0 * thickness_ *
-           (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x + a4_ * x * x * x * x);
-  }
-
-  std::pair<double, double> camberLine(double x) const {  // height and slope
-    if (camber_ == 0.0 || camberAt_ == 0.0) return {0.0, 0.0};
-    const double q = x < camberAt_ ? camberAt_ * camberAt_ : (1 - camberAt_) * (1 - camberAt_);
-    const double height = x < camberAt_ ? 2 * camberAt_ * x - x * x : (1 - 2 * camberAt_) + 2 * camberAt_ * x - x * x;
-    return {camber_ / q * height, 2 * camber_ / q * (camberAt_ - x)};
-  }
-
-  double camber_, camberAt_, thickness_, a4_;
-};
 
 /// What approximationSettings ask for: the number of poles, the error measure and the
 /// points (0-based, in the file's order) the curve must pass through.
@@ -307,73 +264,13 @@ std::vector<Handle(Geom_BSplineCurve)> WingProfile::outline() const {
   return {lower, upperCurve_};
 }
 
-namespace {
-
-/// One side of a CST airfoil: z(x) = ±(x^N1 (1−x)^N2 · Σ B_i C(n,i) x^i (1−x)^(n−i) + x·t/2),
-/// evaluated exactly at x(xsi), whose form follows N1 and N2 so that xsi spreads points
-/// where the side bends most.
-class CstSide {
- public:
-  CstSide(double n1, double n2, std::vector<double> coefficients, double thickness, double sign)
-      : n1_(n1), n2_(n2), b_(std::move(coefficients)), thickness_(thickness), sign_(sign) {}
-
-  gp_Pnt operator()(double xsi) const {
-    const double x = chordwise(xsi);
-    const double n = static_cast<double>(b_.size()) - 1.0;
-    double shape = 0.0;
-    for (std::size_t i = 0; i < b_.size(); ++i) {
-      const double k = static_cast<double>(i);
-      shape += b_[i] * std::tgamma(n + 1.0) / (std::tgamma(k + 1.0) * std::tgamma(n - k + 1.0)) * std::pow(x, k) *
-               std::pow(1.0 - x, n - k);
-    }
-    const double z = std::pow(x, n1_) * std::pow(1.0 - x, n2_) * shape + x * thickness_ / 2.0;
-    return gp_Pnt(x, 0.0, sign_ * z);
-  }
-
- private:
-  double chordwise(double t) const {
-    if (n1_ >= 1.0 && n2_ >= 1.0) return t;
-    if (n1_ < 1.0 && n2_ >= 1.0) return t * t;
-    if (n1_ >= 1.0) return 2.0 * t - t * t;
-    return 3.0 * t * t - 2.0 * t * t * t;
-  }
-
-  double n1_, n2_;
-  std::vector<double> b_;
-  double thickness_;
-  double sign_;
-};
-
-}  // namespace
-
-/// A CST number that must be finite and not negative: an exponent of the class function
-/// x^N1 (1 − x)^N2 (negative, it is infinite at an end) or the trailing-edge thickness.
-double notNegative(double value, const std::string& xpath) {
-  if (!(model::finite(value, xpath) >= 0.0)) throw Error(ErrorCode::InvalidModel, "must not be negative", {}, xpath);
-  return value;
-}
-
 WingProfile WingProfile::fromCst(const schema::Cst2DType& cst, const std::string& xpath) {
+  const CstAirfoil airfoil = CstAirfoil::read(cst, xpath);
   WingProfile profile;
-  const double thickness = notNegative(cst.trailingEdgeThickness.value_or(0.0), xpath + "/trailingEdgeThickness");
-  profile.blunt_ = thickness > 0.0;
+  profile.blunt_ = airfoil.bluntTrailingEdge;
   profile.leadingEdge_ = gp_Pnt(0, 0, 0);
   profile.trailingEdge_ = gp_Pnt(1, 0, 0);
-  const CstSide upper(notNegative(cst.upperN1, xpath + "/upperN1"), notNegative(cst.upperN2, xpath + "/upperN2"),
-                      model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0);
-  const CstSide lower(notNegative(cst.lowerN1, xpath + "/lowerN1"), notNegative(cst.lowerN2, xpath + "/lowerN2"),
-                      model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0);
-  // An exponent of 0 leaves the side's end at its first or last coefficient, off the chord.
-  constexpr double kApart = 1e-9;  // of the chord
-  if (upper(0.0).Distance(lower(0.0)) > kApart)
-    throw Error(ErrorCode::InvalidModel, "the upper and lower sides do not meet at the leading edge (an N1 of 0?)", {},
-                xpath);
-  if (!profile.blunt_ && upper(1.0).Distance(lower(1.0)) > kApart)
-    throw Error(ErrorCode::InvalidModel,
-                "the upper and lower sides do not meet at the sharp trailing edge (an N2 of 0? a gap there needs a "
-                "trailingEdgeThickness)",
-                {}, xpath);
-  profile.approximateSides(upper, lower, 4);
+  profile.approximateSides(airfoil.upper, airfoil.lower, 4);
   return profile;
 }
 
