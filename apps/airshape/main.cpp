@@ -39,8 +39,8 @@ const std::map<std::string, Command>& commands() {
       {"build",
        {runBuild, "airshape build FILE",
         "Builds the solid of every component a plugin builds, in build order, and checks it\n"
-        "(BRepCheck); prints validity, volume and time per component. Exit status 1 if any\n"
-        "fails or is invalid."}},
+        "(BRepCheck); prints validity, volume and time per component, and for an invalid\n"
+        "solid what BRepCheck found. Exit status 1 if any fails or is invalid."}},
       {"export",
        {runExportModule,
         "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"

@@ -620,6 +620,18 @@ def test_cst_parameters_that_leave_the_airfoil_open_are_errors_naming_them(tmp_p
             assert "INVALID" not in build and "FAILED" not in build, build
 
 
+def test_build_says_what_makes_a_solid_invalid(tmp_path):
+    """CST exponents so large that the two sides lie on the chord along most of it: the
+    solid is invalid, and build says what BRepCheck found."""
+    text = open(WINGS).read().replace("<upperN2>1</upperN2>", "<upperN2>100</upperN2>", 1)
+    path = tmp_path / "thin.xml"
+    path.write_text(text.replace("<lowerN1>1</lowerN1>", "<lowerN1>1e6</lowerN1>", 1))
+    result = airshape("build", str(path))
+    line = next(line for line in result.stdout.splitlines() if line.split()[:2] == ["wing", "Rect"])
+    assert result.returncode == 1 and "INVALID solid" in line, result.stdout
+    assert "(BRepCheck: " in line and "self intersecting wire" in line, line
+
+
 def test_a_standard_profile_wing_airfoil_is_an_error_naming_it(tmp_path):
     """The schema lets a wing airfoil be a fuselage's rectangle or superellipse; it has no
     leading or trailing edge, so it is refused, naming the node."""
