@@ -462,6 +462,18 @@ def test_a_wing_guide_curve_placed_by_curve_parameter_is_an_error_naming_it(tmp_
     assert "guideCurves/guideCurve[1]" in answer.get("error", "") and "relative circumferences" in answer["error"], answer
 
 
+def test_guide_curves_that_cross_are_an_error_naming_them(tmp_path):
+    """The leading-edge guide led to the trailing edge at the tip: it meets the trailing-edge
+    guide there, and the error names both guide curves and the elements of the airfoils
+    between which their cell lies (it counted them by index)."""
+    path = edited_tapered_wing(tmp_path / "crossing.xml", True, "<toRelativeCircumference>0</toRelativeCircumference>",
+                               "<toRelativeCircumference>-1</toRelativeCircumference>")
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"wing_volume","wing":"Tapered"}\n').stdout)
+    assert answer.get("error", "").startswith(
+        "/cpacs/vehicles/aircraft/model[1]/wings/wing[1]/segments: the guided skin: the cell between the airfoils of "
+        "elements 'TE0' and 'TE1' and between guide curve 'T-1' and guide curve 'T0' is empty"), answer
+
+
 def test_an_absurdly_large_wing_answers_in_finite_time(tmp_path):
     """Sections scaled by 1e300 overflow the geometry: every query still answers, quickly,
     with a finite number or an error, never with null (JSON has no infinity)."""

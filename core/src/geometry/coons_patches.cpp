@@ -158,7 +158,8 @@ Handle(Geom_BSplineSurface)
 
 std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
     const std::vector<Handle(Geom_BSplineCurve)>& profiles, const std::vector<Handle(Geom_BSplineCurve)>& guides,
-    const KnownCrossings& crossings, const std::function<PatchBlending(std::size_t, std::size_t)>& blending) {
+    const KnownCrossings& crossings, const std::function<PatchBlending(std::size_t, std::size_t)>& blending,
+    const std::function<std::string(std::size_t, std::size_t)>& describe) {
   if (profiles.size() < 2 || guides.size() < 2)
     throw Error(ErrorCode::InvalidModel, "a patch network needs two profiles and two guides at least");
   const auto& p = crossings.profileParameters;
@@ -171,8 +172,10 @@ std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
       const auto& upper = profiles[static_cast<std::size_t>(k + 1)];
       const auto& first = guides[static_cast<std::size_t>(l)];
       const auto& second = guides[static_cast<std::size_t>(l + 1)];
-      const std::string cell = "the cell between profiles " + std::to_string(k + 1) + " and " + std::to_string(k + 2) +
-                               " and guides " + std::to_string(l + 1) + " and " + std::to_string(l + 2);
+      const std::string cell = describe ? describe(static_cast<std::size_t>(k), static_cast<std::size_t>(l))
+                                        : "the cell between profiles " + std::to_string(k + 1) + " and " +
+                                              std::to_string(k + 2) + " and guides " + std::to_string(l + 1) + " and " +
+                                              std::to_string(l + 2);
       if (!(p(k, l + 1) > p(k, l)) || !(p(k + 1, l + 1) > p(k + 1, l)) || !(g(k + 1, l) > g(k, l)) ||
           !(g(k + 1, l + 1) > g(k, l + 1)))
         throw Error(ErrorCode::InvalidModel, cell + " is empty: two curves cross at one point or out of order");

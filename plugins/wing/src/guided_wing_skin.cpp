@@ -83,6 +83,7 @@ struct GuideCrossing {
   std::vector<double> airfoilParameters, guideParameters;
   double relativeCircumference = 0.0;
   std::vector<bool> smoothAt;  ///< per section: counted as C2 there (model::GuideCurve::smoothAt)
+  std::string name;            ///< for errors: "guide curve 'uID'" or what stands in for one
 };
 
 /// The wing's guides, completed so that the skin reaches both trailing-edge ends (on a
@@ -92,7 +93,8 @@ std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& 
                                           const std::vector<Handle(Geom_BSplineCurve)>& airfoils, bool blunt) {
   std::vector<GuideCrossing> result;
   for (const model::GuideCurve& guide : guides) {
-    GuideCrossing crossing{guide.curve, {}, guide.sectionParameters, 0.0, guide.smoothAt};
+    GuideCrossing crossing{
+        guide.curve, {}, guide.sectionParameters, 0.0, guide.smoothAt, "guide curve '" + guide.rootUid + "'"};
     for (std::size_t k = 0; k < airfoils.size(); ++k)
       crossing.airfoilParameters.push_back(parameterAt(airfoils[k], guide.positions[k]));
     // The root's relative circumference; a guide at a trailing-edge end (|rc| = 1, on a sharp
@@ -110,9 +112,11 @@ std::vector<GuideCrossing> crossingGuides(const std::vector<model::GuideCurve>& 
   for (double end : {0.0, 2.0}) {
     if (guideAt(end)) continue;
     const GuideCrossing* other = blunt ? nullptr : guideAt(2.0 - end);
-    result.push_back({other ? other->curve : interpolateThrough(airfoils, end, sectionParameters),
-                      std::vector<double>(airfoils.size(), end), sectionParameters, end - 1.0,
-                      other ? other->smoothAt : std::vector<bool>(airfoils.size(), false)});
+    result.push_back(
+        {other ? other->curve : interpolateThrough(airfoils, end, sectionParameters),
+         std::vector<double>(airfoils.size(), end), sectionParameters, end - 1.0,
+         other ? other->smoothAt : std::vector<bool>(airfoils.size(), false),
+         other ? other->name : std::string("the trailing edge's ") + (end == 0.0 ? "lower" : "upper") + " end"});
   }
   std::sort(result.begin(), result.end(), [](const GuideCrossing& a, const GuideCrossing& b) {
     return a.airfoilParameters.front() < b.airfoilParameters.front();
@@ -199,9 +203,14 @@ std::shared_ptr<const GuidedWingSkin> GuidedWingSkin::build(const Configuration&
     }
   }
   try {
-    skin->rows_ =
-        geometry::buildCoonsPatchRows(skin->airfoils_, guideCurves, crossings, [&](std::size_t k, std::size_t l) {
+    skin->rows_ = geometry::buildCoonsPatchRows(
+        skin->airfoils_, guideCurves, crossings,
+        [&](std::size_t k, std::size_t l) {
           return roundedCell(guides, k, l) ? geometry::PatchBlending::Rounded : geometry::PatchBlending::Bilinear;
+        },
+        [&](std::size_t k, std::size_t l) {
+          return "the cell between the airfoils of elements '" + sections[k]->elementUid + "' and '" +
+                 sections[k + 1]->elementUid + "' and between " + guides[l].name + " and " + guides[l + 1].name;
         });
   } catch (const Error& error) {
     if (!error.cpacsPath().empty()) throw;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <Geom_BSplineCurve.hxx>
@@ -30,10 +31,12 @@ enum class PatchBlending {
 /// guideParameters(k, l) ascending in k. Closed profiles close the ring of cells with a
 /// last guide that repeats the first, its profile parameters one period on (past the
 /// curves' ends, where the pieces continue from the start). Throws Error when a cell
-/// cannot be filled.
+/// cannot be filled, naming it as `describe(k, l)` does (by default "the cell between
+/// profiles k+1 and k+2 and guides l+1 and l+2"; a caller names its own curves).
 std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
     const std::vector<Handle(Geom_BSplineCurve)>& profiles, const std::vector<Handle(Geom_BSplineCurve)>& guides,
-    const KnownCrossings& crossings, const std::function<PatchBlending(std::size_t row, std::size_t cell)>& blending);
+    const KnownCrossings& crossings, const std::function<PatchBlending(std::size_t row, std::size_t cell)>& blending,
+    const std::function<std::string(std::size_t row, std::size_t cell)>& describe = {});
 
 /// One Coons patch from four boundary curves: `bottom` and `top` run the same way (u),
 /// `left` and `right` run from bottom to top (v); the corners must meet. The patch spans
