@@ -214,6 +214,23 @@ def test_guide_curve_errors_name_the_curve(tmp_path):
     assert "error" in answer and "Nowhere" in answer["error"] and "guideCurve" in answer["error"], answer
 
 
+def test_guides_that_meet_name_their_cell(tmp_path):
+    """The guide at a quarter of the circumference led to the half at the second profile,
+    where the next guide ends: their cell is empty, and the error names both guide curves
+    and the elements of the profiles around it (it counted them by index)."""
+    path = tmp_path / "meeting.xml"
+    guided_cylinder(path, "C0")
+    start = '<guideCurve uID="G0.25S0">'
+    text = path.read_text()
+    at = text.index("<toRelativeCircumference>0.25</toRelativeCircumference>", text.index(start))
+    path.write_text(text[:at] + "<toRelativeCircumference>0.5</toRelativeCircumference>" +
+                    text[at + len("<toRelativeCircumference>0.25</toRelativeCircumference>"):])
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n').stdout)
+    assert answer.get("error", "").startswith(
+        "/cpacs/vehicles/aircraft/model[1]/fuselages/fuselage[1]/segments: the guided skin: the cell between the "
+        "profiles of elements 'FE0' and 'FE1' and between guide curves 'G0.25S0' and 'G0.5S0' is empty"), answer
+
+
 def diamond_with_map(path, params):
     """Sections of a diamond with corners at its four points; point 1 (y = 1) is pinned to the
     profile parameter params[0] and point 3 (y = -1) to params[1]."""

@@ -281,10 +281,13 @@ CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
                                         *family->curves[static_cast<std::size_t>(alongCrosser[position - 1])]);
         sense = against ? -1 : 1;
       }
+      const std::string others = family == &profileFamily ? "guides" : "profiles";
+      // The first curve sets the order; where even it runs against it, two crossings tie.
+      if (sense == 0 && c == 0)
+        throw Error(ErrorCode::InvalidArgument, "two " + others + " meet " + name + " 1 at one point");
       if (sense == 0)
         throw Error(ErrorCode::InvalidArgument, std::string(name) + " " + std::to_string(c + 1) + " meets the " +
-                                                    (family == &profileFamily ? "guides" : "profiles") +
-                                                    " in another order than " + name + " 1");
+                                                    others + " in another order than " + name + " 1");
       if (sense < 0) reverseCurve(*family, c);
     }
     assignSeamEnds(*family);

@@ -115,7 +115,7 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
                       definition.xpath);
         geometry->closedProfiles_ = profile.closed;
         return PlacedProfile{geometry::transformed(profile.curve, found->second.transform), found->second.transform,
-                             &profile};
+                             &profile, uid};
       };
       if (sections.empty()) sections.push_back(end(definition.fromElementUID, "fromElementUID"));
       sections.push_back(end(definition.toElementUID, "toElementUID"));
@@ -154,7 +154,7 @@ void FuselageGeometry::loft(const std::vector<PlacedProfile>& sections) {
 void FuselageGeometry::loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides) {
   for (const PlacedProfile& section : sections) profiles_.push_back(section.curve);
   guided_ = true;
-  if (closedProfiles_ || guidesAlongBothEnds(guides)) return patchRings(guides);
+  if (closedProfiles_ || guidesAlongBothEnds(guides)) return patchRings(sections, guides);
   const geometry::GordonSurface gordon =
       geometry::buildGordonSurface(profiles_, guides.curves, {}, &guides.crossings, kDegreeAcrossProfiles);
   if (gordon.profileSites.size() != profiles_.size())
@@ -175,7 +175,7 @@ bool FuselageGeometry::guidesAlongBothEnds(const FuselageGuides& guides) const {
   return true;
 }
 
-void FuselageGeometry::patchRings(const FuselageGuides& guides) {
+void FuselageGeometry::patchRings(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides) {
   // The guides in the order they cross the first profile; one that repeats another's place
   // (relative circumference 1 on a closed profile is 0) is left out.
   const auto& p = guides.crossings.profileParameters;
@@ -221,12 +221,20 @@ void FuselageGeometry::patchRings(const FuselageGuides& guides) {
   auto profileSmoothAt = [&](std::size_t k, std::size_t j) {
     return smoothThrough(*profiles_[k], p(static_cast<Eigen::Index>(k), kept[j % kept.size()]));
   };
-  patchRows_ = geometry::buildCoonsPatchRows(profiles_, curves, ring, [&](std::size_t k, std::size_t l) {
-    for (std::size_t j : {l, l + 1})
-      if ((*smooth[j])[k] || (*smooth[j])[k + 1] || profileSmoothAt(k, j) || profileSmoothAt(k + 1, j))
-        return geometry::PatchBlending::Rounded;
-    return geometry::PatchBlending::Bilinear;
-  });
+  auto guideUid = [&](std::size_t j) { return guides.uids[static_cast<std::size_t>(kept[j % kept.size()])]; };
+  patchRows_ = geometry::buildCoonsPatchRows(
+      profiles_, curves, ring,
+      [&](std::size_t k, std::size_t l) {
+        for (std::size_t j : {l, l + 1})
+          if ((*smooth[j])[k] || (*smooth[j])[k + 1] || profileSmoothAt(k, j) || profileSmoothAt(k + 1, j))
+            return geometry::PatchBlending::Rounded;
+        return geometry::PatchBlending::Bilinear;
+      },
+      [&](std::size_t k, std::size_t l) {
+        return "the cell between the profiles of elements '" + sections[k].elementUid + "' and '" +
+               sections[k + 1].elementUid + "' and between guide curves '" + guideUid(l) + "' and '" + guideUid(l + 1) +
+               "'";
+      });
   sectionSites_.assign(ring.guideParameters.col(0).data(), ring.guideParameters.col(0).data() + K);
 }
 

@@ -61,7 +61,7 @@ class FuselageGeometry {
   void loftWithGuides(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides);
   /// The reference's skin with guide curves: per segment a ring of cells between
   /// neighbouring guides, each a patch of its four boundaries (geometry/coons_patches.h).
-  void patchRings(const FuselageGuides& guides);
+  void patchRings(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides);
   /// The planar cap on section k's placed profile (with its closing edge when open).
   TopoDS_Face profileCap(std::size_t section) const;
   /// Whether guides run along both ends of every (open) profile.

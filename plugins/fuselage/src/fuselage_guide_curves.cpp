@@ -95,6 +95,7 @@ FuselageGuides fuselageGuideCurves(const schema::CpacsType& cpacs, const std::ve
   for (Eigen::Index l = 0; l < L; ++l) {
     const model::GuideCurve& guide = built[static_cast<std::size_t>(l)];
     guides.curves.push_back(guide.curve);
+    guides.uids.push_back(guide.rootUid);
     guides.startPositions.push_back(guide.positions.front().value);
     guides.smoothAt.push_back(guide.smoothAt);
     for (Eigen::Index k = 0; k < K; ++k) {

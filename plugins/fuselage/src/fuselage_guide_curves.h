@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Geom_BSplineCurve.hxx>
@@ -16,11 +17,13 @@ struct PlacedProfile {
   Handle(Geom_BSplineCurve) curve;
   model::Transform transform;
   const FuselageProfile* profile = nullptr;
+  std::string elementUid;  ///< for errors
 };
 
 /// The guide curves of a fuselage and where they cross its profiles.
 struct FuselageGuides {
   std::vector<Handle(Geom_BSplineCurve)> curves;
+  std::vector<std::string> uids;       ///< per guide: its root's uID, for errors
   geometry::KnownCrossings crossings;  ///< profiles in chain order, guides as in `curves`
   /// Per guide: where it starts on the first profile (its relative circumference, or its
   /// profile parameter with the reference's fromParameter).
