@@ -112,7 +112,8 @@ def test_wetted_area_leaves_out_the_part_inside_the_parent():
 
 
 def test_a_segment_of_zero_length_is_an_error(tmp_path):
-    """Two sections in one place: the segment between them encloses nothing, and says so."""
+    """Two sections in one place: the segment between them encloses nothing, and says so; the
+    wing has no span, so no mean aerodynamic chord either."""
     path = tmp_path / "flat.xml"
     sections = "".join(
         f'<section uID="ZS{i}"><name>s</name><transformation/><elements><element uID="ZE{i}"><name>e</name>'
@@ -124,6 +125,9 @@ def test_a_segment_of_zero_length_is_an_error(tmp_path):
     answer = json.loads(result.stdout)
     assert answer.get("error", "").startswith("/cpacs/vehicles/aircraft/model[1]/wings/wing[1]/segments/segment[1]: "), answer
     assert "no volume" in answer["error"], answer
+    mac = json.loads(airshape("query", str(path), stdin='{"op":"wing_mac","wing":"Flat"}\n').stdout)
+    assert mac.get("error") == ("/cpacs/vehicles/aircraft/model[1]/wings/wing[1]: "
+                                "the wing has no span, so no mean aerodynamic chord"), mac
 
 
 def test_a_profile_flattened_to_a_line_is_an_error(tmp_path):

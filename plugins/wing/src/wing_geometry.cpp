@@ -56,6 +56,8 @@ gp_Pnt SegmentEnd::trailingEdge() const { return apply(transform, profile->trail
 std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& configuration, const schema::WingType& wing) {
   return configuration.cache().obtain<WingGeometry>("wing-geometry:" + wing.uID, [&] {
     auto geometry = std::make_shared<WingGeometry>();
+    geometry->configuration_ = &configuration;
+    geometry->wing_ = &wing;
     AirfoilLibrary airfoils(configuration.cpacs());
     std::unordered_map<std::string, SegmentEnd> ends;  // by element uID
     for (const auto& [uid, placed] : model::placedElements(configuration, wing))
@@ -77,8 +79,6 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
       geometry->segments_.push_back({segment.uID, segment.xpath, end(segment.fromElementUID, "fromElementUID"),
                                      end(segment.toElementUID, "toElementUID")});
     }
-    geometry->configuration_ = &configuration;
-    geometry->wing_ = &wing;
     return std::shared_ptr<const WingGeometry>(geometry);
   });
 }

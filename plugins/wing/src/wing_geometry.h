@@ -45,6 +45,8 @@ class WingGeometry {
   /// naming the CPACS path of what is missing or inconsistent.
   static std::shared_ptr<const WingGeometry> of(const Configuration& configuration, const schema::WingType& wing);
 
+  /// Where the wing is defined, for errors.
+  const std::string& xpath() const { return wing_->xpath; }
   const std::vector<WingSegment>& segments() const { return segments_; }
   /// The segments' uIDs in chain order, for addressing them by index or uID.
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }

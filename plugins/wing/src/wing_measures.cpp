@@ -121,7 +121,8 @@ MeanAerodynamicChord meanAerodynamicChord(const WingGeometry& wing) {
     weightedChord += cm * area;
     weightedPoint += area * p;
   }
-  if (!(weights > 0.0)) throw Error(ErrorCode::InvalidModel, "the wing has no span, so no mean aerodynamic chord");
+  if (!(weights > 0.0))
+    throw Error(ErrorCode::InvalidModel, "the wing has no span, so no mean aerodynamic chord", {}, wing.xpath());
   return {weightedChord / weights, gp_Pnt(weightedPoint / weights)};
 }
 
