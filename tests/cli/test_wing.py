@@ -404,12 +404,17 @@ def test_guides_are_parametrised_by_the_leading_edges(tmp_path):
     assert abs(quarter[0] - 0.2 * quarter[1]) > 1e-4, quarter
 
 
-def test_a_guide_through_repeated_points_is_an_error(tmp_path):
-    """Two guide points in one place cannot be interpolated: a clear error naming the guide."""
-    path = edited_tapered_wing(tmp_path / "repeated.xml", True, "<rX>0</rX><rY>0.5</rY><rZ>0</rZ>",
-                               "<rX>0;0</rX><rY>0.5;0.5</rY><rZ>0;0</rZ>")
-    answer = volume_answer(path, "Tapered")
-    assert "guideCurve" in answer.get("error", "") and "coincide" in answer["error"], answer
+def test_guide_points_that_repeat_or_go_back_are_an_error(tmp_path):
+    """Two guide points in one place cannot be interpolated, and points that go back along
+    the segment would fold the skin (it was built, folded, and called valid): a clear error
+    naming the guide curve profile's rY."""
+    for rY in ("0.5;0.5", "0.6;0.4"):
+        path = edited_tapered_wing(tmp_path / "back.xml", True, "<rX>0</rX><rY>0.5</rY><rZ>0</rZ>",
+                                   f"<rX>0;0</rX><rY>{rY}</rY><rZ>0;0</rZ>")
+        answer = volume_answer(path, "Tapered")
+        error = answer.get("error", "")
+        assert error.startswith("/cpacs/vehicles/profiles/guideCurves/guideCurveProfile["), answer
+        assert "]/pointList/rY: rY must increase" in error, answer
 
 
 def test_a_c2_join_blends_its_cells_like_a_smooth_guide(tmp_path):

@@ -43,6 +43,13 @@ GuideProfile readGuideProfile(const schema::CpacsType& cpacs, const GuideCurveTy
                  c = parseVector(profile.pointList->rZ, at + "/rZ");
       if (a.size() != b.size() || a.size() != c.size())
         throw Error(ErrorCode::InvalidModel, "rX, rY and rZ have different lengths", {}, at);
+      // rY is where along the segment each point lies: going back, the guide would fold the skin.
+      for (std::size_t i = 1; i < b.size(); ++i)
+        if (!(b[i] > b[i - 1]))
+          throw Error(ErrorCode::InvalidModel,
+                      "rY must increase from point to point (the points run from the inner "
+                      "to the outer section)",
+                      {}, at + "/rY");
       GuideProfile result;
       for (std::size_t i = 0; i < a.size(); ++i) result.points.emplace_back(a[i], b[i], c[i]);
       return result;
