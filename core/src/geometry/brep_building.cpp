@@ -164,7 +164,9 @@ bool enclosesNoArea(const TopoDS_Face& planarFace) {
   return curves && isNoArea(areaOf(planarFace), *curves);
 }
 
-Error noAreaError() { return Error(ErrorCode::InvalidModel, "a profile encloses no area (scaled to no thickness?)"); }
+Error noAreaError(const std::string& cpacsPath) {
+  return Error(ErrorCode::InvalidModel, "a profile encloses no area (scaled to no thickness?)", {}, cpacsPath);
+}
 
 TopoDS_Solid outwards(TopoDS_Solid solid) {
   const double volume = roughSignedVolumeOf(solid);

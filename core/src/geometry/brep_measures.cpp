@@ -179,15 +179,19 @@ double edgeAreaShare(const TopoDS_Edge& edge, const gp_Dir& normal) {
   return (edge.Orientation() == TopAbs_REVERSED ? -0.5 : 0.5) * sum;
 }
 
+/// The signed area the edges of a face or wire enclose about `normal` (Green's theorem).
+double areaAlong(const TopoDS_Shape& boundary, const gp_Dir& normal) {
+  double area = 0.0;
+  for (TopExp_Explorer edges(boundary, TopAbs_EDGE); edges.More(); edges.Next())
+    area += edgeAreaShare(TopoDS::Edge(edges.Current()), normal);
+  return area;
+}
+
 /// The area of a plane face, exactly from its boundary (Green's theorem): robust where its
 /// boundary curves have many knots, and cheaper than OCCT's integration over the face even
 /// when only a rough value is needed (a fifth of its instructions on a wing's caps).
 double planeArea(const TopoDS_Face& face, const Geom_Plane& plane) {
-  const gp_Dir normal = plane.Position().Direction();
-  double area = 0.0;
-  for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next())
-    area += edgeAreaShare(TopoDS::Edge(edges.Current()), normal);
-  return std::abs(area);
+  return std::abs(areaAlong(face, plane.Position().Direction()));
 }
 
 /// (1/3)∮ P·n dA over every face, with the sign of the solid's orientation: exact on
@@ -220,12 +224,7 @@ double volumeOf(const TopoDS_Shape& solid) { return std::abs(signedVolume(solid,
 
 double roughSignedVolumeOf(const TopoDS_Shape& solid) { return signedVolume(solid, Accuracy::Rough); }
 
-double signedAreaEnclosed(const TopoDS_Wire& wire, const gp_Dir& normal) {
-  double area = 0.0;
-  for (TopExp_Explorer edges(wire, TopAbs_EDGE); edges.More(); edges.Next())
-    area += edgeAreaShare(TopoDS::Edge(edges.Current()), normal);
-  return area;
-}
+double signedAreaEnclosed(const TopoDS_Wire& wire, const gp_Dir& normal) { return areaAlong(wire, normal); }
 
 double areaOf(const TopoDS_Shape& faces) {
   double area = 0.0;

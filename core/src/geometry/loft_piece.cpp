@@ -55,7 +55,11 @@ TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vSt
 TopoDS_Face loftCap(const Handle(Geom_BSplineSurface) & loft, double v, bool closedProfiles) {
   const auto profile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(v));
   if (isPoint(*profile)) return {};
-  if (closedProfiles) return planarFace({profile});
+  return profileCap(profile, closedProfiles);
+}
+
+TopoDS_Face profileCap(const Handle(Geom_BSplineCurve) & profile, bool closedProfile) {
+  if (closedProfile) return planarFace({profile});
   return planarFace({profile, straightLine(profile->EndPoint(), profile->StartPoint())});
 }
 

@@ -265,12 +265,6 @@ double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const
   return projection.NbPoints() > 0 ? projection.LowerDistanceParameter() : zeta;
 }
 
-TopoDS_Face FuselageGeometry::profileCap(std::size_t section) const {
-  const Handle(Geom_BSplineCurve)& profile = profiles_[section];
-  if (closedProfiles_) return geometry::planarFace({profile});
-  return geometry::planarFace({profile, geometry::straightLine(profile->EndPoint(), profile->StartPoint())});
-}
-
 geometry::LoftPiece FuselageGeometry::piece(std::size_t from, std::size_t to) const {
   return patchRows_.empty() ? geometry::loftPiece(loft_, sectionSites_[from], sectionSites_[to], closedProfiles_)
                             : geometry::loftPiece(patchRows_[from], 0.0, 1.0, closedProfiles_);
@@ -353,7 +347,8 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
       named = {{fuselageUid + "/front", geometry::loftCap(loft_, sectionSites_.front(), closedProfiles_)},
                {fuselageUid + "/rear", geometry::loftCap(loft_, sectionSites_.back(), closedProfiles_)}};
     else
-      named = {{fuselageUid + "/front", profileCap(0)}, {fuselageUid + "/rear", profileCap(profiles_.size() - 1)}};
+      named = {{fuselageUid + "/front", geometry::profileCap(profiles_.front(), closedProfiles_)},
+               {fuselageUid + "/rear", geometry::profileCap(profiles_.back(), closedProfiles_)}};
   } catch (const Error& error) {
     throw Error(error.code(), error.message(), {}, xpath_);
   }

@@ -62,8 +62,6 @@ class FuselageGeometry {
   /// The reference's skin with guide curves: per segment a ring of cells between
   /// neighbouring guides, each a patch of its four boundaries (geometry/coons_patches.h).
   void patchRings(const std::vector<PlacedProfile>& sections, const FuselageGuides& guides);
-  /// The planar cap on section k's placed profile (with its closing edge when open).
-  TopoDS_Face profileCap(std::size_t section) const;
   /// Whether guides run along both ends of every (open) profile.
   bool guidesAlongBothEnds(const FuselageGuides& guides) const;
   void cutIntoSegments(const std::vector<std::string>& segmentXpaths);

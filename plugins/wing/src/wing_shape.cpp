@@ -137,7 +137,7 @@ NamedShape WingShape::solid() const {
   for (const auto& [cap, end] : {std::pair(segments_.front().innerCap, &segmentDefinitions_.front()),
                                  std::pair(segments_.back().outerCap, &segmentDefinitions_.back())})
     if (!cap.IsNull() && geometry::enclosesNoArea(cap) && !BRepCheck_Analyzer(solid.shape).IsValid())
-      throw Error(geometry::noAreaError().code(), geometry::noAreaError().message(), {}, end->xpath);
+      throw geometry::noAreaError(end->xpath);
   return solid;
 }
 

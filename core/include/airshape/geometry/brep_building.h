@@ -54,8 +54,9 @@ TopoDS_Face planarFace(const TopoDS_Wire& wire);
 /// size) than a few join tolerances, as the cap of a profile flattened to a line.
 bool enclosesNoArea(const TopoDS_Face& planarFace);
 
-/// The error of a profile that encloses no area where no face can close it.
-Error noAreaError();
+/// The error of a profile that encloses no area where no face can close it, naming
+/// `cpacsPath` where given.
+Error noAreaError(const std::string& cpacsPath = {});
 
 /// The solid turned so that its faces point outwards (Boolean operations then see its
 /// inside); throws Error when it encloses no volume (a segment of zero length or thickness).

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
@@ -32,6 +33,10 @@ TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vSt
 /// The planar cap on the loft's profile at v (with its closing edge when the profiles are
 /// open); null where the profile is a point. Throws Error when the profile is not planar.
 TopoDS_Face loftCap(const Handle(Geom_BSplineSurface) & loft, double v, bool closedProfiles);
+
+/// The planar cap on a profile curve (closed, or open and closed by a straight edge from
+/// its end to its start). Throws Error when the profile is not planar.
+TopoDS_Face profileCap(const Handle(Geom_BSplineCurve) & profile, bool closedProfile);
 
 /// The B-rep of the loft over [vStart, vEnd]. A failure to close it into a solid is kept
 /// in solidProblem rather than thrown, so the faces can still be measured.
