@@ -4,6 +4,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Bnd_Box.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Standard_Failure.hxx>
 #include <TopoDS_Face.hxx>
 #include <nlohmann/json.hpp>
 
@@ -103,6 +104,11 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
         profiles, guides, {kRelativeCrossingTolerance * diagonal, kRelativeApproximationTolerance * diagonal});
   } catch (const Error& error) {
     throw error.inFile(profilesPath + " + " + guidesPath);
+  } catch (const Standard_Failure& failure) {  // a network OCCT cannot work with, named by its files
+    throw Error(ErrorCode::InvalidArgument,
+                std::string("the curve network cannot be interpolated (geometry kernel failure: ") +
+                    failure.GetMessageString() + ")",
+                profilesPath + " + " + guidesPath);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   geometry::writeBrep(BRepBuilderAPI_MakeFace(gordon.surface, 1e-7).Face(), output);

@@ -12,6 +12,7 @@
 #include "airshape/schema/dom_writer.h"
 #include "airshape/schema/generated/cpacs_model.h"
 #include "airshape/uid/repeated_uids.h"
+#include "airshape/xml/nesting.h"
 #include "airshape/xml/path.h"
 #include "airshape/xml/text.h"
 #include "airshape/xml/xpath.h"
@@ -38,8 +39,8 @@ void Configuration::load() {
   Problems warnings;
   for (const Problem& problem : uids.problems())
     warnings.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
-  const Problems skipped = model::primaryModel(*cpacs).skipped;
-  warnings.insert(warnings.end(), skipped.begin(), skipped.end());
+  for (const model::ModelComponents& model : model::everyModel(*cpacs))
+    warnings.insert(warnings.end(), model.skipped.begin(), model.skipped.end());
   graph::ComponentGraph components;
   try {
     components = graph::ComponentGraph::build(root, locations_, warnings);
@@ -106,6 +107,11 @@ std::string Configuration::xmlOf(const std::string& xpath) const {
 void Configuration::insertXml(const std::string& parentXPath, const std::string& fragment, std::size_t position) {
   xercesc::DOMElement& parent = *xml::resolveXPath(*document_.root(), parentXPath).element;
   const xml::Document parsed = xml::Document::fromString("<fragment>" + fragment + "</fragment>", "the XML to insert");
+  std::size_t parentDepth = 1;
+  for (const xercesc::DOMNode* above = parent.getParentNode(); above != nullptr; above = above->getParentNode())
+    parentDepth += above->getNodeType() == xercesc::DOMNode::ELEMENT_NODE ? 1 : 0;
+  xml::requireNestingWithinLimit(*parsed.root(), "the XML to insert",
+                                 parentDepth);  // the wrapper stands for the parent
   xercesc::DOMNode* before = nullptr;
   if (position > 0) {
     before = xml::firstElement(parent);

@@ -16,10 +16,13 @@ GMSH_VOLUMES = """
 import json, sys, gmsh
 gmsh.initialize(["-noenv"])
 gmsh.option.setNumber("General.Terminal", 0)
+# gmsh converts STEP and IGES into millimetres; STEP can be kept in metres, IGES cannot (gmsh
+# refuses the option for it), so IGES volumes are converted back from cubic millimetres.
+iges = sys.argv[1].lower().endswith((".iges", ".igs"))
 if sys.argv[1].lower().endswith((".step", ".stp")):
-    gmsh.option.setString("Geometry.OCCTargetUnit", "M")  # gmsh converts STEP to millimetres otherwise
+    gmsh.option.setString("Geometry.OCCTargetUnit", "M")
 gmsh.merge(sys.argv[1])
-print(json.dumps([[gmsh.model.getEntityName(3, tag), gmsh.model.occ.getMass(3, tag)]
+print(json.dumps([[gmsh.model.getEntityName(3, tag), gmsh.model.occ.getMass(3, tag) * (1e-9 if iges else 1)]
                   for _, tag in gmsh.model.getEntities(3)]))
 gmsh.finalize()
 """

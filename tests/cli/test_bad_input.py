@@ -1,9 +1,10 @@
 """Every command meets bad input with one clear line on stderr, exit status 2, and no crash."""
+import json
 import os
 
 import pytest
 
-from conftest import DATA, airshape
+from conftest import DATA, EXAMPLE, airshape
 
 COMMANDS = [["info"], ["query"], ["validate"], ["save", "-o", "/tmp/airshape-never-written.xml"]]
 
@@ -57,3 +58,14 @@ def test_unknown_command_and_usage():
     assert airshape("info").returncode == 2
     result = airshape("help", "save")
     assert result.returncode == 0 and "--in-place" in result.stdout
+
+
+def test_component_segment_ops_on_a_wing_without_component_segments():
+    # The fuzzing round found the wing's component-segment list used before it was checked.
+    answers = airshape("query", EXAMPLE, stdin='{"op":"component_segment_to_segment","wing":1,"component_segment":1,'
+                       '"eta":0.5,"xsi":0.5}\n{"op":"segment_to_component_segment","wing":1,"segment":1,'
+                       '"component_segment":"CS","eta":0.5,"xsi":0.5}\n')
+    assert answers.returncode == 0, answers.stderr
+    index, uid = (json.loads(line) for line in answers.stdout.splitlines())
+    assert index == {"error": "component segment index 1 is out of range (there are 0 component segments)"}
+    assert uid == {"error": "no component segment with uID 'CS'"}

@@ -2,10 +2,11 @@
 import glob
 import json
 import os
+import time
 
 import pytest
 
-from conftest import SHARED, airshape, shared_path
+from conftest import EXAMPLE, SHARED, airshape, shared_path
 
 NETWORKS = sorted(os.path.dirname(p) for p in glob.glob(os.path.join(SHARED, "data", "curve-networks", "*", "profiles.brep")))
 CLOSED = {"fuselage1", "fuselage2", "full_nacelle", "helibody"}  # profiles all round: no seam kink allowed
@@ -39,4 +40,33 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path):
     profiles = shared_path("data", "curve-networks", "wing2", "profiles.brep")
     result = airshape("gordon", profiles, profiles, "-o", str(tmp_path / "o.brep"))
     assert result.returncode == 2 and "misses" in result.stderr, result.stderr
+    assert not (tmp_path / "o.brep").exists()
+
+
+def damaged_breps(tmp_path):
+    """BREP files of the project's example aircraft, damaged as the fuzzing round damaged them:
+    a vertex's tolerance line removed (OCCT's reader then loops forever), an edge's removed
+    (it aborts the process with an uncaught exception), the file cut off inside a curve record."""
+    whole = tmp_path / "aircraft.brep"
+    exported = airshape("export", EXAMPLE, "-o", str(whole), "--quiet")
+    assert exported.returncode == 0, exported.stderr
+    lines = whole.read_text().split("\n")
+    vertex, edge = lines.index("Ve"), lines.index("Ed")
+    curve = next(i for i, line in enumerate(lines) if line.startswith("7 ") and i > next(k for k, text in enumerate(lines) if text.startswith("Curves ")))
+    damaged = {"no-vertex-tolerance": lines[:vertex + 1] + lines[vertex + 2:],
+               "no-edge-tolerance": lines[:edge + 1] + lines[edge + 2:],
+               "cut-off": lines[:curve] + [lines[curve][:len(lines[curve]) // 2]]}
+    for name, content in damaged.items():
+        (tmp_path / f"{name}.brep").write_text("\n".join(content))
+    return [tmp_path / f"{name}.brep" for name in damaged]
+
+
+def test_a_damaged_brep_file_is_one_line_and_never_crashes_or_hangs(tmp_path):
+    for damaged in damaged_breps(tmp_path):
+        start = time.monotonic()
+        result = airshape("gordon", str(damaged), str(damaged), "-o", str(tmp_path / "o.brep"))
+        assert time.monotonic() - start < 60, f"{damaged.name}: the reader was not stopped"
+        assert result.returncode == 2, (damaged.name, result.stderr)
+        assert len(result.stderr.strip().splitlines()) == 1 and str(damaged) in result.stderr, result.stderr
+        assert "BREP" in result.stderr, result.stderr
     assert not (tmp_path / "o.brep").exists()

@@ -36,6 +36,8 @@ TEST_F(QueryServiceTest, AnswersOkOrError) {
   EXPECT_EQ(answer(configuration, registry, R"({"op":"nope"})")["error"], "unknown op 'nope'");
   EXPECT_EQ(answer(configuration, registry, "not json")["error"], "the line is not valid JSON");
   EXPECT_EQ(answer(configuration, registry, "[1]")["error"], "a query must be a JSON object");
+  EXPECT_EQ(answer(configuration, registry, R"({"op":"eta","eta":1e400})")["error"],
+            "the line holds a number too large for a double");  // was an internal error
 }
 
 TEST_F(QueryServiceTest, OneAnswerLinePerQueryLine) {

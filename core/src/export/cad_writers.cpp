@@ -8,6 +8,7 @@
 #include <Interface_Static.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <TopoDS_Compound.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
 
 #include "airshape/error.h"
 #include "format_writers.h"
@@ -37,6 +38,10 @@ void writeStep(const ExportScene& scene, const std::string& path, const std::str
 
 void writeIges(const ExportScene& scene, const std::string& path, const std::string& target) {
   const SceneDocument document(scene);
+  // The IGES writer scales from the document's length unit to the unit the file declares and
+  // takes millimetres when the document names none, which wrote our metres 1000 times too
+  // small. (OCCT 7.6's STEP writer does not scale by it; it keeps its default.)
+  XCAFDoc_DocumentTool::SetLengthUnit(document.document(), 1.0, UnitsMethods_LengthUnit_Meter);
   IGESControl_Controller::Init();
   Interface_Static::SetCVal("write.iges.unit", "M");
   Interface_Static::SetIVal("write.iges.brep.mode", 1);  // solids as IGES 186 manifold solids

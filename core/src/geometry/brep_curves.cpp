@@ -8,20 +8,57 @@
 #include <BRep_Tool.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include "airshape/error.h"
+#include "airshape/isolated_call.h"
 
 namespace airshape::geometry {
+
+namespace {
+
+bool readBrep(const std::string& path, TopoDS_Shape& shape) {
+  BRep_Builder builder;
+  return BRepTools::Read(shape, path.c_str(), builder) && !shape.IsNull();
+}
+
+/// Reads a BREP file only after a child process has read it unharmed: OCCT's reader crashes
+/// on some damaged files (a trimmed curve around a curve it failed to read) and loops forever
+/// on others (a tolerance line missing), and neither can be caught in this process.
+TopoDS_Shape readBrepSafely(const std::string& path) {
+  std::error_code error;
+  const auto megabytes = static_cast<long>(std::filesystem::file_size(path, error) >> 20);
+  const std::chrono::seconds timeout(10 + 10 * megabytes);  // a sound file reads at tens of MB/s
+  const IsolatedResult probe = callIsolated(
+      [&] {
+        TopoDS_Shape shape;
+        return readBrep(path, shape);
+      },
+      timeout);
+  if (probe.outcome == IsolatedOutcome::Crashed)
+    throw Error(ErrorCode::NotXml,
+                "is a damaged BREP file: OCCT's reader crashed on it (signal " + std::to_string(probe.signal) + ")",
+                path);
+  if (probe.outcome == IsolatedOutcome::TimedOut)
+    throw Error(ErrorCode::NotXml,
+                "is a damaged BREP file: OCCT's reader did not finish within " + std::to_string(timeout.count()) + " s",
+                path);
+  TopoDS_Shape shape;
+  try {
+    if (probe.outcome == IsolatedOutcome::Succeeded && readBrep(path, shape)) return shape;
+  } catch (const Standard_Failure&) {
+  }
+  throw Error(ErrorCode::NotXml, "is not a readable BREP file", path);
+}
+
+}  // namespace
 
 std::vector<Handle(Geom_BSplineCurve)> readBrepCurves(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw Error(ErrorCode::FileNotFound, "no such file", path);
-  TopoDS_Shape shape;
-  BRep_Builder builder;
-  if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull())
-    throw Error(ErrorCode::NotXml, "is not a readable BREP file", path);
+  const TopoDS_Shape shape = readBrepSafely(path);
   std::vector<Handle(Geom_BSplineCurve)> curves;
   for (TopExp_Explorer edges(shape, TopAbs_EDGE); edges.More(); edges.Next()) {
     double first = 0.0, last = 0.0;
@@ -30,10 +67,14 @@ std::vector<Handle(Geom_BSplineCurve)> readBrepCurves(const std::string& path) {
     Handle(Geom_BSplineCurve) bspline = Handle(Geom_BSplineCurve)::DownCast(curve);
     const bool whole = !bspline.IsNull() && std::abs(first - bspline->FirstParameter()) < 1e-12 &&
                        std::abs(last - bspline->LastParameter()) < 1e-12;
-    if (whole) {
-      curves.push_back(Handle(Geom_BSplineCurve)::DownCast(bspline->Copy()));
-    } else {
-      curves.push_back(GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last)));
+    try {
+      curves.push_back(whole ? Handle(Geom_BSplineCurve)::DownCast(bspline->Copy())
+                             : GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last)));
+    } catch (const Standard_Failure& failure) {
+      throw Error(ErrorCode::InvalidArgument,
+                  "edge " + std::to_string(curves.size() + 1) + " cannot be taken as a B-spline curve (" +
+                      failure.GetMessageString() + ")",
+                  path);
     }
   }
   if (curves.empty()) throw Error(ErrorCode::InvalidArgument, "holds no edges", path);

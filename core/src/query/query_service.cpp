@@ -1,6 +1,7 @@
 #include "airshape/query/query_service.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <Standard_Failure.hxx>
@@ -21,11 +22,27 @@ bool allFinite(const Json& value) {
   return true;
 }
 
+/// The query a line holds, or the error answer for a line that is no JSON, or whose numbers
+/// no double holds (nlohmann reports 1e400 as out of range, not as a parse error).
+std::optional<Json> parsedQuery(const std::string& line, Json& error) {
+  try {
+    return Json::parse(line);
+  } catch (const Json::parse_error&) {
+    error = {{"error", "the line is not valid JSON"}};
+  } catch (const Json::out_of_range&) {
+    error = {{"error", "the line holds a number too large for a double"}};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 Json answer(Configuration& configuration, const QueryRegistry& registry, const std::string& line) {
   try {
-    const Json query = Json::parse(line);
+    Json error;
+    const std::optional<Json> parsed = parsedQuery(line, error);
+    if (!parsed) return error;
+    const Json& query = *parsed;
     if (!query.is_object()) return {{"error", "a query must be a JSON object"}};
     const auto op = query.find("op");
     if (op == query.end() || !op->is_string()) return {{"error", "the query has no \"op\" string"}};
@@ -35,8 +52,6 @@ Json answer(Configuration& configuration, const QueryRegistry& registry, const s
     if (!allFinite(result))
       return {{"error", "the result is not a finite number: the geometry is too large or degenerate"}};
     return {{"ok", std::move(result)}};
-  } catch (const Json::parse_error&) {
-    return {{"error", "the line is not valid JSON"}};
   } catch (const Error& error) {
     return {{"error", error.what()}};  // with the CPACS path of the node, when known
   } catch (const std::exception& error) {

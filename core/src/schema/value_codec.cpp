@@ -34,12 +34,32 @@ ParseError parseDouble(std::string_view text, double& out) {
   double value = 0.0;
   const auto result = std::from_chars(number.data(), number.data() + number.size(), value);
   if (number.empty() || result.ec != std::errc() || result.ptr != number.data() + number.size())
-    return "'" + std::string(text) + "' is not a number";
+    return quoted(std::string(text)) + " is not a number";
   out = value;
   return std::nullopt;
 }
 
 }  // namespace
+
+std::string quoted(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string result = "'";
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      result += "\\n";
+    } else if (c == '\r') {
+      result += "\\r";
+    } else if (c == '\t') {
+      result += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      result += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+    } else {
+      result += c;
+    }
+  }
+  return result + "'";
+}
 
 ParseError StringCodec::parse(const std::string& text, Value& out) {
   out = text;
@@ -67,7 +87,7 @@ ParseError IntegerCodec::parse(const std::string& text, Value& out) {
   long long value = 0;
   const auto result = std::from_chars(number.data(), number.data() + number.size(), value);
   if (number.empty() || result.ec != std::errc() || result.ptr != number.data() + number.size())
-    return "'" + text + "' is not an integer";
+    return quoted(text) + " is not an integer";
   out = value;
   return std::nullopt;
 }
@@ -81,7 +101,7 @@ ParseError BooleanCodec::parse(const std::string& text, Value& out) {
   } else if (word == "false" || word == "0") {
     out = false;
   } else {
-    return "'" + text + "' is not a boolean (true, false, 1 or 0)";
+    return quoted(text) + " is not a boolean (true, false, 1 or 0)";
   }
   return std::nullopt;
 }
@@ -95,7 +115,8 @@ ParseError DoubleVectorCodec::parse(const std::string& text, Value& out) {
     if (end == all.size() && start == end && start > 0) break;  // a trailing ';'
     double value = 0.0;
     if (parseDouble(all.substr(start, end - start), value)) {
-      return "'" + std::string(trimmed(all.substr(start, end - start))) + "' in vector '" + text + "' is not a number";
+      return quoted(std::string(trimmed(all.substr(start, end - start)))) + " in vector " + quoted(text) +
+             " is not a number";
     }
     values.push_back(value);
     start = end + 1;

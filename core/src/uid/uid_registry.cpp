@@ -1,5 +1,8 @@
 #include "airshape/uid/uid_registry.h"
 
+#include <algorithm>
+#include <vector>
+
 #include <xercesc/dom/DOM.hpp>
 
 #include "airshape/xml/path.h"
@@ -11,19 +14,28 @@ using namespace xercesc;
 
 namespace {
 
-void collect(const DOMElement& element, const XMLCh* uidName,
+/// Registers the uID of every element below and including `root`, in document order. A loop,
+/// not a call per level, so that no nesting can exhaust the stack.
+void collect(const DOMElement& root, const XMLCh* uidName,
              std::unordered_map<std::string, const DOMElement*>& definitions, Problems& problems) {
-  if (const DOMAttr* attribute = element.getAttributeNode(uidName)) {
-    const std::string uid = xml::toUtf8(attribute->getValue());
-    const auto [entry, inserted] = definitions.emplace(uid, &element);
-    if (!inserted) {  // paths are worked out only here: most documents need none
-      problems.push_back({Problem::Severity::Error, xml::pathOf(element),
-                          "duplicate uID '" + uid + "' (first defined at " + xml::pathOf(*entry->second) +
-                              "; this definition is ignored)"});
+  std::vector<const DOMElement*> pending{&root};
+  while (!pending.empty()) {
+    const DOMElement& element = *pending.back();
+    pending.pop_back();
+    if (const DOMAttr* attribute = element.getAttributeNode(uidName)) {
+      const std::string uid = xml::toUtf8(attribute->getValue());
+      const auto [entry, inserted] = definitions.emplace(uid, &element);
+      if (!inserted) {  // paths are worked out only here: most documents need none
+        problems.push_back({Problem::Severity::Error, xml::pathOf(element),
+                            "duplicate uID '" + uid + "' (first defined at " + xml::pathOf(*entry->second) +
+                                "; this definition is ignored)"});
+      }
     }
+    const std::size_t firstChild = pending.size();
+    for (const DOMElement* child = xml::firstElement(element); child != nullptr; child = xml::nextElement(*child))
+      pending.push_back(child);
+    std::reverse(pending.begin() + static_cast<std::ptrdiff_t>(firstChild), pending.end());  // first child on top
   }
-  for (const DOMElement* child = xml::firstElement(element); child != nullptr; child = xml::nextElement(*child))
-    collect(*child, uidName, definitions, problems);
 }
 
 }  // namespace

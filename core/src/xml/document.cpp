@@ -20,6 +20,7 @@
 
 #include "airshape/error.h"
 #include "airshape/output_file.h"
+#include "airshape/xml/nesting.h"
 #include "airshape/xml/text.h"
 
 namespace airshape::xml {
@@ -108,6 +109,7 @@ Document Document::fromString(const std::string& text, const std::string& name) 
   if (!errors.message().empty()) throw Error(ErrorCode::NotXml, errors.message(), name);
   if (parser.getDocument() == nullptr || parser.getDocument()->getDocumentElement() == nullptr)
     throw Error(ErrorCode::NotXml, "has no root element", name);
+  requireNestingWithinLimit(*parser.getDocument()->getDocumentElement(), name);
   parser.setErrorHandler(nullptr);
   return Document(std::move(impl), name);
 }

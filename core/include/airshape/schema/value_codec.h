@@ -64,6 +64,11 @@ struct DoubleVectorCodec {
   static std::string format(const Value& value);
 };
 
+/// A value as messages show it: in single quotes, with line breaks, tabs and other control
+/// characters escaped (\n, \t, \x01), so that every problem stays on one line and a value of
+/// only whitespace is visible.
+std::string quoted(const std::string& text);
+
 /// The texts of an enumeration's values in declaration order; specialised by generated code.
 template <class E>
 struct EnumNames;
@@ -80,7 +85,7 @@ struct EnumCodec {
   static ParseError parse(const std::string& text, Value& out) {
     constexpr std::size_t count = sizeof(EnumNames<E>::values) / sizeof(EnumNames<E>::values[0]);
     const int index = findEnumName(EnumNames<E>::values, count, text);
-    if (index < 0) return "'" + text + "' is not " + describeEnumNames(EnumNames<E>::values, count);
+    if (index < 0) return quoted(text) + " is not " + describeEnumNames(EnumNames<E>::values, count);
     out = static_cast<E>(index);
     return std::nullopt;
   }
