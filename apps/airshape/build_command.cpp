@@ -2,6 +2,7 @@
 #include <chrono>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -64,11 +65,22 @@ std::string flawsOf(const TopoDS_Shape& shape, const BRepCheck_Analyzer& analyze
   return text;
 }
 
-/// Builds one component's solid and checks it (BRepCheck, volume).
-BuildReport buildOne(const Configuration& configuration, const graph::Component& component) {
+/// How a component is named on its line: its uID, or its path when it has none.
+std::string nameOf(const graph::Component& component) {
+  return component.uid.empty() ? component.xpath : component.uid;
+}
+
+/// Builds one component's solid and checks it (BRepCheck, volume); a component no plugin
+/// builds says why.
+BuildReport buildOne(const Configuration& configuration, const plugin::PluginHost& host,
+                     const graph::Component& component) {
   std::ostringstream line;
-  line << "  " << std::left << std::setw(10) << component.nodeType << ' ' << std::setw(32) << component.uid << ' ';
-  if (configuration.shapes().find(component.nodeType) == nullptr) return {line.str() + "no builder yet", true};
+  line << "  " << std::left << std::setw(18) << component.typeName << ' ' << std::setw(32) << nameOf(component) << ' ';
+  if (configuration.shapes().find(component.nodeType) == nullptr) {
+    const std::string plugin = host.pluginFor(component.nodeType);
+    if (plugin.empty()) return {line.str() + "not supported: no loaded plugin builds " + component.nodeType, true};
+    return {line.str() + "no builder yet for " + component.typeName + " (plugin " + plugin + ")", true};
+  }
   const auto start = std::chrono::steady_clock::now();
   try {
     const TopoDS_Shape& solid = configuration.shapes().shapeOf(configuration, component.uid);
@@ -88,13 +100,23 @@ BuildReport buildOne(const Configuration& configuration, const graph::Component&
 }
 
 /// Builds every component, independent ones in parallel.
-std::vector<BuildReport> buildAll(const Configuration& configuration) {
+std::vector<BuildReport> buildAll(const Configuration& configuration, const plugin::PluginHost& host) {
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<BuildReport> reports(graph.components().size());
   graph::forEachByDepth(graph, graph.buildOrder(), [&](std::size_t index) {
-    reports[index] = buildOne(configuration, graph.components()[index]);
+    reports[index] = buildOne(configuration, host, graph.components()[index]);
   });
   return reports;
+}
+
+/// Why nothing is built, if nothing is: the file holds no component, or no loaded plugin
+/// builds any of its components.
+std::optional<std::string> nothingToBuild(const Configuration& configuration) {
+  const std::vector<graph::Component>& components = configuration.components().components();
+  if (components.empty()) return "the file holds no geometric component";
+  for (const graph::Component& component : components)
+    if (configuration.shapes().find(component.nodeType) != nullptr) return std::nullopt;
+  return "no loaded plugin builds any of its " + std::to_string(components.size()) + " components";
 }
 
 }  // namespace
@@ -104,12 +126,14 @@ int runBuild(const Arguments& arguments, plugin::PluginHost& host) {
   const Configuration configuration = openConfiguration(path, host);
   const graph::ComponentGraph& graph = configuration.components();
   std::cout << path << ": building " << graph.components().size() << " components\n";
-  const std::vector<BuildReport> reports = buildAll(configuration);
+  const std::vector<BuildReport> reports = buildAll(configuration, host);
   bool allGood = true;
   for (std::size_t index : graph.buildOrder()) {
     std::cout << reports[index].line << '\n';
     allGood = reports[index].good && allGood;
   }
+  if (const std::optional<std::string> why = nothingToBuild(configuration))
+    std::cout << path << ": nothing to build: " << *why << '\n';
   return allGood ? kSuccess : kProblemsFound;
 }
 

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include <boost/config.hpp>
 
@@ -109,6 +110,18 @@ void printSummary(const exporting::ExportScene& scene) {
               << geometry::areaOf(component.shape.shape) << '\n';
 }
 
+/// Why nothing is written, if nothing is: no plugin builds any component, every component
+/// failed, or a component named with --components failed (an export of what was asked for).
+std::optional<std::string> nothingToWrite(const exporting::ExportScene& scene, const ExportCommandOptions& options) {
+  if (scene.components.empty() && scene.leftOut.empty())
+    return "nothing to build: no loaded plugin builds any component of " + options.input +
+           (options.exportOptions.components.empty() ? "" : " named with --components");
+  if (scene.components.empty()) return "no component could be built";
+  if (!scene.leftOut.empty() && !options.exportOptions.components.empty())
+    return "a component named with --components could not be built";
+  return std::nullopt;
+}
+
 }  // namespace
 
 int runExport(const Arguments& arguments, plugin::PluginHost& host) {
@@ -117,9 +130,13 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   const Clock::time_point start = Clock::now();
   const Configuration configuration = openConfiguration(options.input, host);
   if (!options.quiet) options.exportOptions.progress = printProgress;
-  options.exportOptions.skipFailed = true;  // named components (--components) still fail the export
+  options.exportOptions.skipFailed = true;  // each failure is said; the exit status tells
   const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);
   for (const std::string& leftOut : scene.leftOut) std::cerr << "export: left out " << leftOut << '\n';
+  if (const std::optional<std::string> why = nothingToWrite(scene, options)) {
+    std::cerr << "export: " << *why << "; no file written\n";
+    return scene.leftOut.empty() ? kSuccess : kProblemsFound;
+  }
   for (const std::string& output : options.outputs) {
     const exporting::Format format = exporting::formatOfPath(output);
     const Clock::time_point writing = Clock::now();

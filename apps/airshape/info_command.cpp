@@ -17,9 +17,14 @@ int runInfo(const Arguments& arguments, plugin::PluginHost& host) {
   for (std::size_t index : graph.buildOrder()) {
     const graph::Component& component = graph.components()[index];
     const std::string plugin = host.pluginFor(component.nodeType);
-    std::cout << "  " << std::string(2 * graph.depth(index), ' ') << component.nodeType << ' ' << component.uid
+    const std::string builder = plugin.empty()                                      ? "none loaded"
+                                : host.shapes().find(component.nodeType) != nullptr ? plugin
+                                                                                    : plugin + " (no builder yet)";
+    std::cout << "  " << std::string(2 * graph.depth(index), ' ') << component.typeName << ' '
+              << (component.uid.empty() ? component.xpath : component.uid)
               << "  parent: " << (component.parentUid.empty() ? "-" : component.parentUid)
-              << "  plugin: " << (plugin.empty() ? "none" : plugin) << '\n';
+              << (component.model > 0 ? "  model: " + std::to_string(component.model + 1) : "")
+              << "  plugin: " << builder << '\n';
   }
   return kSuccess;
 }

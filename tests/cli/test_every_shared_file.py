@@ -27,7 +27,9 @@ def test_every_component_builds_or_fails_clearly(path):
         return
     assert result.returncode in (0, 1), result.stderr[-500:]
     for line in result.stdout.splitlines()[1:]:
-        assert "solid" in line or "no builder yet" in line or "FAILED" in line, line
+        if line.startswith(path + ": nothing to build: "):
+            continue
+        assert "solid" in line or "no builder yet for" in line or "not supported: " in line or "FAILED" in line, line
         if "FAILED" in line:
             assert any(known in line for known in KNOWN), line
         assert "INVALID" not in line, line  # every solid that builds is valid

@@ -51,7 +51,12 @@ def test_third_party_node_type_and_op_appear(tmp_path, third_party):
     aircraft = tmp_path / "with-gear.xml"
     aircraft.write_text(open(EXAMPLE).read().replace("</wings>", "</wings>" + gear))
     info = airshape("info", str(aircraft), env=env)
-    assert "landingGear NoseGear  parent: Fuselage  plugin: landinggear" in info.stdout, info.stdout
+    assert "landing_gear NoseGear  parent: Fuselage  plugin: landinggear (no builder yet)" in info.stdout, info.stdout
+    without = airshape("build", str(aircraft))  # without the plugin, nobody claims landing gear
+    assert "landing_gear       NoseGear" in without.stdout and "not supported: no loaded plugin builds landingGear" \
+        in without.stdout, without.stdout
+    built = airshape("build", str(aircraft), env=env)
+    assert "no builder yet for landing_gear (plugin landinggear)" in built.stdout, built.stdout
     queries = '{"op":"landing_gear_count"}\n{"op":"bounding_box","uid":"NoseGear"}\n'
     answer = airshape("query", str(aircraft), stdin=queries, env=env)
     count, box = (json.loads(line) for line in answer.stdout.splitlines())

@@ -22,7 +22,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// Indices of the components to export, in build order: those named, or every one a
-/// plugin builds.
+/// plugin builds (none, when no plugin builds any).
 std::vector<std::size_t> selectedComponents(const Configuration& configuration, const ExportOptions& options) {
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<bool> wanted(graph.components().size(), options.components.empty());
@@ -38,7 +38,6 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
   for (std::size_t index : graph.buildOrder())
     if (wanted[index] && configuration.shapes().find(graph.components()[index].nodeType) != nullptr)
       selected.push_back(index);
-  if (selected.empty()) throw Error(ErrorCode::NotImplemented, "no builder yet for any component of the configuration");
   return selected;
 }
 
@@ -115,8 +114,7 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
   ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}};
   std::vector<bool> failed(configuration.components().components().size(), false);
   const auto failures = buildSelected(configuration, selected, options, start);
-  const bool skip = options.skipFailed && options.components.empty();
-  if (!failures.empty() && (!skip || failures.size() == selected.size()))  // nothing left to write
+  if (!failures.empty() && !options.skipFailed)
     throw buildFailure(configuration, failures.front().first, failures.front().second);
   for (const auto& [index, why] : failures) {
     failed[index] = true;

@@ -124,6 +124,9 @@ void exportConfiguration(const Configuration& configuration, const std::string& 
   const Format format = formatOfPath(path);
   const auto start = std::chrono::steady_clock::now();
   const ExportScene scene = buildScene(configuration, options);
+  if (scene.components.empty())
+    throw Error(ErrorCode::NotImplemented, "nothing to export: no plugin builds any component of the configuration",
+                configuration.source());
   if (options.progress)
     options.progress({0, 0, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                       "writing " + formatName(format)});

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 #include <sstream>
+#include <unordered_map>
+#include <utility>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/depth_first_search.hpp>
@@ -56,25 +58,146 @@ class DiscoveryRecorder : public boost::default_dfs_visitor {
   std::vector<std::size_t>& order_;
 };
 
+/// The elements inside a wing (or rotor blade) that are geometry of their own.
+void addWingContents(const std::string& wing, std::vector<ComponentLocation>& locations) {
+  const std::string segment = wing + "/componentSegments/componentSegment";
+  const auto addStructure = [&](const std::string& structure) {
+    locations.push_back({"sparSegment", structure + "/spars/sparSegments/sparSegment", "wing_spar"});
+    locations.push_back({"ribsDefinition", structure + "/ribsDefinitions/ribsDefinition", "wing_rib"});
+    locations.push_back({"wingCell", structure + "/upperShell/cells/cell", "wing_cell"});
+    locations.push_back({"wingCell", structure + "/lowerShell/cells/cell", "wing_cell"});
+  };
+  addStructure(segment + "/structure");
+  locations.push_back({"wingFuelTank", segment + "/wingFuelTanks/wingFuelTank", "tank"});
+  for (const auto& [device, folder] : {std::pair<std::string, std::string>{"trailingEdgeDevice", "trailingEdgeDevices"},
+                                       {"leadingEdgeDevice", "leadingEdgeDevices"},
+                                       {"spoiler", "spoilers"}}) {
+    const std::string path = segment + "/controlSurfaces/" + folder + "/" + device;
+    locations.push_back({device, path, "control_surface"});
+    addStructure(path + "/structure");
+  }
+}
+
+/// The stiffening of a body's skin (a fuselage's, a tank vessel's): frames, stringers, walls.
+void addBodyStructure(const std::string& structure, std::vector<ComponentLocation>& locations) {
+  locations.push_back({"frame", structure + "/frames/frame", "frame"});
+  locations.push_back({"stringer", structure + "/stringers/stringer", "stringer"});
+  locations.push_back({"wallSegment", structure + "/walls/wallSegments/wallSegment", "fuselage_wall"});
+}
+
+/// The elements inside a fuselage that are geometry of their own: structure, decks, tanks.
+void addFuselageContents(const std::string& fuselage, std::vector<ComponentLocation>& locations) {
+  const std::string structure = fuselage + "/structure";
+  addBodyStructure(structure, locations);
+  const std::vector<ComponentLocation> inStructure = {
+      {"pressureBulkhead", "pressureBulkheads/pressureBulkhead", "pressure_bulkhead"},
+      {"door", "cargoDoors/cargoDoor", "cargo_door"},
+      {"door", "paxDoors/paxDoor", "cargo_door"},
+      {"crossBeam", "paxCrossBeams/paxCrossBeam", "generic_system"},  // the reference's type for cross beams
+      {"crossBeam", "cargoCrossBeams/cargoCrossBeam", "generic_system"},
+      {"crossBeamStrut", "paxCrossBeamStruts/paxCrossBeamStrut", "cross_beam_strut"},
+      {"crossBeamStrut", "cargoCrossBeamStruts/cargoCrossBeamStrut", "cross_beam_strut"},
+      {"longFloorBeam", "longFloorBeams/longFloorBeam", "long_floor_beam"},
+      {"floorPanel", "floorPanels/floorPanel", "floor_panel"},
+      {"window", "windows/window", "window"},
+      {"intercostal", "intercostals/intercostal", "intercostal"},
+      {"structuralMember", "generalStructuralMembers/generalStructuralMember", "structural_member"},
+  };
+  for (const ComponentLocation& location : inStructure)
+    locations.push_back({location.nodeType, structure + "/" + location.pathInModel, location.typeName});
+  const std::string deck = fuselage + "/decks/deck";
+  locations.push_back({"deck", deck, "deck"});
+  for (const char* kind :
+       {"seatModules/seatModule", "galleys/galley", "lavatories/lavatory", "classDividers/classDivider",
+        "genericFloorModules/genericFloorModule", "cargoContainers/cargoContainer", "sidewallPanels/sidewallPanel",
+        "luggageCompartments/luggageCompartment", "ceilingPanels/ceilingPanel"})
+    locations.push_back({"deckComponent", deck + "/" + kind, "deck_component"});
+  const std::string tanks = fuselage + "/fuelTanks/";
+  locations.push_back({"fuelTank", tanks + "genericFuelTanks/genericFuelTank", "tank"});
+  locations.push_back({"tankHull", tanks + "genericFuelTanks/genericFuelTank/hulls/hull", "tank_hull"});
+  locations.push_back({"fuelTank", tanks + "integralFuelTanks/integralFuelTank", "tank"});
+}
+
+/// Tanks of the model itself, with their vessels (a layout newer than CPACS 3.5's schema that
+/// real files and the reference use: model/fuelTanks/fuelTank/vessels/vessel).
+void addModelTanks(std::vector<ComponentLocation>& locations) {
+  locations.push_back({"fuelTank", "fuelTanks/fuelTank", "tank"});
+  locations.push_back({"tankHull", "fuelTanks/fuelTank/vessels/vessel", "tank_hull"});
+  addBodyStructure("fuelTanks/fuelTank/vessels/vessel/structure", locations);
+}
+
+std::vector<ComponentLocation> catalogue() {
+  std::vector<ComponentLocation> locations = {
+      {"fuselage", "fuselages/fuselage", "fuselage"},
+      {"wing", "wings/wing", "wing"},
+      {"rotorBlade", "rotorBlades/rotorBlade", "rotor_blade"},
+      {"engine", "engines/engine", "engine_nacelle"},
+      {"enginePylon", "enginePylons/enginePylon", "engine_pylon"},
+      {"rotor", "rotors/rotor", "rotor"},
+      {"duct", "ducts/duct", "duct"},
+      {"duct", "ducts/ductAssembly", "duct"},
+      {"genericGeometryComponent", "genericGeometryComponents/genericGeometryComponent", "external_object"},
+      {"landingGear", "landingGears/landingGear", "landing_gear"},
+      {"genericSystem", "systems/genericSystems/genericSystem", "generic_system"},
+      {"systemComponent", "systems/genericSystems/genericSystem/components/component", "system_component"},
+  };
+  addWingContents("wings/wing", locations);
+  addWingContents("rotorBlades/rotorBlade", locations);
+  addFuselageContents("fuselages/fuselage", locations);
+  addModelTanks(locations);
+  return locations;
+}
+
 }  // namespace
 
 const std::vector<ComponentLocation>& standardComponentLocations() {
-  static const std::vector<ComponentLocation> locations = {
-      {"fuselage", "fuselages/fuselage"},
-      {"wing", "wings/wing"},
-      {"engine", "engines/engine"},
-      {"enginePylon", "enginePylons/enginePylon"},
-      {"rotor", "rotors/rotor"},
-      {"duct", "ducts/duct"},
-      {"genericGeometryComponent", "genericGeometryComponents/genericGeometryComponent"},
-  };
+  static const std::vector<ComponentLocation> locations = catalogue();
   return locations;
 }
 
 long ComponentGraph::find(const std::string& uid) const {
-  for (std::size_t i = 0; i < components_.size(); ++i)
-    if (components_[i].uid == uid) return static_cast<long>(i);
-  return -1;
+  const auto entry = byUid_.find(uid);
+  return entry == byUid_.end() || uid.empty() ? -1 : static_cast<long>(entry->second);
+}
+
+void ComponentGraph::add(const DOMElement& element, const ComponentLocation& location, std::size_t model) {
+  Component component;
+  component.uid = xml::attribute(element, "uID");
+  if (!component.uid.empty() && !byUid_.emplace(component.uid, components_.size()).second)
+    return;  // a repeated uID: the first definition wins
+  component.nodeType = location.nodeType;
+  component.typeName = location.typeName;
+  if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
+  component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
+  component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);
+  component.xpath = xml::pathOf(element);
+  component.model = model;
+  component.element = &element;
+  components_.push_back(std::move(component));
+}
+
+void ComponentGraph::resolveParents(Problems& warnings) {
+  std::unordered_map<const DOMNode*, std::size_t> byElement;
+  for (std::size_t i = 0; i < components_.size(); ++i) byElement.emplace(components_[i].element, i);
+  for (Component& component : components_) {
+    const Component* enclosing = nullptr;
+    bool parentUidNamesAnEnclosingElement = false;
+    for (const DOMNode* above = component.element->getParentNode();
+         above != nullptr && above->getNodeType() == DOMNode::ELEMENT_NODE; above = above->getParentNode()) {
+      const auto& element = static_cast<const DOMElement&>(*above);
+      if (!component.parentUid.empty() && xml::attribute(element, "uID") == component.parentUid)
+        parentUidNamesAnEnclosingElement = true;
+      const auto found = byElement.find(above);
+      if (found != byElement.end() && enclosing == nullptr) enclosing = &components_[found->second];
+    }
+    if (!component.parentUid.empty() && find(component.parentUid) >= 0) continue;
+    if (!component.parentUid.empty() && !parentUidNamesAnEnclosingElement)
+      warnings.push_back({Problem::Severity::Warning, component.xpath + "/parentUID",
+                          "parentUID '" + component.parentUid + "' names no geometric component; " +
+                              (component.uid.empty() ? component.xpath : component.uid) +
+                              (enclosing ? " is attached to " + enclosing->uid : " is placed on its own")});
+    component.parentUid = enclosing != nullptr ? enclosing->uid : "";
+  }
 }
 
 ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vector<ComponentLocation>& locations,
@@ -85,36 +208,18 @@ ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vec
     for (const auto& location : locations) {
       std::vector<const DOMElement*> found;
       select(*modelElements[model], split(location.pathInModel), 0, found);
-      for (const DOMElement* element : found) {
-        Component component;
-        component.uid = xml::attribute(*element, "uID");
-        if (result.find(component.uid) >= 0) continue;  // a repeated uID: the first definition wins
-        component.nodeType = location.nodeType;
-        if (const DOMElement* parent = xml::firstChild(*element, "parentUID")) component.parentUid = xml::text(*parent);
-        component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
-        component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);
-        component.xpath = xml::pathOf(*element);
-        component.model = model;
-        component.element = element;
-        result.components_.push_back(std::move(component));
-      }
+      for (const DOMElement* element : found) result.add(*element, location, model);
     }
   }
+  result.resolveParents(warnings);
 
-  // Edges run from parent to child; the first component with a uID is the one a parentUID names.
+  // Edges run from parent to child.
   const std::size_t count = result.components_.size();
   Graph graph(count);
   std::vector<bool> hasParent(count, false);
   for (std::size_t i = 0; i < count; ++i) {
-    const Component& component = result.components_[i];
-    if (component.parentUid.empty()) continue;
-    const long parent = result.find(component.parentUid);
-    if (parent < 0) {
-      warnings.push_back({Problem::Severity::Warning, component.xpath + "/parentUID",
-                          "parentUID '" + component.parentUid + "' names no geometric component; " + component.uid +
-                              " is placed on its own"});
-      continue;
-    }
+    const long parent = result.find(result.components_[i].parentUid);
+    if (parent < 0) continue;
     boost::add_edge(static_cast<std::size_t>(parent), i, graph);
     hasParent[i] = true;
   }

@@ -25,8 +25,8 @@ void addIfChained(Component& component, std::vector<Component*>& list, Problems&
 }
 
 template <class Model>
-PrimaryModel collect(const Model& model) {
-  PrimaryModel result;
+ModelComponents collect(const Model& model) {
+  ModelComponents result;
   if (model.wings)
     for (auto& wing : model.wings->wing) addIfChained(wing, result.wings, result.skipped);
   if (model.fuselages)
@@ -34,33 +34,72 @@ PrimaryModel collect(const Model& model) {
   return result;
 }
 
+/// Rotor blades are wings (schema type wingType) and are addressed as wings after the model's own.
+ModelComponents collectRotorcraft(const schema::RotorcraftModelType& rotorcraft) {
+  ModelComponents result = collect(rotorcraft);
+  if (rotorcraft.rotorBlades)
+    for (auto& blade : rotorcraft.rotorBlades->rotorBlade) addIfChained(blade, result.wings, result.skipped);
+  return result;
+}
+
+bool holds(const ModelComponents& model, const std::string& uid) {
+  for (const auto* wing : model.wings)
+    if (wing->uID == uid) return true;
+  for (const auto* fuselage : model.fuselages)
+    if (fuselage->uID == uid) return true;
+  return false;
+}
+
 }  // namespace
 
-PrimaryModel primaryModel(const schema::CpacsType& cpacs) {
-  if (!cpacs.vehicles) return {};
+std::vector<ModelComponents> everyModel(const schema::CpacsType& cpacs) {
+  std::vector<ModelComponents> models;
+  if (!cpacs.vehicles) return models;
   const schema::VehiclesType& vehicles = *cpacs.vehicles;
-  if (vehicles.aircraft && !vehicles.aircraft->model.empty()) return collect(vehicles.aircraft->model[0]);
-  if (vehicles.rotorcraft && !vehicles.rotorcraft->model.empty()) {
-    // Rotor blades are wings (schema type wingType) and are addressed as wings after the model's own.
-    const schema::RotorcraftModelType& rotorcraft = vehicles.rotorcraft->model[0];
-    PrimaryModel result = collect(rotorcraft);
-    if (rotorcraft.rotorBlades)
-      for (auto& blade : rotorcraft.rotorBlades->rotorBlade) addIfChained(blade, result.wings, result.skipped);
-    return result;
-  }
-  return {};
+  if (vehicles.aircraft)
+    for (const auto& model : vehicles.aircraft->model) models.push_back(collect(model));
+  if (vehicles.rotorcraft)
+    for (const auto& model : vehicles.rotorcraft->model) models.push_back(collectRotorcraft(model));
+  return models;
 }
 
-void throwNotInModel(const Configuration& configuration, const std::string& uid, const std::string& kind) {
-  for (const Problem& skipped : primaryModel(configuration).skipped)  // left out on loading: say why
+const std::vector<ModelComponents>& everyModel(const Configuration& configuration) {
+  return *configuration.cache().obtain<std::vector<ModelComponents>>("every-model", [&] {
+    return std::make_shared<const std::vector<ModelComponents>>(everyModel(configuration.cpacs()));
+  });
+}
+
+ModelComponents primaryModel(const schema::CpacsType& cpacs) {
+  std::vector<ModelComponents> models = everyModel(cpacs);
+  return models.empty() ? ModelComponents{} : std::move(models.front());
+}
+
+const ModelComponents& primaryModel(const Configuration& configuration) {
+  static const ModelComponents none;
+  const std::vector<ModelComponents>& models = everyModel(configuration);
+  return models.empty() ? none : models.front();
+}
+
+const ModelComponents& modelHolding(const Configuration& configuration, const std::string& uid) {
+  const long index = configuration.components().find(uid);
+  if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
+  const std::size_t model = configuration.components().components()[static_cast<std::size_t>(index)].model;
+  return everyModel(configuration).at(model);
+}
+
+void throwNotInModel(const Configuration& configuration, const ModelComponents& model, const std::string& uid,
+                     const std::string& kind) {
+  for (const Problem& skipped : model.skipped)  // left out on loading: say why
     if (skipped.message.find(uid) != std::string::npos)
       throw Error(ErrorCode::InvalidModel, skipped.message, {}, skipped.xpath);
+  const std::vector<ModelComponents>& models = everyModel(configuration);
+  const bool primary = &model == &primaryModel(configuration);
+  for (std::size_t other = 0; primary && other < models.size(); ++other)
+    if (&models[other] != &model && holds(models[other], uid))
+      throw Error(ErrorCode::InvalidArgument, "no " + kind + " with uID '" + uid +
+                                                  "' in the first model, which queries address ('" + uid +
+                                                  "' is in model " + std::to_string(other + 1) + " of the file)");
   throw Error(ErrorCode::InvalidArgument, "no " + kind + " with uID '" + uid + "' in the model");
-}
-
-const PrimaryModel& primaryModel(const Configuration& configuration) {
-  return *configuration.cache().obtain<PrimaryModel>(
-      "primary-model", [&] { return std::make_shared<const PrimaryModel>(primaryModel(configuration.cpacs())); });
 }
 
 }  // namespace airshape::model

@@ -126,7 +126,7 @@ std::vector<graph::ComponentLocation> PluginHost::componentLocations() const {
     for (const NodeType& type : loaded.nodeTypes) {
       const bool known = std::any_of(locations.begin(), locations.end(),
                                      [&](const graph::ComponentLocation& l) { return l.nodeType == type.name; });
-      if (!known && !type.pathInModel.empty()) locations.push_back({type.name, type.pathInModel});
+      if (!known && !type.pathInModel.empty()) locations.push_back({type.name, type.pathInModel, type.name});
     }
   }
   return locations;

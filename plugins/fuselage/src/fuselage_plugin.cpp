@@ -13,9 +13,13 @@ using query::Json;
 
 namespace {
 
+/// The fuselage a query names by index or uID, in the model queries address (the first one).
 schema::FuselageType& selectFuselage(const Configuration& configuration, const Json& query) {
-  const auto& fuselages = model::primaryModel(configuration).fuselages;
-  return *fuselages[query::selectByIndexOrUid(query, "fuselage", model::uidsOf(fuselages), "fuselage")];
+  const model::ModelComponents& model = model::primaryModel(configuration);
+  const auto named = query.find("fuselage");
+  if (named != query.end() && named->is_string())  // a uID: says why it is not there, if it is not
+    model::findByUid(configuration, model, model.fuselages, named->get<std::string>(), "fuselage");
+  return *model.fuselages[query::selectByIndexOrUid(query, "fuselage", model::uidsOf(model.fuselages), "fuselage")];
 }
 
 std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
@@ -26,8 +30,8 @@ class FuselagePlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
-      return FuselageGeometry::of(c, model::findByUid(c, model::primaryModel(c).fuselages, uid, "fuselage"))
-          ->solid(uid);
+      const model::ModelComponents& model = model::modelHolding(c, uid);
+      return FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, uid, "fuselage"))->solid(uid);
     });
   }
 

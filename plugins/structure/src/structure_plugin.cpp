@@ -1,5 +1,6 @@
 // The structure plugin: spars, ribs and cells of wings; frames and stringers of fuselages.
-// It registers its node types; no builder exists yet.
+// It claims the node types of the component catalogue (graph/component_graph.h); no builder
+// exists yet.
 #include "airshape/plugin/basic_plugin.h"
 
 namespace airshape::structure {
@@ -9,8 +10,23 @@ class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
       : BasicPlugin("structure", "0.1.0",
-                    "wing and fuselage structure: spars, ribs, cells, frames, stringers (no builder yet)",
-                    {{"sparSegment", ""}, {"ribsDefinition", ""}, {"cell", ""}, {"frame", ""}, {"stringer", ""}}) {}
+                    "wing and fuselage structure: spars, ribs, cells, frames, stringers, bulkheads, doors, "
+                    "floor beams, walls (no builder yet)",
+                    {{"sparSegment", ""},
+                     {"ribsDefinition", ""},
+                     {"wingCell", ""},
+                     {"frame", ""},
+                     {"stringer", ""},
+                     {"pressureBulkhead", ""},
+                     {"door", ""},
+                     {"crossBeam", ""},
+                     {"crossBeamStrut", ""},
+                     {"longFloorBeam", ""},
+                     {"wallSegment", ""},
+                     {"floorPanel", ""},
+                     {"window", ""},
+                     {"intercostal", ""},
+                     {"structuralMember", ""}}) {}
 };
 
 }  // namespace

@@ -22,9 +22,13 @@ using query::Json;
 
 namespace {
 
+/// The wing a query names by index or uID, in the model queries address (the first one).
 schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
-  const auto& wings = model::primaryModel(configuration).wings;
-  return *wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(wings), "wing")];
+  const model::ModelComponents& model = model::primaryModel(configuration);
+  const auto named = query.find("wing");
+  if (named != query.end() && named->is_string())  // a uID: says why it is not there, if it is not
+    model::findByUid(configuration, model, model.wings, named->get<std::string>(), "wing");
+  return *model.wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(model.wings), "wing")];
 }
 
 std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? wing.segments->segment.size() : 0; }
@@ -39,8 +43,9 @@ const schema::ComponentSegmentType& selectComponentSegment(const schema::WingTyp
   std::vector<std::string> uids;
   if (wing.componentSegments)
     for (const auto& cs : wing.componentSegments->componentSegment) uids.push_back(cs.uID);
-  return wing.componentSegments
-      ->componentSegment[query::selectByIndexOrUid(q, "component_segment", uids, "component segment")];
+  // Selecting first: it refuses any index or uID of a wing without component segments.
+  const std::size_t index = query::selectByIndexOrUid(q, "component_segment", uids, "component segment");
+  return wing.componentSegments->componentSegment[index];
 }
 
 /// A point query: wing, segment (index or uID, in chain order), eta and xsi in [0, 1].
@@ -66,15 +71,18 @@ query::Handler segmentMeasure(double (WingShape::*measure)(std::size_t) const) {
 class WingPlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
-    shapes.add("wing", [](const Configuration& c, const std::string& uid) {
-      const schema::WingType& wing = model::findByUid(c, model::primaryModel(c).wings, uid, "wing");
+    const ShapeBuilder wingSolid = [](const Configuration& c, const std::string& uid) {
+      const model::ModelComponents& model = model::modelHolding(c, uid);
+      const schema::WingType& wing = model::findByUid(c, model, model.wings, uid, "wing");
       return WingShape::of(c, wing)->solid();
-    });
+    };
+    shapes.add("wing", wingSolid);
+    shapes.add("rotorBlade", wingSolid);  // a rotor blade is a wing in its own frame
   }
 
   WingPlugin()
       : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
-                    {{"wing", "wings/wing"}}) {}
+                    {{"wing", "wings/wing"}, {"rotorBlade", "rotorBlades/rotorBlade"}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"wing_count", "", "-> number of wings of the model",

@@ -25,7 +25,7 @@ struct ExportOptions {
   /// Write one solid: the Boolean union of all components (and halves, with `mirror`).
   bool fused = false;
   /// Leave out components that fail to build (ExportScene::leftOut says which and why)
-  /// instead of failing the export. Components named in `components` always fail it.
+  /// instead of failing the export.
   bool skipFailed = false;
   /// Largest distance (model units, metres) between a triangle and the surface for the
   /// triangulated formats; 0 chooses it per component as 1 % of its volume / area

@@ -29,9 +29,9 @@ struct ExportScene {
 };
 
 /// Builds the scene of a configuration. Throws Error naming the component when a selected
-/// uID names nothing, or when a component fails to build (unless skipFailed, and it was
-/// not named); components no plugin builds yet are left out unless selected by uID (then
-/// it is an error).
+/// uID names nothing, or when a component fails to build (unless skipFailed: then it is in
+/// leftOut); components no plugin builds yet are left out unless selected by uID (then it is
+/// an error). The scene is empty when no plugin builds any component.
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options);
 
 }  // namespace airshape::exporting

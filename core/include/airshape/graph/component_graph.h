@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "airshape/problem.h"
@@ -8,21 +9,26 @@
 
 namespace airshape::graph {
 
-/// Where components of one CPACS node type live, relative to a model element
+/// Where components of one node type live, relative to a model element
 /// (/cpacs/vehicles/aircraft/model or /cpacs/vehicles/rotorcraft/model).
 struct ComponentLocation {
-  std::string nodeType;     ///< e.g. "wing"
-  std::string pathInModel;  ///< e.g. "wings/wing"
+  std::string nodeType;     ///< what plugins claim, e.g. "wing" or "sparSegment"
+  std::string pathInModel;  ///< e.g. "wings/wing"; a node type may live at several paths
+  std::string typeName;     ///< the component type of the query protocol, e.g. "wing_spar"
 };
 
-/// The geometric components CPACS 3.5 defines, in the order `info` lists them.
+/// Every geometric element CPACS 3.5 defines, in the order `info` lists them: the components
+/// of a model (wings, fuselages, engines, ...) and the elements inside them that are geometry
+/// of their own (control devices, spars, ribs, cells, frames, decks, tanks, ...). Segments and
+/// component segments are parts of their wing's or fuselage's solid and are not listed.
 const std::vector<ComponentLocation>& standardComponentLocations();
 
 /// One geometric component of a model.
 struct Component {
-  std::string uid;
+  std::string uid;  ///< empty for an element without one (the schema requires it; validate says so)
   std::string nodeType;
-  std::string parentUid;  ///< empty: attached to nothing
+  std::string typeName;   ///< ComponentLocation::typeName
+  std::string parentUid;  ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
   const xercesc::DOMElement* element = nullptr;
@@ -31,9 +37,10 @@ struct Component {
 /// Components connected by parentUID, in an order that builds every parent before its children.
 class ComponentGraph {
  public:
-  /// Collects the components of every model. A parentUID that names no component is reported
-  /// in `warnings` and the component is built on its own; a cycle throws Error(InvalidModel)
-  /// naming the uIDs in it.
+  /// Collects the components of every model. A component inside another one (a spar in a
+  /// wing) is attached to it unless its parentUID names another component. A parentUID that
+  /// names no component (nor an element the component lies in) is reported in `warnings` and
+  /// the component is built on its own; a cycle throws Error(InvalidModel) naming the uIDs in it.
   static ComponentGraph build(const xercesc::DOMElement& cpacsRoot, const std::vector<ComponentLocation>& locations,
                               Problems& warnings);
 
@@ -46,7 +53,13 @@ class ComponentGraph {
   long find(const std::string& uid) const;
 
  private:
+  /// Adds a component found at `location`, unless an earlier one holds its uID.
+  void add(const xercesc::DOMElement& element, const ComponentLocation& location, std::size_t model);
+  /// Attaches each component to its parent: the one its parentUID names, else the one it lies in.
+  void resolveParents(Problems& warnings);
+
   std::vector<Component> components_;
+  std::unordered_map<std::string, std::size_t> byUid_;
   std::vector<std::size_t> order_;
   std::vector<std::size_t> depth_;
 };
