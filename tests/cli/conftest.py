@@ -30,7 +30,8 @@ def airshape(*arguments, stdin=None, env=None):
 
 def conformance_passed(case_file):
     """Runs ../shared/conformance/run.py on one case file against this build (skips when the
-    shared data is absent); returns the number of passed cases and the runner's output."""
+    shared data is absent); returns the number of passed cases and the runner's output, whose
+    last line is 'N passed, M failed'."""
     cases = shared_path("conformance", case_file)
     runner = os.path.join(os.path.dirname(cases), "run.py")
     result = subprocess.run([sys.executable, runner, "--airshape", BINARY, "--data", shared_path("data", "cpacs"), cases],

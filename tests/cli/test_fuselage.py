@@ -277,8 +277,7 @@ def test_a_mirrored_half_profile_keeps_its_kinks(tmp_path):
 
 def test_fuselage_conformance_does_not_regress():
     passed, output = conformance_passed("cases-fuselage.json")
-    # Every case passes; the floor guards that.
-    assert passed >= 201, output[-3000:]
+    assert passed >= 207 and output.strip().endswith(" 0 failed"), output[-3000:]  # every case
 
 
 def test_faces_are_named(tmp_path):

@@ -76,9 +76,7 @@ def test_bad_arguments_are_errors():
 
 def test_wing_conformance_does_not_regress():
     passed, output = conformance_passed("cases-wing.json")
-    # Two cases do not pass (a repeated component segment uID; see docs/wing.md). This floor
-    # guards what works.
-    assert passed >= 564, output[-3000:]
+    assert passed >= 564 and output.strip().endswith(" 0 failed"), output[-3000:]  # every case
 
 
 def test_points_map_back_to_eta_and_xsi():
