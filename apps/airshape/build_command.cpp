@@ -134,6 +134,7 @@ int runBuild(const Arguments& arguments, plugin::PluginHost& host) {
   }
   if (const std::optional<std::string> why = nothingToBuild(configuration))
     std::cout << path << ": nothing to build: " << *why << '\n';
+  printGeometryWarnings(configuration);
   return allGood ? kSuccess : kProblemsFound;
 }
 

@@ -133,6 +133,7 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   options.exportOptions.skipFailed = true;  // each failure is said; the exit status tells
   const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);
   for (const std::string& leftOut : scene.leftOut) std::cerr << "export: left out " << leftOut << '\n';
+  printGeometryWarnings(configuration);
   if (const std::optional<std::string> why = nothingToWrite(scene, options)) {
     std::cerr << "export: " << *why << "; no file written\n";
     return scene.leftOut.empty() ? kSuccess : kProblemsFound;

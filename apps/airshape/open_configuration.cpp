@@ -23,6 +23,11 @@ Configuration openConfiguration(const std::string& path, const plugin::PluginHos
   return configuration;
 }
 
+void printGeometryWarnings(const Configuration& configuration) {
+  for (const Problem& warning : configuration.geometryWarnings())
+    std::cerr << configuration.source() << ": warning: " << warning.describe() << '\n';
+}
+
 std::string singleFileArgument(const std::vector<std::string>& arguments, const std::string& command) {
   if (arguments.size() != 1 || arguments[0].empty() || arguments[0][0] == '-')
     throw Error(ErrorCode::InvalidArgument, "usage: airshape " + command + " FILE (see airshape help " + command + ")");

@@ -11,6 +11,7 @@ int runQuery(const Arguments& arguments, plugin::PluginHost& host) {
   const std::string path = singleFileArgument(arguments, "query");
   Configuration configuration = openConfiguration(path, host);
   query::serveQueries(configuration, host.queries(), std::cin, std::cout);
+  printGeometryWarnings(configuration);
   return kSuccess;
 }
 

@@ -1,5 +1,6 @@
 #include "airshape/configuration.h"
 
+#include <mutex>
 #include <set>
 
 #include <xercesc/dom/DOM.hpp>
@@ -19,8 +20,13 @@
 
 namespace airshape {
 
+struct Configuration::GeometryWarnings {
+  std::mutex mutex;
+  Problems warnings;
+};
+
 Configuration::Configuration(xml::Document document, const std::vector<graph::ComponentLocation>& locations)
-    : document_(std::move(document)), locations_(locations) {
+    : document_(std::move(document)), locations_(locations), geometryWarnings_(std::make_unique<GeometryWarnings>()) {
   xercesc::DOMElement& root = *document_.root();
   requireCpacs3(root, document_.source());
   cpacsVersion_ = declaredCpacsVersion(root);
@@ -73,6 +79,18 @@ Configuration::~Configuration() = default;
 const ComponentShapes& Configuration::noShapes() {
   static const ComponentShapes none;
   return none;
+}
+
+void Configuration::warnAboutGeometry(const Problem& warning) const {
+  const std::lock_guard<std::mutex> lock(geometryWarnings_->mutex);
+  for (const Problem& known : geometryWarnings_->warnings)
+    if (known.xpath == warning.xpath && known.message == warning.message) return;
+  geometryWarnings_->warnings.push_back(warning);
+}
+
+Problems Configuration::geometryWarnings() const {
+  const std::lock_guard<std::mutex> lock(geometryWarnings_->mutex);
+  return geometryWarnings_->warnings;
 }
 
 void Configuration::writeModel() { schema::writeNode(*cpacs_, *document_.root()); }

@@ -194,3 +194,26 @@ def test_no_geometric_element_of_a_shared_file_goes_unmentioned(path):
         return  # not a CPACS 3 file: refused with one line (test_every_shared_file)
     listed = {line.split()[1] for line in info.stdout.splitlines() if line.startswith("  ")}
     assert expected <= listed, sorted(expected - listed)
+
+
+def test_an_airfoil_that_zig_zags_at_its_leading_edge_is_lofted_with_a_warning(tmp_path):
+    # As optimisers write them: the last lower point before the leading edge lies above the
+    # first upper one, by a micrometre on a chord of one metre.
+    zig_zag = tmp_path / "zig-zag.xml"
+    zig_zag.write_text(AIRCRAFT.replace("0.0380602;0.00960736;0;0.00960736;0.0380602",
+                                        "0.0380602;0.00960736;2e-6;0;1e-6;0.00960736;0.0380602")
+                       .replace("-0.0315797;-0.0167151;-0;0.0167151;0.0315797",
+                                "-0.0315797;-0.0167151;-1e-6;-0;-2e-6;0.0167151;0.0315797")
+                       .replace('<y mapType="vector">' + ";".join(["0"] * 33), '<y mapType="vector">' +
+                                ";".join(["0"] * 35)))
+    built = airshape("build", str(zig_zag))
+    assert built.returncode == 0, built.stdout + built.stderr
+    assert re.search(r"MainWing +valid solid", built.stdout), built.stdout
+    warning = [line for line in built.stderr.splitlines() if "crosses itself" in line]
+    assert len(warning) == 1 and "wingAirfoil[1]/pointList: " in warning[0], built.stderr
+    assert "less than the tolerated 1e-05): lofted as given" in warning[0]
+    # An upper point below the lower side: a crossing of a tenth of the chord stays an error.
+    swapped = tmp_path / "swapped.xml"
+    swapped.write_text(AIRCRAFT.replace(";0.0599884;", ";-0.09;"))
+    refused = airshape("build", str(swapped))
+    assert refused.returncode == 1 and "more than the tolerated 1e-05): points out of order?" in refused.stdout

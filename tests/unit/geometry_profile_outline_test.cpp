@@ -1,6 +1,8 @@
 // A profile's points must outline some area without crossing themselves. A polygon crosses
 // itself where two of its sides cross inside both; sides that touch within the tolerance
 // and sides of no length do not count; the closing side of the outline does.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "airshape/error.h"
@@ -47,7 +49,7 @@ TEST(PolygonCrossing, ACrossingWithinTheToleranceIsATouch) {
 /// The message requireProfileOutline throws for these corners, or "" when it throws none.
 std::string outlineError(const std::vector<gp_Pnt2d>& corners, const std::vector<int>& placeInFile = {}) {
   try {
-    requireProfileOutline(corners, 1e-7, "/profile/pointList", placeInFile);
+    requireProfileOutline(corners, 1e-7, placeInFile, "/profile/pointList");
   } catch (const Error& error) {
     EXPECT_EQ(error.cpacsPath(), "/profile/pointList");
     return error.message();
@@ -65,11 +67,47 @@ TEST(ProfileOutline, PointsOnALineEncloseNoArea) {
 TEST(ProfileOutline, ACrossingNamesTheSidesByTheirPlaceInTheFile) {
   const std::vector<gp_Pnt2d> bowTie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
   EXPECT_EQ(outlineError(bowTie),
-            "the points' outline crosses itself (its sides from point 1 and from point 3 "
-            "cross): points out of order?");
+            "the points' outline crosses itself (its sides from point 1 and from point 3 cross by 0.5 of the "
+            "profile's size, more than the tolerated 1e-05): points out of order?");
   // The same corners read from a list in which duplicates were dropped.
   EXPECT_EQ(outlineError(bowTie, {0, 2, 3, 5}),
-            "the points' outline crosses itself (its sides from point 1 and from point 4 cross): points out of order?");
+            "the points' outline crosses itself (its sides from point 1 and from point 4 cross by 0.5 of the "
+            "profile's size, more than the tolerated 1e-05): points out of order?");
+}
+
+/// A symmetric airfoil's outline, trailing edge to leading edge along the upper side and back
+/// along the lower side, with points crowding at the leading edge as optimisers write them.
+std::vector<gp_Pnt2d> airfoilOutline() {
+  std::vector<gp_Pnt2d> corners;
+  const auto thickness = [](double x) { return 0.06 * std::sqrt(x) * (1 - x); };
+  for (int i = 0; i <= 40; ++i) {
+    const double x = std::pow(1.0 - i / 40.0, 2);
+    corners.emplace_back(x, thickness(x));
+  }
+  for (int i = 39; i >= 0; --i) corners.emplace_back(corners[i].X(), -corners[i].Y());
+  return corners;
+}
+
+TEST(ProfileOutline, ACrossingWithinTheToleranceIsLoftedWithAWarning) {
+  // At the leading edge the last upper point lies below the first lower one, by a micrometre on
+  // a chord of one metre: the outline zig-zags and crosses itself by a few millionths.
+  std::vector<gp_Pnt2d> zigZag = airfoilOutline();
+  zigZag[39] = gp_Pnt2d(2e-6, 1e-6);
+  zigZag[40] = gp_Pnt2d(0, 0);
+  zigZag[41] = gp_Pnt2d(1e-6, 2e-6);
+  const auto slight = polygonCrossing(zigZag, 1e-9);
+  ASSERT_TRUE(slight);
+  EXPECT_LT(crossingDepth(zigZag, *slight), kToleratedCrossing);
+  const std::optional<std::string> warning = requireProfileOutline(zigZag, 1e-7, {}, "/profile/pointList");
+  ASSERT_TRUE(warning);
+  EXPECT_NE(warning->find("less than the tolerated 1e-05"), std::string::npos) << *warning;
+  EXPECT_NE(warning->find("lofted as given"), std::string::npos) << *warning;
+  EXPECT_FALSE(requireProfileOutline(airfoilOutline(), 1e-7, {}, "/profile/pointList"));
+  // Points of the middle of the upper side swapped: a crossing of a tenth of the chord stays an error.
+  std::vector<gp_Pnt2d> outOfOrder = airfoilOutline();
+  std::swap(outOfOrder[10], outOfOrder[20]);
+  EXPECT_NE(outlineError(outOfOrder).find("more than the tolerated 1e-05"), std::string::npos)
+      << outlineError(outOfOrder);
 }
 
 }  // namespace

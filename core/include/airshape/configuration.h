@@ -61,6 +61,13 @@ class Configuration {
   /// Geometry built from this configuration, kept until the model changes.
   ComponentCache& cache() const { return *cache_; }
 
+  /// Records a warning of building: something odd about the geometry that was built all the
+  /// same (a profile that crosses itself within the tolerance), naming its CPACS path. Each
+  /// warning is kept once; builders call this from any thread.
+  void warnAboutGeometry(const Problem& warning) const;
+  /// The warnings of building so far, in the order they came (the CLI prints them).
+  Problems geometryWarnings() const;
+
   /// The builders of component solids (those the loaded plugins registered).
   const ComponentShapes& shapes() const { return *shapes_; }
   void useShapes(const ComponentShapes& shapes) { shapes_ = &shapes; }
@@ -120,6 +127,8 @@ class Configuration {
   Problems unreadableValues_;
   Problems warnings_;
   std::unique_ptr<ComponentCache> cache_ = std::make_unique<ComponentCache>();
+  struct GeometryWarnings;
+  std::unique_ptr<GeometryWarnings> geometryWarnings_;
   std::map<std::string, std::uint64_t> fingerprints_;  // of the components, as of the last edit
   const ComponentShapes* shapes_ = &noShapes();
   static const ComponentShapes& noShapes();

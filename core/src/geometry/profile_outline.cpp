@@ -1,6 +1,9 @@
 #include "airshape/geometry/profile_outline.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include <Bnd_Box2d.hxx>
 
@@ -59,22 +62,40 @@ std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::ve
   return std::nullopt;
 }
 
-void requireProfileOutline(const std::vector<gp_Pnt2d>& corners, double tolerance, const std::string& xpath,
-                           const std::vector<int>& placeInFile) {
-  if (corners.size() < 3) return;  // too few points: the caller's own error says so
-  const auto crossing = polygonCrossing(corners, tolerance);
+double crossingDepth(const std::vector<gp_Pnt2d>& corners, std::pair<std::size_t, std::size_t> sides) {
+  const std::size_t n = corners.size();
+  const gp_Pnt2d &a = corners[sides.first], &b = corners[(sides.first + 1) % n];
+  const gp_Pnt2d &c = corners[sides.second], &d = corners[(sides.second + 1) % n];
+  const auto distance = [](const gp_Pnt2d& from, const gp_Pnt2d& to, const gp_Pnt2d& p) {
+    return std::abs((to.X() - from.X()) * (p.Y() - from.Y()) - (to.Y() - from.Y()) * (p.X() - from.X())) /
+           from.Distance(to);
+  };
+  return std::min({distance(a, b, c), distance(a, b, d), distance(c, d, a), distance(c, d, b)});
+}
+
+std::optional<std::string> requireProfileOutline(const std::vector<gp_Pnt2d>& corners, double tolerance,
+                                                 const std::vector<int>& placeInFile, const std::string& xpath) {
+  if (corners.size() < 3) return std::nullopt;  // too few points: the caller's own error says so
+  const double size = diagonal(corners);
+  std::optional<std::string> warning;
   // A polygon that crosses itself may enclose no signed area (a bow tie): crossings first.
-  if (crossing) {
+  if (const auto crossing = polygonCrossing(corners, tolerance)) {
+    // Where sides cross by more than the tolerance, the deepest such crossing is the one to name.
+    const auto deep = polygonCrossing(corners, std::max(tolerance, kToleratedCrossing * size));
+    const auto named = deep ? *deep : *crossing;
     auto number = [&](std::size_t corner) {
-      return std::to_string((placeInFile.empty() ? static_cast<int>(corner) : placeInFile[corner]) + 1);
+      return (placeInFile.empty() ? static_cast<int>(corner) : placeInFile[corner]) + 1;
     };
-    throw Error(ErrorCode::InvalidModel,
-                "the points' outline crosses itself (its sides from point " + number(crossing->first) +
-                    " and from point " + number(crossing->second) + " cross): points out of order?",
-                {}, xpath);
+    std::ostringstream what;
+    what << std::setprecision(2) << "the points' outline crosses itself (its sides from point " << number(named.first)
+         << " and from point " << number(named.second) << " cross by " << crossingDepth(corners, named) / size
+         << " of the profile's size, " << (deep ? "more" : "less") << " than the tolerated " << kToleratedCrossing;
+    if (deep) throw Error(ErrorCode::InvalidModel, what.str() + "): points out of order?", {}, xpath);
+    warning = what.str() + "): lofted as given";
   }
-  if (std::abs(signedArea(corners)) <= tolerance * diagonal(corners))
+  if (std::abs(signedArea(corners)) <= tolerance * size)
     throw Error(ErrorCode::InvalidModel, "the points enclose no area (they lie on a line)", {}, xpath);
+  return warning;
 }
 
 }  // namespace airshape::geometry

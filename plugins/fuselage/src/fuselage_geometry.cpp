@@ -32,7 +32,8 @@ constexpr int kDegreeAcrossProfiles = 1;
 /// The fuselage profiles of the document by uID, built on demand.
 class ProfileLibrary {
  public:
-  explicit ProfileLibrary(const schema::CpacsType& cpacs) {
+  explicit ProfileLibrary(const Configuration& configuration) : configuration_(configuration) {
+    const schema::CpacsType& cpacs = configuration.cpacs();
     if (cpacs.vehicles && cpacs.vehicles->profiles && cpacs.vehicles->profiles->fuselageProfiles)
       for (const auto& profile : cpacs.vehicles->profiles->fuselageProfiles->fuselageProfile)
         definitions_.emplace(profile.uID, &profile);
@@ -43,10 +44,14 @@ class ProfileLibrary {
     const auto definition = definitions_.find(uid);
     if (definition == definitions_.end())
       throw Error(ErrorCode::InvalidModel, "profileUID '" + uid + "' names no fuselage profile", {}, xpath);
-    return built_.emplace(uid, FuselageProfile::fromDefinition(*definition->second)).first->second;
+    const FuselageProfile& profile =
+        built_.emplace(uid, FuselageProfile::fromDefinition(*definition->second)).first->second;
+    for (const Problem& warning : profile.warnings) configuration_.warnAboutGeometry(warning);
+    return profile;
   }
 
  private:
+  const Configuration& configuration_;
   std::unordered_map<std::string, const schema::ProfileGeometryType*> definitions_;
   std::unordered_map<std::string, FuselageProfile> built_;
 };
@@ -92,7 +97,7 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration
   return configuration.cache().obtain<FuselageGeometry>("fuselage-geometry:" + fuselage.uID, [&] {
     auto geometry = std::make_shared<FuselageGeometry>();
     geometry->xpath_ = fuselage.xpath;
-    ProfileLibrary profiles(configuration.cpacs());
+    ProfileLibrary profiles(configuration);
     const auto placed = model::placedElements(configuration, fuselage);
     if (!fuselage.segments) return std::shared_ptr<const FuselageGeometry>(geometry);
     std::vector<PlacedProfile> sections;  // in chain order

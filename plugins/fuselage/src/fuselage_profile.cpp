@@ -39,9 +39,10 @@ bool isMirroredHalf(const schema::ProfileGeometryType& definition) {
   return symmetry && xml::text(*symmetry) == "half";
 }
 
-/// The profile's points with the indices of the list they came from (repeats dropped).
+/// The profile's points with the indices of the list they came from (repeats dropped), and
+/// the warning of an outline that crosses itself within the tolerance.
 std::vector<gp_Pnt> readPoints(const schema::CurvePointListXYZType& list, const std::string& xpath,
-                               std::vector<int>& listIndex) {
+                               std::vector<int>& listIndex, Problems& warnings) {
   const std::vector<double> x = model::parseVector(list.x, xpath + "/x"), y = model::parseVector(list.y, xpath + "/y"),
                             z = model::parseVector(list.z, xpath + "/z");
   if (x.size() != y.size() || x.size() != z.size())
@@ -56,7 +57,8 @@ std::vector<gp_Pnt> readPoints(const schema::CurvePointListXYZType& list, const 
     throw Error(ErrorCode::InvalidModel, "a fuselage profile needs at least three points", {}, xpath);
   std::vector<gp_Pnt2d> outline;  // in the profile's plane
   for (const gp_Pnt& p : points) outline.emplace_back(p.Y(), p.Z());
-  geometry::requireProfileOutline(outline, kSamePoint, xpath, listIndex);
+  if (const auto crossing = geometry::requireProfileOutline(outline, kSamePoint, listIndex, xpath))
+    warnings.push_back({Problem::Severity::Warning, xpath, *crossing});
   return points;
 }
 
@@ -136,10 +138,10 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   const schema::CurvePointListXYZType& list = *definition.pointList;
   const std::string xpath = list.xpath;
   std::vector<int> listIndex;
-  std::vector<gp_Pnt> points = readPoints(list, xpath, listIndex);
+  FuselageProfile profile;
+  std::vector<gp_Pnt> points = readPoints(list, xpath, listIndex, profile.warnings);
   std::vector<int> kinks = kinksOf(list, listIndex);
   std::map<int, double> pinned = pinnedParametersOf(list, listIndex);
-  FuselageProfile profile;
   profile.points = points;
   profile.mirroredHalf = isMirroredHalf(definition);
   if (profile.mirroredHalf) mirrorHalf(points, kinks, pinned, xpath);

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>
 
+#include "airshape/problem.h"
 #include "airshape/schema/generated/cpacs_model.h"
 
 namespace airshape::fuselage {
@@ -25,6 +26,9 @@ struct FuselageProfile {
   /// The length guide curve profiles are scaled by for a standard profile: the rectangle's
   /// height ratio, 1 for a superellipse (unscaled, as the reference has it).
   double standardGuideScale = 1.0;
+  /// What was odd but buildable about the definition (points whose outline crosses itself by
+  /// less than the tolerance), each naming its CPACS path.
+  Problems warnings;
 
   /// The length guide curve profiles are scaled by where this profile is placed by
   /// `transform`: for a point list, from the middle of its first and last point to the

@@ -23,7 +23,8 @@ gp_Pnt lerp(const gp_Pnt& a, const gp_Pnt& b, double share) {
 /// The wing airfoils of the document by uID, built on demand.
 class AirfoilLibrary {
  public:
-  explicit AirfoilLibrary(const schema::CpacsType& cpacs) {
+  explicit AirfoilLibrary(const Configuration& configuration) : configuration_(configuration) {
+    const schema::CpacsType& cpacs = configuration.cpacs();
     if (!cpacs.vehicles || !cpacs.vehicles->profiles) return;
     const schema::ProfilesType& profiles = *cpacs.vehicles->profiles;
     if (profiles.wingAirfoils)
@@ -38,10 +39,13 @@ class AirfoilLibrary {
     const auto definition = definitions_.find(uid);
     if (definition == definitions_.end())
       throw Error(ErrorCode::InvalidModel, "airfoilUID '" + uid + "' names no wing airfoil", {}, xpath);
-    return built_[uid] = std::make_shared<const WingProfile>(WingProfile::fromDefinition(*definition->second));
+    auto profile = std::make_shared<const WingProfile>(WingProfile::fromDefinition(*definition->second));
+    for (const Problem& warning : profile->warnings()) configuration_.warnAboutGeometry(warning);
+    return built_[uid] = profile;
   }
 
  private:
+  const Configuration& configuration_;
   std::unordered_map<std::string, const schema::ProfileGeometryType*> definitions_;
   std::unordered_map<std::string, std::shared_ptr<const WingProfile>> built_;
 };
@@ -58,7 +62,7 @@ std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& config
     auto geometry = std::make_shared<WingGeometry>();
     geometry->configuration_ = &configuration;
     geometry->wing_ = &wing;
-    AirfoilLibrary airfoils(configuration.cpacs());
+    AirfoilLibrary airfoils(configuration);
     std::unordered_map<std::string, SegmentEnd> ends;  // by element uID
     for (const auto& [uid, placed] : model::placedElements(configuration, wing))
       ends.emplace(uid, SegmentEnd{uid, airfoils.get(placed.element->airfoilUID, placed.element->xpath + "/airfoilUID"),

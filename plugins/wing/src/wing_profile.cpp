@@ -161,10 +161,13 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
     points.emplace_back(x[i], y[i], z[i]);
     outline.emplace_back(x[i], z[i]);
   }
-  geometry::requireProfileOutline(outline, kSamePoint, xpath);
-  if (const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr)
-    return fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings");
-  return fromPoints(std::move(points), xpath);
+  const std::optional<std::string> crossing = geometry::requireProfileOutline(outline, kSamePoint, {}, xpath);
+  const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr;
+  WingProfile profile = settings
+                            ? fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings")
+                            : fromPoints(std::move(points), xpath);
+  if (crossing) profile.warnings_.push_back({Problem::Severity::Warning, xpath, *crossing});
+  return profile;
 }
 
 WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,

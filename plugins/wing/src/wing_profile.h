@@ -9,6 +9,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <gp_Pnt.hxx>
 
+#include "airshape/problem.h"
 #include "airshape/schema/generated/cpacs_model.h"
 
 namespace airshape::wing {
@@ -45,6 +46,9 @@ class WingProfile {
   const gp_Pnt& leadingEdge() const { return leadingEdge_; }
   const gp_Pnt& trailingEdge() const { return trailingEdge_; }
   bool bluntTrailingEdge() const { return blunt_; }
+  /// What was odd but buildable about the definition (a point list that crosses itself by
+  /// less than the tolerance), each naming its CPACS path.
+  const Problems& warnings() const { return warnings_; }
 
  private:
   static WingProfile fromPointList(const schema::CurvePointListXYZType& points, const std::string& xpath);
@@ -80,6 +84,7 @@ class WingProfile {
   gp_Pnt leadingEdge_, trailingEdge_;
   bool blunt_ = false;
   bool lowerXsiFromTrailingEdge_ = false;
+  Problems warnings_;
 };
 
 }  // namespace airshape::wing

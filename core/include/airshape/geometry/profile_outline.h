@@ -18,12 +18,24 @@ namespace airshape::geometry {
 std::optional<std::pair<std::size_t, std::size_t>> polygonCrossing(const std::vector<gp_Pnt2d>& corners,
                                                                    double tolerance);
 
-/// Throws Error naming `xpath` (a profile's point list) when the outline of its points
-/// encloses no area (thinner on average than `tolerance`: the points lie on a line) or
-/// crosses itself, saying which sides cross: by the corners' places in the file
-/// (`placeInFile[k]`, 0-based; the corners' own order when empty), counted from 1. Fewer
-/// than three corners are left to the caller.
-void requireProfileOutline(const std::vector<gp_Pnt2d>& corners, double tolerance, const std::string& xpath,
-                           const std::vector<int>& placeInFile = {});
+/// How far two crossing sides of a polygon (by their first corners) reach through each other:
+/// the smallest distance of a side's end from the line of the other side. Moving the points
+/// by that much would undo the crossing.
+double crossingDepth(const std::vector<gp_Pnt2d>& corners, std::pair<std::size_t, std::size_t> sides);
+
+/// A profile outline may cross itself by this share of its size (the diagonal of its box, about
+/// the chord of an airfoil) and still be lofted, with a warning: optimisers write airfoils that
+/// zig-zag by a few millionths of the chord at the leading edge, which CAD tools take as given.
+constexpr double kToleratedCrossing = 1e-5;
+
+/// Checks the outline of a profile's points (`xpath`, its point list). Throws Error naming
+/// `xpath` when the outline encloses no area (thinner on average than `tolerance`: the points
+/// lie on a line) or crosses itself by more than kToleratedCrossing of its size, saying which
+/// sides cross and by how much: by the corners' places in the file (`placeInFile[k]`, 0-based;
+/// the corners' own order when empty), counted from 1. Returns the warning for a crossing
+/// within that tolerance (the profile is lofted as given), else nothing. Fewer than three
+/// corners are left to the caller.
+std::optional<std::string> requireProfileOutline(const std::vector<gp_Pnt2d>& corners, double tolerance,
+                                                 const std::vector<int>& placeInFile, const std::string& xpath);
 
 }  // namespace airshape::geometry
