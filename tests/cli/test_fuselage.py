@@ -356,3 +356,43 @@ def test_a_profile_whose_points_are_out_of_order_is_an_error_naming_it(tmp_path)
     answer = json.loads(airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n').stdout)
     assert answer.get("error", "").startswith(
         "/cpacs/vehicles/profiles/fuselageProfiles/fuselageProfile[1]/pointList: the points' outline crosses itself"), answer
+
+
+def approximated_cylinders(path, settings):
+    """Prisms 10 long of a circle of radius 1 given by 64 points with a ripple of 1 mm on every
+    other point, approximated by the settings given (the reference's approximationSettings)."""
+    angles = [2 * math.pi * i / 64 for i in range(65)]
+    radius = [1.0 + (0.001 if i % 2 else 0.0) for i in range(65)]
+    ys = ";".join(f"{r * math.sin(a):.17g}" for r, a in zip(radius, angles))
+    zs = ";".join(f"{r * math.cos(a):.17g}" for r, a in zip(radius, angles))
+    profile = (f'<fuselageProfile uID="Rippled"><name>p</name><pointList><x>{";".join("0" * 65)}</x><y>{ys}</y>'
+               f"<z>{zs}</z><approximationSettings{settings}</approximationSettings></pointList></fuselageProfile>")
+    path.write_text(HEADER + fuselage("Smooth", "Rippled", 10.0) +
+                    f"</fuselages></model></aircraft><profiles><fuselageProfiles>{profile}</fuselageProfiles>"
+                    "</profiles></vehicles></cpacs>")
+
+
+def test_approximation_settings_smooth_a_fuselage_profile(tmp_path):
+    path = tmp_path / "approximated.xml"
+    approximated_cylinders(path, ' errorComputationMethod="MaxError"><controlPointNumber>16</controlPointNumber>'
+                                 "<interpolatedPointsIndices>17</interpolatedPointsIndices>")
+    volume, circumference, seam, pinned, between = ask(
+        path, {"op": "fuselage_volume", "fuselage": 1}, {"op": "fuselage_circumference", "fuselage": 1, "segment": 1,
+                                                         "eta": 0.5},
+        {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0, "zeta": 0},
+        {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0, "zeta": 0.25},
+        {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0, "zeta": 1 / 64})
+    # The fit runs between the rippled points: its radius is that of their mean, not a zig-zag.
+    assert math.isclose(volume, math.pi * 1.0005 ** 2 * 10, rel_tol=2e-4), volume
+    assert math.isclose(circumference, 2 * math.pi * 1.0005, rel_tol=2e-4), circumference
+    assert abs(math.hypot(seam[1], seam[2]) - 1.0005) < 5e-4 and seam[2] > 0.99, seam
+    # Point 17 (1-based; a quarter turn, radius 1) is interpolated exactly.
+    assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(pinned, [0, 1, 0])), pinned
+    assert abs(math.hypot(between[1], between[2]) - 1.0005) < 5e-4, between
+
+
+def test_approximation_settings_that_cannot_be_met_name_the_node(tmp_path):
+    path = tmp_path / "approximated.xml"
+    approximated_cylinders(path, "><controlPointNumber>2</controlPointNumber>")
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n').stdout)
+    assert "pointList/approximationSettings/controlPointNumber: controlPointNumber must lie in [4" in answer["error"]

@@ -17,7 +17,8 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
   const Eigen::SparseMatrix<double> samples = sparseBasisMatrix(space, parameters);
   const Eigen::Index poles = samples.cols();
   const auto pinned = static_cast<Eigen::Index>(constraints.parameters.size());
-  const Eigen::Index fixed = pinned + constraints.seamContinuity;
+  const int firstSeamDerivative = constraints.freeSeam ? 0 : 1;
+  const Eigen::Index fixed = pinned + constraints.seamContinuity + 1 - firstSeamDerivative;
   const Eigen::SparseMatrix<double> normal = samples.transpose() * samples;
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index column = 0; column < normal.outerSize(); ++column)
@@ -37,12 +38,12 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
         addConstraintEntry(it.row(), it.col(), it.value());
     rightSide.block(poles, 0, pinned, 3) = constraints.points;
   }
-  for (int derivative = 1; derivative <= constraints.seamContinuity; ++derivative) {
-    // The derivative at the start minus the one at the end is zero.
+  for (int derivative = firstSeamDerivative; derivative <= constraints.seamContinuity; ++derivative) {
+    // The derivative (the point, for derivative 0) at the start minus the one at the end is zero.
     const Eigen::MatrixXd start = basisMatrix(space, {space.first()}, derivative);
     const Eigen::MatrixXd end = basisMatrix(space, {space.last()}, derivative);
     for (Eigen::Index pole = 0; pole < poles; ++pole)
-      addConstraintEntry(pinned + derivative - 1, pole, start(0, pole) - end(0, pole));
+      addConstraintEntry(pinned + derivative - firstSeamDerivative, pole, start(0, pole) - end(0, pole));
   }
   Eigen::SparseMatrix<double> system(poles + fixed, poles + fixed);
   system.setFromTriplets(entries.begin(), entries.end());

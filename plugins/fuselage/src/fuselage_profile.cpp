@@ -5,6 +5,8 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
@@ -14,6 +16,7 @@
 #include "airshape/geometry/kinked_interpolation.h"
 #include "airshape/geometry/profile_outline.h"
 #include "airshape/geometry/uniform_refit.h"
+#include "airshape/model/approximation_settings.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
 
@@ -23,6 +26,8 @@ namespace {
 
 constexpr double kClosureShare = 0.005;
 constexpr double kSamePoint = 1e-7;
+/// The degree of an approximated profile, as the reference fits it.
+constexpr int kDegree = 3;
 
 /// Indices from a CPACS list ("1;3"), 0-based as the reference reads them.
 std::vector<int> indicesOf(const std::string& text, const std::string& xpath) {
@@ -134,6 +139,62 @@ void mirrorHalf(std::vector<gp_Pnt>& points, std::vector<int>& kinks, std::map<i
   pinned[static_cast<int>(points.size()) - 1] = last;
 }
 
+/// The knots of an approximated profile: `poles` control points on uniform knots, with a knot
+/// of full multiplicity at each kink's parameter, where the curve may turn a corner.
+geometry::KnotVector approximationKnots(int poles, const std::vector<double>& kinkParameters) {
+  geometry::KnotVector space = geometry::uniformKnots(0.0, 1.0, poles, kDegree);
+  for (double t : kinkParameters) {
+    const auto at = std::lower_bound(space.knots.begin(), space.knots.end(), t);
+    const auto index = at - space.knots.begin();
+    if (at != space.knots.end() && std::abs(*at - t) < 1e-12) {
+      space.multiplicities[static_cast<std::size_t>(index)] = kDegree;
+    } else {
+      space.knots.insert(at, t);
+      space.multiplicities.insert(space.multiplicities.begin() + index, kDegree);
+    }
+  }
+  return space;
+}
+
+/// The reference's approximationSettings (outside CPACS 3.5): a least-squares cubic with the
+/// settings' number of poles instead of the interpolating curve, passing exactly through the
+/// interpolatedPointsIndices and the kinks (corners allowed there), closed C2 across its seam
+/// when the profile is closed (the seam point itself is approximated), its sample parameters
+/// corrected towards their feet (geometry::fitCorrectingParameters).
+Handle(Geom_BSplineCurve)
+    approximatedCurve(const std::vector<gp_Pnt>& points, const std::vector<double>& parameters,
+                      const std::vector<int>& kinks, bool closed, const model::ApproximationSettings& settings,
+                      const std::vector<int>& listIndex, const std::string& xpath) {
+  std::set<int> pinned(kinks.begin(), kinks.end());
+  for (int index : settings.interpolated)
+    pinned.insert(pointIndexOf(index, listIndex, xpath + "/approximationSettings/interpolatedPointsIndices"));
+  const int last = static_cast<int>(points.size()) - 1;
+  if (!closed) {  // a closed profile's seam is approximated like any point
+    pinned.insert(0);
+    pinned.insert(last);
+  }
+  std::vector<double> kinkParameters, sampleParameters;
+  for (int kink : kinks) kinkParameters.push_back(parameters[static_cast<std::size_t>(kink)]);
+  std::vector<gp_Pnt> samples, kept;
+  geometry::InterpolationConstraints constraints;
+  for (int i = 0; i <= last; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    (pinned.count(i) ? constraints.parameters : sampleParameters).push_back(parameters[at]);
+    (pinned.count(i) ? kept : samples).push_back(points[at]);
+  }
+  constraints.points = geometry::toMatrix(kept);
+  if (closed) {
+    constraints.seamContinuity = 2;
+    constraints.freeSeam = true;
+  }
+  try {
+    return geometry::fitCorrectingParameters(approximationKnots(settings.poles, kinkParameters), sampleParameters,
+                                             geometry::toMatrix(samples), constraints, settings.measure);
+  } catch (const Error& error) {  // a singular system: too few distinct points between knots
+    throw Error(error.code(), error.message(), {}, xpath + "/approximationSettings");
+  }
+}
+
 FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   const schema::CurvePointListXYZType& list = *definition.pointList;
   const std::string xpath = list.xpath;
@@ -156,17 +217,26 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
     points.back() = seam;
   }
   const std::vector<double> parameters = geometry::chordParameters(points, 0.5);
-  profile.curve = geometry::interpolateWithCorners(points, parameters, kinks, profile.closed);
+  // A parameter map pins points to parameters; the others keep their places between them.
+  std::optional<std::vector<double>> mapped;
   if (!pinned.empty()) {
-    // Pinned points get their given parameters; the others keep their places between them.
     const std::string at = list.parameterMap ? list.parameterMap->xpath : xpath;
     pinned.emplace(0, 0.0);
     pinned.emplace(static_cast<int>(points.size()) - 1, 1.0);
-    const std::vector<double> mapped = mappedLinearly(parameters, pinned);
-    for (std::size_t i = 1; i < mapped.size(); ++i)
-      if (!(mapped[i] > mapped[i - 1]))
+    mapped = mappedLinearly(parameters, pinned);
+    for (std::size_t i = 1; i < mapped->size(); ++i)
+      if (!((*mapped)[i] > (*mapped)[i - 1]))
         throw Error(ErrorCode::InvalidModel, "paramOnCurve does not increase along the points", {}, at);
-    profile.curve = geometry::reparametrisePiecewiseLinearly(*profile.curve, parameters, mapped);
+  }
+  const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr;
+  if (settings != nullptr) {  // fitted in the mapped parameters, so that its knots follow the map
+    const model::ApproximationSettings request =
+        model::approximationSettings(*settings, xpath + "/approximationSettings", static_cast<int>(points.size()));
+    profile.curve =
+        approximatedCurve(points, mapped ? *mapped : parameters, kinks, profile.closed, request, listIndex, xpath);
+  } else {
+    profile.curve = geometry::interpolateWithCorners(points, parameters, kinks, profile.closed);
+    if (mapped) profile.curve = geometry::reparametrisePiecewiseLinearly(*profile.curve, parameters, *mapped);
   }
   if (profile.mirroredHalf) {  // back to the given half, over the whole range
     profile.curve->Segment(profile.curve->FirstParameter(),
@@ -177,7 +247,7 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   // Without pinned parameters (a half profile always has them: its ends), re-fitted on
   // uniform knots like the reference does: the loft through all profiles then needs few
   // knots, and the numbers agree with the reference's.
-  if (pinned.empty()) profile.curve = geometry::refitOnUniformSpans(*profile.curve, parameters);
+  if (pinned.empty() && settings == nullptr) profile.curve = geometry::refitOnUniformSpans(*profile.curve, parameters);
   return profile;
 }
 

@@ -14,6 +14,7 @@
 #include "airshape/geometry/curve_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/geometry/profile_outline.h"
+#include "airshape/model/approximation_settings.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
 #include "cst_airfoil.h"
@@ -57,55 +58,6 @@ std::size_t leadingEdgeIndex(const std::vector<gp_Pnt>& points) {
     }
   }
   return index;
-}
-
-/// A count or index given as a number: whole, or an error naming the node.
-int wholeNumber(double value, const std::string& xpath) {
-  if (value != std::floor(value) || std::abs(value) > 1e9)
-    throw Error(ErrorCode::InvalidModel, (std::ostringstream() << "not a whole number: " << value).str(), {}, xpath);
-  return static_cast<int>(value);
-}
-
-/// How the settings' errorComputationMethod measures a fit (RMSE when not given).
-geometry::FitError fitErrorOf(const xercesc::DOMElement& settings, const std::string& xpath) {
-  const std::string method = xml::attribute(settings, "errorComputationMethod");
-  if (method.empty() || method == "RMSE") return geometry::FitError::RootMeanSquare;
-  if (method == "MaxError") return geometry::FitError::Largest;
-  throw Error(ErrorCode::InvalidModel, "errorComputationMethod must be RMSE or MaxError (got '" + method + "')", {},
-              xpath);
-}
-
-/// What approximationSettings ask for: the number of poles, the error measure and the
-/// points (0-based, in the file's order) the curve must pass through.
-struct ApproximationRequest {
-  int poles = 0;
-  geometry::FitError measure = geometry::FitError::RootMeanSquare;
-  std::vector<int> pinned;
-};
-
-ApproximationRequest approximationRequest(const xercesc::DOMElement& settings, const std::string& xpath,
-                                          int pointCount) {
-  const auto* count = xml::firstChild(settings, "controlPointNumber");
-  if (!count)
-    throw Error(ErrorCode::InvalidModel,
-                "approximationSettings need a controlPointNumber (a maximumError alone is not supported)", {}, xpath);
-  ApproximationRequest request;
-  const std::string countPath = xpath + "/controlPointNumber";
-  request.poles = wholeNumber(model::parseVector(xml::text(*count), countPath).at(0), countPath);
-  if (request.poles < 4 || request.poles > pointCount)
-    throw Error(ErrorCode::InvalidModel,
-                "controlPointNumber must lie in [4, number of points] (got " + std::to_string(request.poles) + " for " +
-                    std::to_string(pointCount) + " points)",
-                {}, countPath);
-  request.measure = fitErrorOf(settings, xpath);
-  if (const auto* indices = xml::firstChild(settings, "interpolatedPointsIndices"))
-    for (double given : model::parseVector(xml::text(*indices), xpath + "/interpolatedPointsIndices")) {
-      const int index = wholeNumber(given, xpath + "/interpolatedPointsIndices") - 1;  // given 1-based
-      if (index < 0 || index >= pointCount)
-        throw Error(ErrorCode::InvalidModel, "interpolatedPointsIndices must lie in [1, number of points]", {}, xpath);
-      request.pinned.push_back(index);
-    }
-  return request;
 }
 
 }  // namespace
@@ -172,11 +124,12 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
 
 WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, const xercesc::DOMElement& settings,
                                                 const std::string& xpath) {
-  const ApproximationRequest request = approximationRequest(settings, xpath, static_cast<int>(points.size()));
+  const model::ApproximationSettings request =
+      model::approximationSettings(settings, xpath, static_cast<int>(points.size()));
   const int last = static_cast<int>(points.size()) - 1;
   const bool reversed = orderFromLowerSide(points);
   std::set<int> pinned = {0, last};
-  for (int index : request.pinned) pinned.insert(reversed ? last - index : index);
+  for (int index : request.interpolated) pinned.insert(reversed ? last - index : index);
   if (points.size() < 3) throw Error(ErrorCode::InvalidModel, "an airfoil needs at least three points", {}, xpath);
   const auto le = static_cast<int>(leadingEdgeIndex(points));
   WingProfile profile = withChord(points, static_cast<std::size_t>(le));

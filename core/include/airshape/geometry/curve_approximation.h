@@ -9,11 +9,13 @@
 namespace airshape::geometry {
 
 /// Points a curve must pass through exactly, at given parameters, and for a closed curve
-/// the derivatives (1 to seamContinuity) that must agree at the two ends of its range.
+/// the derivatives (1 to seamContinuity) that must agree at the two ends of its range; with
+/// `freeSeam` the two ends must also meet (a closed curve whose seam point is not pinned).
 struct InterpolationConstraints {
   std::vector<double> parameters;
   PoleMatrix points = PoleMatrix(0, 3);
   int seamContinuity = 0;
+  bool freeSeam = false;
 };
 
 /// Least-squares approximation: the control points of `space` that minimise the squared
