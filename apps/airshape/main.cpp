@@ -22,8 +22,9 @@ const std::map<std::string, Command>& commands() {
   static const std::map<std::string, Command> table = {
       {"info",
        {runInfo, "airshape info FILE",
-        "Prints the CPACS version and the component tree in build order:\n"
-        "each component's type, uID, parent and the plugin that builds it."}},
+        "Prints the CPACS version and the geometric elements of every model in build order:\n"
+        "each one's component type, uID, parent, model (after the first) and the plugin\n"
+        "that builds it (or 'no builder yet', or 'none loaded')."}},
       {"query",
        {runQuery, "airshape query FILE",
         "Answers JSON queries, one per line on stdin, one answer per line on\n"
@@ -38,9 +39,12 @@ const std::map<std::string, Command>& commands() {
         "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
       {"build",
        {runBuild, "airshape build FILE",
-        "Builds the solid of every component a plugin builds, in build order, and checks it\n"
-        "(BRepCheck); prints validity, volume and time per component, and for an invalid\n"
-        "solid what BRepCheck found. Exit status 1 if any fails or is invalid."}},
+        "Builds the solid of every component of every model that a plugin builds, in build\n"
+        "order, and checks it (BRepCheck); prints one line per geometric element: validity,\n"
+        "volume and time, what BRepCheck found in an invalid solid, why it failed, or\n"
+        "'no builder yet for <type> (plugin <name>)' / 'not supported: ...'. Warnings of\n"
+        "building go to stderr. Exit status 1 if any fails or is invalid, 0 otherwise (also\n"
+        "when there is nothing to build), 2 when the file cannot be used."}},
       {"export",
        {runExportModule,
         "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"
@@ -59,8 +63,9 @@ const std::map<std::string, Command>& commands() {
         "               largest angle between normals in radians (default 0.2)\n"
         "--force        replace existing outputs       --quiet  no progress or summary\n"
         "Each file is written under a temporary name and moved into place when complete.\n"
-        "Components that fail to build are left out with a line on stderr (exit status 1),\n"
-        "unless named with --components (then the export fails).\n"
+        "Components that fail to build are left out with a line on stderr (exit status 1);\n"
+        "nothing is written when none could be built or one named with --components failed\n"
+        "(status 1), or when no plugin builds any (status 0, said). 2: unusable input.\n"
         "Prints progress on stderr and a summary (volume and area per solid) on stdout."}},
       {"gordon",
        {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep",
@@ -77,7 +82,8 @@ void printUsage(std::ostream& out) {
   out << "airshape: CPACS aircraft descriptions to exact B-spline geometry\n\nusage:\n";
   for (const auto& [name, command] : commands()) out << "  " << command.usage << '\n';
   out << "  airshape help [COMMAND]\n\nPlugins are loaded from the core library's folder and AIRSHAPE_PLUGIN_PATH.\n"
-         "Exit status: 0 success, 1 problems found (validate, build, export), 2 error.\n";
+         "Exit status: 0 success, 1 problems found (validate, build, export: a component\n"
+         "failed), 2 the input or the arguments cannot be used.\n";
 }
 
 int runHelp(const Arguments& arguments) {

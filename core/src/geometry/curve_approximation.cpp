@@ -116,4 +116,20 @@ Handle(Geom_BSplineCurve)
   return curve;
 }
 
+Handle(Geom_BSplineCurve) fitPointsCorrectingParameters(const KnotVector& space, const std::vector<double>& parameters,
+                                                        const std::vector<gp_Pnt>& points, const std::set<int>& pinned,
+                                                        FitError measure, const InterpolationConstraints& seam) {
+  std::vector<double> sampleParameters;
+  std::vector<gp_Pnt> samples, kept;
+  InterpolationConstraints constraints = seam;
+  constraints.parameters.clear();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const bool isPinned = pinned.count(static_cast<int>(i)) > 0;
+    (isPinned ? constraints.parameters : sampleParameters).push_back(parameters[i]);
+    (isPinned ? kept : samples).push_back(points[i]);
+  }
+  constraints.points = toMatrix(kept);
+  return fitCorrectingParameters(space, sampleParameters, toMatrix(samples), constraints, measure);
+}
+
 }  // namespace airshape::geometry

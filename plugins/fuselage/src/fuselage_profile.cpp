@@ -173,23 +173,16 @@ Handle(Geom_BSplineCurve)
     pinned.insert(0);
     pinned.insert(last);
   }
-  std::vector<double> kinkParameters, sampleParameters;
+  std::vector<double> kinkParameters;
   for (int kink : kinks) kinkParameters.push_back(parameters[static_cast<std::size_t>(kink)]);
-  std::vector<gp_Pnt> samples, kept;
-  geometry::InterpolationConstraints constraints;
-  for (int i = 0; i <= last; ++i) {
-    const auto at = static_cast<std::size_t>(i);
-    (pinned.count(i) ? constraints.parameters : sampleParameters).push_back(parameters[at]);
-    (pinned.count(i) ? kept : samples).push_back(points[at]);
-  }
-  constraints.points = geometry::toMatrix(kept);
+  geometry::InterpolationConstraints seam;
   if (closed) {
-    constraints.seamContinuity = 2;
-    constraints.freeSeam = true;
+    seam.seamContinuity = 2;
+    seam.freeSeam = true;
   }
   try {
-    return geometry::fitCorrectingParameters(approximationKnots(settings.poles, kinkParameters), sampleParameters,
-                                             geometry::toMatrix(samples), constraints, settings.measure);
+    return geometry::fitPointsCorrectingParameters(approximationKnots(settings.poles, kinkParameters), parameters,
+                                                   points, pinned, settings.measure, seam);
   } catch (const Error& error) {  // a singular system: too few distinct points between knots
     throw Error(error.code(), error.message(), {}, xpath + "/approximationSettings");
   }

@@ -142,19 +142,10 @@ WingProfile WingProfile::fromApproximatedPoints(std::vector<gp_Pnt> points, cons
   for (double& t : parameters) t = t <= tLe ? 0.5 * t / tLe : 0.5 + 0.5 * (t - tLe) / (1.0 - tLe);
 
   // The pinned points are constraints, the others samples whose parameters get corrected.
-  std::vector<double> sampleParameters;
-  std::vector<gp_Pnt> samples, kept;
-  geometry::InterpolationConstraints constraints;
-  for (int i = 0; i <= last; ++i) {
-    const auto at = static_cast<std::size_t>(i);
-    (pinned.count(i) ? constraints.parameters : sampleParameters).push_back(parameters[at]);
-    (pinned.count(i) ? kept : samples).push_back(points[at]);
-  }
-  constraints.points = geometry::toMatrix(kept);
   Handle(Geom_BSplineCurve) curve;
   try {
-    curve = geometry::fitCorrectingParameters(geometry::uniformKnots(0.0, 1.0, request.poles, 3), sampleParameters,
-                                              geometry::toMatrix(samples), constraints, request.measure);
+    curve = geometry::fitPointsCorrectingParameters(geometry::uniformKnots(0.0, 1.0, request.poles, 3), parameters,
+                                                    points, pinned, request.measure);
   } catch (const Error& error) {  // a singular system: too few distinct points between knots
     throw Error(error.code(), error.message(), {}, xpath);
   }

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <set>
 #include <vector>
+
+#include <gp_Pnt.hxx>
 
 #include <Geom_BSplineCurve.hxx>
 
@@ -41,5 +44,12 @@ enum class FitError { Largest, RootMeanSquare };
 Handle(Geom_BSplineCurve)
     fitCorrectingParameters(const KnotVector& space, std::vector<double> parameters, const PoleMatrix& points,
                             const InterpolationConstraints& constraints, FitError measure, int maxCorrections = 10);
+
+/// fitCorrectingParameters on a list of points: those whose indices are `pinned` are passed
+/// through exactly at their parameters, the others are the samples whose parameters get
+/// corrected; `seam` closes the curve (its seamContinuity and freeSeam; no points of its own).
+Handle(Geom_BSplineCurve) fitPointsCorrectingParameters(const KnotVector& space, const std::vector<double>& parameters,
+                                                        const std::vector<gp_Pnt>& points, const std::set<int>& pinned,
+                                                        FitError measure, const InterpolationConstraints& seam = {});
 
 }  // namespace airshape::geometry
