@@ -3,6 +3,7 @@
 // Gordon surface. Any input may be refused with an Error; nothing may crash or hang.
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -40,8 +41,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string profilesPath = written(input.substr(0, split), "profiles");
   const std::string guidesPath = written(input.substr(split + 4), "guides");
   try {
-    const auto profiles = airshape::geometry::readBrepCurves(profilesPath);
-    const auto guides = airshape::geometry::readBrepCurves(guidesPath);
+    // A short read timeout: the many damaged mutants that hang OCCT's reader would spend the
+    // campaign waiting otherwise.
+    const std::chrono::milliseconds timeout(500);
+    const auto profiles = airshape::geometry::readBrepCurves(profilesPath, timeout);
+    const auto guides = airshape::geometry::readBrepCurves(guidesPath, timeout);
     const double extent = std::max(size(profiles), size(guides));
     if (std::isfinite(extent) && extent > 0.0)
       (void)airshape::geometry::buildGordonSurface(profiles, guides, {1e-3 * extent, 1e-5 * extent});

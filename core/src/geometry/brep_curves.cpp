@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -19,6 +20,13 @@ namespace airshape::geometry {
 
 namespace {
 
+/// A timeout in seconds as messages show it: 10, 0.5.
+std::string secondsOf(std::chrono::milliseconds timeout) {
+  std::ostringstream text;
+  text << static_cast<double>(timeout.count()) / 1000.0;
+  return text.str();
+}
+
 bool readBrep(const std::string& path, TopoDS_Shape& shape) {
   BRep_Builder builder;
   return BRepTools::Read(shape, path.c_str(), builder) && !shape.IsNull();
@@ -27,10 +35,10 @@ bool readBrep(const std::string& path, TopoDS_Shape& shape) {
 /// Reads a BREP file only after a child process has read it unharmed: OCCT's reader crashes
 /// on some damaged files (a trimmed curve around a curve it failed to read) and loops forever
 /// on others (a tolerance line missing), and neither can be caught in this process.
-TopoDS_Shape readBrepSafely(const std::string& path) {
+TopoDS_Shape readBrepSafely(const std::string& path, std::chrono::milliseconds timeout) {
   std::error_code error;
   const auto megabytes = static_cast<long>(std::filesystem::file_size(path, error) >> 20);
-  const std::chrono::seconds timeout(10 + 10 * megabytes);  // a sound file reads at tens of MB/s
+  if (timeout.count() == 0) timeout = std::chrono::seconds(10 + 10 * megabytes);  // sound files read at tens of MB/s
   const IsolatedResult probe = callIsolated(
       [&] {
         TopoDS_Shape shape;
@@ -43,8 +51,7 @@ TopoDS_Shape readBrepSafely(const std::string& path) {
                 path);
   if (probe.outcome == IsolatedOutcome::TimedOut)
     throw Error(ErrorCode::NotXml,
-                "is a damaged BREP file: OCCT's reader did not finish within " + std::to_string(timeout.count()) + " s",
-                path);
+                "is a damaged BREP file: OCCT's reader did not finish within " + secondsOf(timeout) + " s", path);
   TopoDS_Shape shape;
   try {
     if (probe.outcome == IsolatedOutcome::Succeeded && readBrep(path, shape)) return shape;
@@ -55,10 +62,10 @@ TopoDS_Shape readBrepSafely(const std::string& path) {
 
 }  // namespace
 
-std::vector<Handle(Geom_BSplineCurve)> readBrepCurves(const std::string& path) {
+std::vector<Handle(Geom_BSplineCurve)> readBrepCurves(const std::string& path, std::chrono::milliseconds readTimeout) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw Error(ErrorCode::FileNotFound, "no such file", path);
-  const TopoDS_Shape shape = readBrepSafely(path);
+  const TopoDS_Shape shape = readBrepSafely(path, readTimeout);
   std::vector<Handle(Geom_BSplineCurve)> curves;
   for (TopExp_Explorer edges(shape, TopAbs_EDGE); edges.More(); edges.Next()) {
     double first = 0.0, last = 0.0;
