@@ -110,6 +110,14 @@ void printSummary(const exporting::ExportScene& scene) {
               << geometry::areaOf(component.shape.shape) << '\n';
 }
 
+/// How many geometric elements of the file no loaded plugin builds yet.
+std::size_t withoutBuilder(const Configuration& configuration) {
+  std::size_t count = 0;
+  for (const graph::Component& component : configuration.components().components())
+    count += configuration.shapes().find(component.nodeType) == nullptr ? 1 : 0;
+  return count;
+}
+
 /// Why nothing is written, if nothing is: no plugin builds any component, every component
 /// failed, or a component named with --components failed (an export of what was asked for).
 std::optional<std::string> nothingToWrite(const exporting::ExportScene& scene, const ExportCommandOptions& options) {
@@ -133,6 +141,9 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   options.exportOptions.skipFailed = true;  // each failure is said; the exit status tells
   const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);
   for (const std::string& leftOut : scene.leftOut) std::cerr << "export: left out " << leftOut << '\n';
+  if (const std::size_t unbuilt = withoutBuilder(configuration); unbuilt > 0 && !options.quiet)
+    std::cerr << "export: " << unbuilt << " geometric elements have no builder yet and are not written ("
+              << "`airshape build " << options.input << "` lists them)\n";
   printGeometryWarnings(configuration);
   if (const std::optional<std::string> why = nothingToWrite(scene, options)) {
     std::cerr << "export: " << *why << "; no file written\n";
