@@ -99,11 +99,19 @@ BuildReport buildOne(const Configuration& configuration, const plugin::PluginHos
   return {line.str(), false};
 }
 
+/// The components `build` builds, in build order: all but the parts of others' solids.
+std::vector<std::size_t> builtOnTheirOwn(const graph::ComponentGraph& graph) {
+  std::vector<std::size_t> order;
+  for (std::size_t index : graph.buildOrder())
+    if (!graph.components()[index].part) order.push_back(index);
+  return order;
+}
+
 /// Builds every component, independent ones in parallel.
 std::vector<BuildReport> buildAll(const Configuration& configuration, const plugin::PluginHost& host) {
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<BuildReport> reports(graph.components().size());
-  graph::forEachByDepth(graph, graph.buildOrder(), [&](std::size_t index) {
+  graph::forEachByDepth(graph, builtOnTheirOwn(graph), [&](std::size_t index) {
     reports[index] = buildOne(configuration, host, graph.components()[index]);
   });
   return reports;
@@ -112,11 +120,12 @@ std::vector<BuildReport> buildAll(const Configuration& configuration, const plug
 /// Why nothing is built, if nothing is: the file holds no component, or no loaded plugin
 /// builds any of its components.
 std::optional<std::string> nothingToBuild(const Configuration& configuration) {
-  const std::vector<graph::Component>& components = configuration.components().components();
-  if (components.empty()) return "the file holds no geometric component";
-  for (const graph::Component& component : components)
-    if (configuration.shapes().find(component.nodeType) != nullptr) return std::nullopt;
-  return "no loaded plugin builds any of its " + std::to_string(components.size()) + " components";
+  const std::vector<std::size_t> order = builtOnTheirOwn(configuration.components());
+  if (order.empty()) return "the file holds no geometric component";
+  for (std::size_t index : order)
+    if (configuration.shapes().find(configuration.components().components()[index].nodeType) != nullptr)
+      return std::nullopt;
+  return "no loaded plugin builds any of its " + std::to_string(order.size()) + " components";
 }
 
 }  // namespace
@@ -125,10 +134,11 @@ int runBuild(const Arguments& arguments, plugin::PluginHost& host) {
   const std::string path = singleFileArgument(arguments, "build");
   const Configuration configuration = openConfiguration(path, host);
   const graph::ComponentGraph& graph = configuration.components();
-  std::cout << path << ": building " << graph.components().size() << " components\n";
+  const std::vector<std::size_t> order = builtOnTheirOwn(graph);
+  std::cout << path << ": building " << order.size() << " components\n";
   const std::vector<BuildReport> reports = buildAll(configuration, host);
   bool allGood = true;
-  for (std::size_t index : graph.buildOrder()) {
+  for (std::size_t index : order) {
     std::cout << reports[index].line << '\n';
     allGood = reports[index].good && allGood;
   }

@@ -6,6 +6,19 @@
 
 namespace airshape::cli {
 
+namespace {
+
+/// Who builds a component: its plugin, that plugin with "(no builder yet)", "none loaded", or
+/// for the model, nobody (it has no shape).
+std::string builderOf(const graph::Component& component, const plugin::PluginHost& host) {
+  if (component.nodeType == graph::kModelNodeType) return "- (the model: no shape)";
+  const std::string plugin = host.pluginFor(component.nodeType);
+  if (plugin.empty()) return "none loaded";
+  return host.shapes().find(component.nodeType) != nullptr ? plugin : plugin + " (no builder yet)";
+}
+
+}  // namespace
+
 int runInfo(const Arguments& arguments, plugin::PluginHost& host) {
   const std::string path = singleFileArgument(arguments, "info");
   const Configuration configuration = openConfiguration(path, host);
@@ -16,15 +29,11 @@ int runInfo(const Arguments& arguments, plugin::PluginHost& host) {
             << "components:   " << graph.components().size() << " (in build order)\n";
   for (std::size_t index : graph.buildOrder()) {
     const graph::Component& component = graph.components()[index];
-    const std::string plugin = host.pluginFor(component.nodeType);
-    const std::string builder = plugin.empty()                                      ? "none loaded"
-                                : host.shapes().find(component.nodeType) != nullptr ? plugin
-                                                                                    : plugin + " (no builder yet)";
     std::cout << "  " << std::string(2 * graph.depth(index), ' ') << component.typeName << ' '
               << (component.uid.empty() ? component.xpath : component.uid)
               << "  parent: " << (component.parentUid.empty() ? "-" : component.parentUid)
               << (component.model > 0 ? "  model: " + std::to_string(component.model + 1) : "")
-              << "  plugin: " << builder << '\n';
+              << "  plugin: " << builderOf(component, host) << '\n';
   }
   return kSuccess;
 }

@@ -38,8 +38,15 @@ TEST(ComponentGraph, ParentsComeBeforeChildren) {
   const auto configuration = Configuration::fromString(doc);
   const auto& graph = configuration.components();
   std::vector<std::string> order;
-  for (std::size_t index : graph.buildOrder()) order.push_back(graph.components()[index].uid);
+  for (std::size_t index : graph.buildOrder())
+    if (!graph.components()[index].part) order.push_back(graph.components()[index].uid);
   EXPECT_EQ(order, (std::vector<std::string>{"F", "Main", "Tail"}));
+  // The parts: the model first (attached to nothing), each segment below its wing.
+  EXPECT_EQ(graph.components()[graph.buildOrder().front()].typeName, "plane");
+  const graph::Component& segment = graph.components()[static_cast<std::size_t>(graph.find("Tail_Seg"))];
+  EXPECT_TRUE(segment.part);
+  EXPECT_EQ(segment.typeName, "wing_segment");
+  EXPECT_EQ(segment.parentUid, "Tail");
   EXPECT_EQ(graph.depth(static_cast<std::size_t>(graph.find("Tail"))), 2u);
   EXPECT_EQ(model::resolvedSymmetry(configuration, "Tail"), "x-y") << "inherited from the fuselage through Main";
 }
@@ -61,7 +68,8 @@ TEST(ComponentGraph, ACycleIsAnErrorNamingItsUids) {
 TEST(ComponentGraph, AParentThatIsNoComponentIsAWarning) {
   const auto configuration =
       Configuration::fromString(test::cpacsDocument("<wings>" + test::wingXml("W", "Nowhere") + "</wings>"));
-  ASSERT_EQ(configuration.components().components().size(), 1u);
+  ASSERT_EQ(configuration.components().components().size(), 3u);  // the model, the wing, its segment
+  EXPECT_EQ(configuration.components().components()[1].parentUid, "");
   const Problems& warnings = configuration.warnings();
   EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const Problem& p) {
     return p.message.find("parentUID 'Nowhere' names no geometric component") != std::string::npos;

@@ -25,7 +25,9 @@ using Clock = std::chrono::steady_clock;
 /// plugin builds (none, when no plugin builds any).
 std::vector<std::size_t> selectedComponents(const Configuration& configuration, const ExportOptions& options) {
   const graph::ComponentGraph& graph = configuration.components();
-  std::vector<bool> wanted(graph.components().size(), options.components.empty());
+  std::vector<bool> wanted(graph.components().size(), false);
+  if (options.components.empty())  // every component on its own; parts (segments) are in their parents
+    for (std::size_t index = 0; index < wanted.size(); ++index) wanted[index] = !graph.components()[index].part;
   for (const std::string& uid : options.components) {
     const long index = graph.find(uid);
     if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");

@@ -60,7 +60,9 @@ class DiscoveryRecorder : public boost::default_dfs_visitor {
 
 /// The elements inside a wing (or rotor blade) that are geometry of their own.
 void addWingContents(const std::string& wing, std::vector<ComponentLocation>& locations) {
+  locations.push_back({"wingSegment", wing + "/segments/segment", "wing_segment", true});
   const std::string segment = wing + "/componentSegments/componentSegment";
+  locations.push_back({"wingComponentSegment", segment, "wing_component_segment", true});
   const auto addStructure = [&](const std::string& structure) {
     locations.push_back({"sparSegment", structure + "/spars/sparSegments/sparSegment", "wing_spar"});
     locations.push_back({"ribsDefinition", structure + "/ribsDefinitions/ribsDefinition", "wing_rib"});
@@ -87,6 +89,7 @@ void addBodyStructure(const std::string& structure, std::vector<ComponentLocatio
 
 /// The elements inside a fuselage that are geometry of their own: structure, decks, tanks.
 void addFuselageContents(const std::string& fuselage, std::vector<ComponentLocation>& locations) {
+  locations.push_back({"fuselageSegment", fuselage + "/segments/segment", "fuselage_segment", true});
   const std::string structure = fuselage + "/structure";
   addBodyStructure(structure, locations);
   const std::vector<ComponentLocation> inStructure = {
@@ -128,11 +131,13 @@ void addModelTanks(std::vector<ComponentLocation>& locations) {
 
 std::vector<ComponentLocation> catalogue() {
   std::vector<ComponentLocation> locations = {
+      {kModelNodeType, "", "plane", true},
       {"fuselage", "fuselages/fuselage", "fuselage"},
       {"wing", "wings/wing", "wing"},
       {"rotorBlade", "rotorBlades/rotorBlade", "rotor_blade"},
       {"engine", "engines/engine", "engine_nacelle"},
       {"enginePylon", "enginePylons/enginePylon", "engine_pylon"},
+      {"pylonSegment", "enginePylons/enginePylon/segments/segment", "wing_segment", true},
       {"rotor", "rotors/rotor", "rotor"},
       {"duct", "ducts/duct", "duct"},
       {"duct", "ducts/ductAssembly", "duct"},
@@ -167,6 +172,7 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
     return;  // a repeated uID: the first definition wins
   component.nodeType = location.nodeType;
   component.typeName = location.typeName;
+  component.part = location.part;
   if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
   component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
   component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);
@@ -188,7 +194,8 @@ void ComponentGraph::resolveParents(Problems& warnings) {
       if (!component.parentUid.empty() && xml::attribute(element, "uID") == component.parentUid)
         parentUidNamesAnEnclosingElement = true;
       const auto found = byElement.find(above);
-      if (found != byElement.end() && enclosing == nullptr) enclosing = &components_[found->second];
+      if (found != byElement.end() && enclosing == nullptr && components_[found->second].nodeType != kModelNodeType)
+        enclosing = &components_[found->second];  // everything lies in its model, which is no parent
     }
     if (!component.parentUid.empty() && find(component.parentUid) >= 0) continue;
     if (!component.parentUid.empty() && !parentUidNamesAnEnclosingElement)

@@ -48,7 +48,7 @@ Json boundingBox(Configuration& configuration, const Json& query) {
   // The whole configuration, mirrored halves included: every component a plugin builds.
   Bnd_Box all;
   for (const auto& component : configuration.components().components()) {
-    if (configuration.shapes().find(component.nodeType) == nullptr) continue;
+    if (component.part || configuration.shapes().find(component.nodeType) == nullptr) continue;
     const Bnd_Box box = tightBox(configuration.shapes().shapeOf(configuration, component.uid));
     all.Add(box);
     const std::string symmetry = model::resolvedSymmetry(configuration, component.uid);

@@ -371,4 +371,18 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
   }
 }
 
+NamedShape FuselageGeometry::segmentSolid(std::size_t segment) const {
+  const geometry::LoftPiece& piece = segmentPiece(segment);
+  const std::string& uid = segments_[segment].uid;
+  solidOf(piece, segments_[segment].xpath);  // says why where there is none
+  try {
+    return sewnNamedSolid({{uid + "/skin", piece.skin},
+                           {uid + "/symmetry", piece.closingFace},
+                           {uid + "/front", piece.startCap},
+                           {uid + "/rear", piece.endCap}});
+  } catch (const Error& error) {
+    throw Error(error.code(), error.message(), {}, segments_[segment].xpath);
+  }
+}
+
 }  // namespace airshape::fuselage

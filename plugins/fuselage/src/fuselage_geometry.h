@@ -51,6 +51,9 @@ class FuselageGeometry {
   /// The whole fuselage as one solid: skins, symmetry faces, front and rear caps, named
   /// "<segment uID>/skin", "<segment uID>/symmetry", "<fuselage uID>/front" and "/rear".
   NamedShape solid(const std::string& fuselageUid) const;
+  /// One segment's solid (a fuselage segment's shape): its skin, symmetry face and caps,
+  /// named "<segment uID>/skin", "/symmetry", "/front" and "/rear".
+  NamedShape segmentSolid(std::size_t segment) const;
 
  private:
   /// Skins the placed profiles (chain order): the loft without guide curves.

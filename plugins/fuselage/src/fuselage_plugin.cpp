@@ -1,5 +1,7 @@
 // The fuselage plugin: CPACS fuselages. It answers the fuselage ops that need no
 // geometry; the geometry ops are registered as pending until the fuselage builder exists.
+#include <algorithm>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/primary_model.h"
@@ -33,11 +35,20 @@ class FuselagePlugin final : public plugin::BasicPlugin {
       const model::ModelComponents& model = model::modelHolding(c, uid);
       return FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, uid, "fuselage"))->solid(uid);
     });
+    shapes.add("fuselageSegment", [](const Configuration& c, const std::string& uid) {
+      const std::string& fuselageUid =
+          c.components().components()[static_cast<std::size_t>(c.components().find(uid))].parentUid;
+      const model::ModelComponents& model = model::modelHolding(c, fuselageUid);
+      const auto geometry =
+          FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, fuselageUid, "fuselage"));
+      const auto& uids = geometry->segmentUids();
+      return geometry->segmentSolid(static_cast<std::size_t>(std::find(uids.begin(), uids.end(), uid) - uids.begin()));
+    });
   }
 
   FuselagePlugin()
       : BasicPlugin("fuselage", "0.1.0", "CPACS fuselages: profiles, sections, segments",
-                    {{"fuselage", "fuselages/fuselage"}}) {}
+                    {{"fuselage", "fuselages/fuselage"}, {"fuselageSegment", ""}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"fuselage_count", "", "-> number of fuselages of the model",

@@ -26,6 +26,8 @@ class ComponentSegment {
   /// Segment coordinates to component-segment eta (xsi is unchanged). Throws Error when
   /// the segment is not part of this component segment.
   double toComponentSegment(std::size_t segment, double eta) const;
+  /// The wing segments it runs through (indices in chain order), inner to outer.
+  const std::vector<std::size_t>& segments() const { return path_; }
 
  private:
   std::vector<std::size_t> path_;    ///< wing segment indices, inner to outer

@@ -1,5 +1,7 @@
 // The wing plugin: CPACS wings. It answers the wing ops that need no geometry; the
 // geometry ops are registered as pending until the wing builder exists.
+#include <algorithm>
+
 #include <BRepAlgoAPI_Cut.hxx>
 
 #include "airshape/configuration.h"
@@ -29,6 +31,14 @@ schema::WingType& selectWing(const Configuration& configuration, const Json& que
   if (named != query.end() && named->is_string())  // a uID: says why it is not there, if it is not
     model::findByUid(configuration, model, model.wings, named->get<std::string>(), "wing");
   return *model.wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(model.wings), "wing")];
+}
+
+/// The wing (or rotor blade) that a part of it (a segment, a component segment) lies in.
+const schema::WingType& wingHolding(const Configuration& configuration, const std::string& partUid) {
+  const graph::ComponentGraph& graph = configuration.components();
+  const std::string& wingUid = graph.components()[static_cast<std::size_t>(graph.find(partUid))].parentUid;
+  const model::ModelComponents& model = model::modelHolding(configuration, wingUid);
+  return model::findByUid(configuration, model, model.wings, wingUid, "wing");
 }
 
 std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? wing.segments->segment.size() : 0; }
@@ -78,11 +88,26 @@ class WingPlugin final : public plugin::BasicPlugin {
     };
     shapes.add("wing", wingSolid);
     shapes.add("rotorBlade", wingSolid);  // a rotor blade is a wing in its own frame
+    shapes.add("wingSegment", [](const Configuration& c, const std::string& uid) {
+      const schema::WingType& wing = wingHolding(c, uid);
+      const auto& uids = WingGeometry::of(c, wing)->segmentUids();
+      const auto segment = static_cast<std::size_t>(std::find(uids.begin(), uids.end(), uid) - uids.begin());
+      return WingShape::of(c, wing)->solidOf(segment, segment);
+    });
+    shapes.add("wingComponentSegment", [](const Configuration& c, const std::string& uid) {
+      const schema::WingType& wing = wingHolding(c, uid);
+      const schema::ComponentSegmentType* definition = nullptr;
+      for (const auto& candidate : wing.componentSegments->componentSegment)
+        if (candidate.uID == uid) definition = &candidate;
+      const ComponentSegment segment(*WingGeometry::of(c, wing), *definition);
+      const auto [first, last] = std::minmax_element(segment.segments().begin(), segment.segments().end());
+      return WingShape::of(c, wing)->solidOf(*first, *last);
+    });
   }
 
   WingPlugin()
       : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
-                    {{"wing", "wings/wing"}, {"rotorBlade", "rotorBlades/rotorBlade"}}) {}
+                    {{"wing", ""}, {"rotorBlade", ""}, {"wingSegment", ""}, {"wingComponentSegment", ""}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"wing_count", "", "-> number of wings of the model",

@@ -120,9 +120,17 @@ double WingShape::surfaceArea() const {
 
 NamedShape WingShape::solid() const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the wing has no segments, so no solid", {}, wingPath_);
-  std::vector<std::pair<std::string, TopoDS_Face>> named = {{wingUid_ + "/root", segments_.front().innerCap},
-                                                            {wingUid_ + "/tip", segments_.back().outerCap}};
-  for (std::size_t k = 0; k < segments_.size(); ++k) {
+  return solidOf(0, segments_.size() - 1);
+}
+
+NamedShape WingShape::solidOf(std::size_t first, std::size_t last) const {
+  const auto capName = [&](std::size_t segment, bool atWingEnd, const char* wingEnd, const char* segmentEnd) {
+    return atWingEnd ? wingUid_ + wingEnd : segmentDefinitions_[segment].uid + segmentEnd;
+  };
+  std::vector<std::pair<std::string, TopoDS_Face>> named = {
+      {capName(first, first == 0, "/root", "/inner"), segments_[first].innerCap},
+      {capName(last, last + 1 == segments_.size(), "/tip", "/outer"), segments_[last].outerCap}};
+  for (std::size_t k = first; k <= last; ++k) {
     const SegmentShape& segment = segments_[k];
     const std::string& uid = segmentDefinitions_[k].uid;
     // A guided skin is one face for both sides.
@@ -134,8 +142,8 @@ NamedShape WingShape::solid() const {
   // A root or tip cap on a profile flattened to a line is a valid face on its own, but a
   // guided skin only approximates that profile, and sewn to it the cap may cross itself or
   // face the wrong way. Such a solid is refused (checked only then: the check is dear).
-  for (const auto& [cap, end] : {std::pair(segments_.front().innerCap, &segmentDefinitions_.front()),
-                                 std::pair(segments_.back().outerCap, &segmentDefinitions_.back())})
+  for (const auto& [cap, end] : {std::pair(segments_[first].innerCap, &segmentDefinitions_[first]),
+                                 std::pair(segments_[last].outerCap, &segmentDefinitions_[last])})
     if (!cap.IsNull() && geometry::enclosesNoArea(cap) && !BRepCheck_Analyzer(solid.shape).IsValid())
       throw geometry::noAreaError(end->xpath);
   return solid;

@@ -44,6 +44,10 @@ class WingShape {
   /// named "<segment uID>/upper", "/lower", "/trailingEdge" ("/skin" where a guided skin
   /// has no leading-edge guide to split it), "<wing uID>/root" and "/tip".
   NamedShape solid() const;
+  /// The solid of the segments first..last (chain order) alone: their skins and strips closed
+  /// by the caps at their ends, named as in solid(); caps inside the wing are named
+  /// "<segment uID>/inner" and "/outer". A wing segment's or component segment's shape.
+  NamedShape solidOf(std::size_t first, std::size_t last) const;
 
  private:
   std::string wingUid_, wingPath_;

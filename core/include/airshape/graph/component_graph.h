@@ -13,14 +13,21 @@ namespace airshape::graph {
 /// (/cpacs/vehicles/aircraft/model or /cpacs/vehicles/rotorcraft/model).
 struct ComponentLocation {
   std::string nodeType;     ///< what plugins claim, e.g. "wing" or "sparSegment"
-  std::string pathInModel;  ///< e.g. "wings/wing"; a node type may live at several paths
+  std::string pathInModel;  ///< e.g. "wings/wing"; a node type may live at several paths; "" the model
   std::string typeName;     ///< the component type of the query protocol, e.g. "wing_spar"
+  /// A part of its parent's solid (a wing's segments and component segments, a fuselage's
+  /// segments) or the model itself: a component that queries measure, but that `build` and
+  /// `export` do not build on their own.
+  bool part = false;
 };
+
+/// The node type of the model element itself (type `plane`), which has no shape.
+inline const char* const kModelNodeType = "model";
 
 /// Every geometric element CPACS 3.5 defines, in the order `info` lists them: the components
 /// of a model (wings, fuselages, engines, ...) and the elements inside them that are geometry
-/// of their own (control devices, spars, ribs, cells, frames, decks, tanks, ...). Segments and
-/// component segments are parts of their wing's or fuselage's solid and are not listed.
+/// of their own (control devices, spars, ribs, cells, frames, decks, tanks, ...), and as parts
+/// the model itself, the segments and component segments.
 const std::vector<ComponentLocation>& standardComponentLocations();
 
 /// One geometric component of a model.
@@ -28,6 +35,7 @@ struct Component {
   std::string uid;  ///< empty for an element without one (the schema requires it; validate says so)
   std::string nodeType;
   std::string typeName;   ///< ComponentLocation::typeName
+  bool part = false;      ///< ComponentLocation::part
   std::string parentUid;  ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
