@@ -5,9 +5,11 @@
 #include <optional>
 #include <vector>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
@@ -242,6 +244,26 @@ double areaOf(const TopoDS_Shape& faces) {
     }
   }
   return area;
+}
+
+double enclosedVolume(const TopoDS_Shape& shape) {
+  double volume = 0.0;
+  if (shape.IsNull()) return volume;
+  for (TopExp_Explorer solids(shape, TopAbs_SOLID); solids.More(); solids.Next()) volume += volumeOf(solids.Current());
+  for (TopExp_Explorer shells(shape, TopAbs_SHELL, TopAbs_SOLID); shells.More(); shells.Next())
+    if (BRep_Tool::IsClosed(shells.Current())) volume += volumeOf(shells.Current());
+  return volume;
+}
+
+double lengthOf(const TopoDS_Shape& edges) {
+  double length = 0.0;
+  if (edges.IsNull()) return length;
+  for (TopExp_Explorer explorer(edges, TopAbs_EDGE); explorer.More(); explorer.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(explorer.Current());
+    if (BRep_Tool::Degenerated(edge)) continue;
+    length += GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge), kIntegrationAccuracy);
+  }
+  return length;
 }
 
 }  // namespace airshape::geometry

@@ -118,6 +118,8 @@ void addFuselageContents(const std::string& fuselage, std::vector<ComponentLocat
   const std::string tanks = fuselage + "/fuelTanks/";
   locations.push_back({"fuelTank", tanks + "genericFuelTanks/genericFuelTank", "tank"});
   locations.push_back({"tankHull", tanks + "genericFuelTanks/genericFuelTank/hulls/hull", "tank_hull"});
+  locations.push_back({"hullSegment", tanks + "genericFuelTanks/genericFuelTank/hulls/hull/segments/segment",
+                       "fuselage_segment", true});
   locations.push_back({"fuelTank", tanks + "integralFuelTanks/integralFuelTank", "tank"});
 }
 
@@ -126,6 +128,7 @@ void addFuselageContents(const std::string& fuselage, std::vector<ComponentLocat
 void addModelTanks(std::vector<ComponentLocation>& locations) {
   locations.push_back({"fuelTank", "fuelTanks/fuelTank", "tank"});
   locations.push_back({"tankHull", "fuelTanks/fuelTank/vessels/vessel", "tank_hull"});
+  locations.push_back({"hullSegment", "fuelTanks/fuelTank/vessels/vessel/segments/segment", "fuselage_segment", true});
   addBodyStructure("fuelTanks/fuelTank/vessels/vessel/structure", locations);
 }
 
@@ -141,6 +144,7 @@ std::vector<ComponentLocation> catalogue() {
       {"rotor", "rotors/rotor", "rotor"},
       {"duct", "ducts/duct", "duct"},
       {"duct", "ducts/ductAssembly", "duct"},
+      {"ductSegment", "ducts/duct/segments/segment", "fuselage_segment", true},
       {"genericGeometryComponent", "genericGeometryComponents/genericGeometryComponent", "external_object"},
       {"landingGear", "landingGears/landingGear", "landing_gear"},
       {"genericSystem", "systems/genericSystems/genericSystem", "generic_system"},

@@ -1,5 +1,6 @@
 #include "airshape/query/arguments.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "airshape/error.h"
@@ -31,6 +32,17 @@ double fractionArgument(const Json& query, const char* name) {
   if (value < 0.0 || value > 1.0)
     throw Error(ErrorCode::InvalidArgument, std::string(name) + " = " + Json(value).dump() + " is outside [0, 1]");
   return value;
+}
+
+std::array<double, 3> pointArgument(const Json& query, const char* name) {
+  const Json& value = required(query, name);
+  const bool threeNumbers = value.is_array() && value.size() == 3 &&
+                            std::all_of(value.begin(), value.end(), [](const Json& x) { return x.is_number(); });
+  if (!threeNumbers) throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be [x, y, z]");
+  const std::array<double, 3> point = {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+  if (!std::all_of(point.begin(), point.end(), [](double x) { return std::isfinite(x); }))
+    throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be finite");
+  return point;
 }
 
 std::string stringArgument(const Json& query, const char* name) {

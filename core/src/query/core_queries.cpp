@@ -11,6 +11,7 @@
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/query/arguments.h"
+#include "component_queries.h"
 #include "intersection_curves.h"
 
 namespace airshape::query {
@@ -90,6 +91,7 @@ void registerCoreQueries(QueryRegistry& registry) {
                 "uid, other, [other_mirrored], [deflection] -> [[[x,y,z], ...], ...]: where two solids meet, "
                 "as polylines",
                 intersectionCurves});
+  registerComponentQueries(registry);
 }
 
 }  // namespace airshape::query

@@ -2,14 +2,21 @@
 
 #include <BRepAdaptor_CompCurve.hxx>
 #include <BRepAlgoAPI_Section.hxx>
+#include <BRep_Tool.hxx>
 #include <GCPnts_QuasiUniformDeflection.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_HSequenceOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+
+#include <algorithm>
+#include <cmath>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/query/arguments.h"
 
 namespace airshape::query {
@@ -19,14 +26,18 @@ namespace {
 constexpr double kDefaultDeflection = 1e-3;
 constexpr double kChainingTolerance = 1e-6;
 
-/// The section edges chained into wires, each wire one connected piece of the curve.
-Handle(TopTools_HSequenceOfShape) connectedPieces(const TopoDS_Shape& section) {
-  Handle(TopTools_HSequenceOfShape) edges = new TopTools_HSequenceOfShape;
-  for (TopExp_Explorer explorer(section, TopAbs_EDGE); explorer.More(); explorer.Next())
-    edges->Append(explorer.Current());
-  Handle(TopTools_HSequenceOfShape) wires = new TopTools_HSequenceOfShape;
-  if (!edges->IsEmpty()) ShapeAnalysis_FreeBounds::ConnectEdgesToWires(edges, kChainingTolerance, false, wires);
-  return wires;
+/// Whether two lines are one: the same ends (either way round) and the same length.
+bool sameLine(const TopoDS_Wire& a, const TopoDS_Wire& b) {
+  TopoDS_Vertex a1, a2, b1, b2;
+  TopExp::Vertices(a, a1, a2);
+  TopExp::Vertices(b, b1, b2);
+  if (a1.IsNull() || b1.IsNull()) return false;
+  const auto near = [](const TopoDS_Vertex& p, const TopoDS_Vertex& q) {
+    return BRep_Tool::Pnt(p).Distance(BRep_Tool::Pnt(q)) <= kChainingTolerance;
+  };
+  const bool sameEnds = (near(a1, b1) && near(a2, b2)) || (near(a1, b2) && near(a2, b1));
+  const double lengthA = geometry::lengthOf(a), lengthB = geometry::lengthOf(b);
+  return sameEnds && std::abs(lengthA - lengthB) <= 1e-9 * std::max(1.0, lengthA);
 }
 
 Json polyline(const TopoDS_Wire& wire, double deflection) {
@@ -43,6 +54,27 @@ Json polyline(const TopoDS_Wire& wire, double deflection) {
 
 }  // namespace
 
+std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const TopoDS_Shape& second,
+                                           const std::string& names) {
+  BRepAlgoAPI_Section section(first, second, false);
+  section.Approximation(true);
+  section.Build();
+  if (!section.IsDone() || section.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the intersection of " + names + " could not be computed");
+  Handle(TopTools_HSequenceOfShape) edges = new TopTools_HSequenceOfShape;
+  for (TopExp_Explorer explorer(section.Shape(), TopAbs_EDGE); explorer.More(); explorer.Next())
+    edges->Append(explorer.Current());
+  Handle(TopTools_HSequenceOfShape) wires = new TopTools_HSequenceOfShape;
+  if (!edges->IsEmpty()) ShapeAnalysis_FreeBounds::ConnectEdgesToWires(edges, kChainingTolerance, false, wires);
+  std::vector<TopoDS_Wire> lines;
+  for (int i = 1; i <= wires->Length(); ++i) {
+    const TopoDS_Wire& wire = TopoDS::Wire(wires->Value(i));
+    if (std::none_of(lines.begin(), lines.end(), [&](const TopoDS_Wire& kept) { return sameLine(kept, wire); }))
+      lines.push_back(wire);
+  }
+  return lines;
+}
+
 Json intersectionCurves(Configuration& configuration, const Json& query) {
   const ComponentShapes& shapes = configuration.shapes();
   const TopoDS_Shape& first = shapes.shapeOf(configuration, stringArgument(query, "uid"));
@@ -54,15 +86,10 @@ Json intersectionCurves(Configuration& configuration, const Json& query) {
   const double deflection = query.contains("deflection") ? numberArgument(query, "deflection") : kDefaultDeflection;
   if (!(deflection > 0)) throw Error(ErrorCode::InvalidArgument, "deflection must be positive");
 
-  BRepAlgoAPI_Section section(first, second, false);
-  section.Approximation(true);
-  section.Build();
-  if (!section.IsDone() || section.HasErrors())
-    throw Error(ErrorCode::InvalidModel,
-                "the intersection of '" + stringArgument(query, "uid") + "' and '" + other + "' could not be computed");
   Json curves = Json::array();
-  const Handle(TopTools_HSequenceOfShape) pieces = connectedPieces(section.Shape());
-  for (int i = 1; i <= pieces->Length(); ++i) curves.push_back(polyline(TopoDS::Wire(pieces->Value(i)), deflection));
+  for (const TopoDS_Wire& line :
+       intersectionLines(first, second, "'" + stringArgument(query, "uid") + "' and '" + other + "'"))
+    curves.push_back(polyline(line, deflection));
   return curves;
 }
 

@@ -1,5 +1,11 @@
 #pragma once
 
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
+
 #include "airshape/query/query_registry.h"
 
 namespace airshape {
@@ -14,5 +20,11 @@ namespace airshape::query {
 /// the intersection, its points no farther than `deflection` (default 1 mm) from the
 /// exact curve. Two components that do not meet give [].
 Json intersectionCurves(Configuration& configuration, const Json& query);
+
+/// Where two shapes' boundaries meet (OCCT's section with approximated curves), its edges
+/// chained into lines: maximal runs of edges sharing end points, each line kept once.
+/// `names` says what was intersected, for the error when OCCT cannot compute it.
+std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const TopoDS_Shape& second,
+                                           const std::string& names);
 
 }  // namespace airshape::query

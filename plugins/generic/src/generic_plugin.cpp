@@ -13,6 +13,8 @@ class GenericPlugin final : public plugin::BasicPlugin {
   GenericPlugin()
       : BasicPlugin("generic", "0.1.0", "ducts, tanks, decks, systems and external objects (no builder yet)",
                     {{"duct", ""},
+                     {"ductSegment", ""},
+                     {"hullSegment", ""},
                      {"fuelTank", ""},
                      {"wingFuelTank", ""},
                      {"tankHull", ""},

@@ -9,7 +9,7 @@ class NacellePlugin final : public plugin::BasicPlugin {
  public:
   NacellePlugin()
       : BasicPlugin("nacelle", "0.1.0", "engine nacelles and pylons (no builder yet)",
-                    {{"engine", "engines/engine"}, {"enginePylon", "enginePylons/enginePylon"}}) {}
+                    {{"engine", ""}, {"enginePylon", ""}, {"pylonSegment", ""}}) {}
 };
 
 }  // namespace

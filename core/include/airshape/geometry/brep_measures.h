@@ -32,4 +32,11 @@ double signedAreaEnclosed(const TopoDS_Wire& wire, const gp_Dir& normal);
 /// 1e-9); 0 for null.
 double areaOf(const TopoDS_Shape& faces);
 
+/// The volume a shape encloses: its solids', plus that of every closed shell belonging to no
+/// solid (taken positive); open shells and loose faces enclose nothing.
+double enclosedVolume(const TopoDS_Shape& shape);
+
+/// The exact arc length of the edges of a shape (each edge once per occurrence).
+double lengthOf(const TopoDS_Shape& edges);
+
 }  // namespace airshape::geometry

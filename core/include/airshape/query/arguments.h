@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@ double numberArgument(const Json& query, const char* name);
 /// A number in [0, 1], such as eta, xsi or zeta.
 double fractionArgument(const Json& query, const char* name);
 std::string stringArgument(const Json& query, const char* name);
+/// A point or vector argument: [x, y, z] of finite numbers.
+std::array<double, 3> pointArgument(const Json& query, const char* name);
 
 /// Selects one of `uids` by a 1-based index or by uID, as the query protocol addresses
 /// components; `what` names the kind in messages ("wing"). Returns the 0-based index.

@@ -1,0 +1,99 @@
+#include "component_queries.h"
+
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Bnd_Box.hxx>
+#include <gp_Pln.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/geometry/brep_measures.h"
+#include "airshape/query/arguments.h"
+#include "intersection_curves.h"
+
+namespace airshape::query {
+
+namespace {
+
+/// The component a query's uID argument (`name`) names; an error for any other uID.
+const graph::Component& componentArgument(const Configuration& configuration, const Json& query, const char* name) {
+  const std::string uid = stringArgument(query, name);
+  const long index = configuration.components().find(uid);
+  if (index < 0) throw Error(ErrorCode::InvalidArgument, "no component with uID '" + uid + "'");
+  return configuration.components().components()[static_cast<std::size_t>(index)];
+}
+
+/// The shape of a component that has geometry: not the model, built, and not empty.
+const TopoDS_Shape& measuredShape(const Configuration& configuration, const graph::Component& component) {
+  if (component.nodeType == graph::kModelNodeType)
+    throw Error(ErrorCode::InvalidArgument, "'" + component.uid + "' is the model (type plane): it has no shape");
+  const TopoDS_Shape& shape = configuration.shapes().shapeOf(configuration, component.uid);
+  Bnd_Box box;
+  if (!shape.IsNull()) BRepBndLib::Add(shape, box);
+  if (box.IsVoid()) throw Error(ErrorCode::InvalidModel, "component '" + component.uid + "' has no geometry");
+  return shape;
+}
+
+Json componentType(Configuration& configuration, const Json& query) {
+  return componentArgument(configuration, query, "uid").typeName;
+}
+
+Json componentVolume(Configuration& configuration, const Json& query) {
+  return geometry::enclosedVolume(measuredShape(configuration, componentArgument(configuration, query, "uid")));
+}
+
+Json componentSurfaceArea(Configuration& configuration, const Json& query) {
+  return geometry::areaOf(measuredShape(configuration, componentArgument(configuration, query, "uid")));
+}
+
+/// The area of the component's section by an infinite plane: the faces the plane and the
+/// shape have in common (none for a shape without solids).
+Json crossSectionArea(Configuration& configuration, const Json& query) {
+  const TopoDS_Shape& shape = measuredShape(configuration, componentArgument(configuration, query, "uid"));
+  const auto point = pointArgument(query, "point");
+  const auto normal = pointArgument(query, "normal");
+  const gp_Vec direction(normal[0], normal[1], normal[2]);
+  if (direction.Magnitude() == 0.0) throw Error(ErrorCode::InvalidArgument, "the normal must not be zero");
+  const gp_Pln plane(gp_Pnt(point[0], point[1], point[2]), gp_Dir(direction));
+  BRepAlgoAPI_Common common(shape, BRepBuilderAPI_MakeFace(plane).Face());
+  if (!common.IsDone() || common.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the section of '" + stringArgument(query, "uid") + "' could not be computed");
+  return geometry::areaOf(common.Shape());
+}
+
+/// The lines where two components' shapes meet (QUERY-components §4).
+std::vector<TopoDS_Wire> linesOf(Configuration& configuration, const Json& query) {
+  const graph::Component& first = componentArgument(configuration, query, "uid1");
+  const graph::Component& second = componentArgument(configuration, query, "uid2");
+  if (first.uid == second.uid)
+    throw Error(ErrorCode::InvalidArgument, "uid1 and uid2 name the same component '" + first.uid + "'");
+  return intersectionLines(measuredShape(configuration, first), measuredShape(configuration, second),
+                           "'" + first.uid + "' and '" + second.uid + "'");
+}
+
+Json intersectionCount(Configuration& configuration, const Json& query) { return linesOf(configuration, query).size(); }
+
+Json intersectionLength(Configuration& configuration, const Json& query) {
+  double length = 0.0;
+  for (const TopoDS_Wire& line : linesOf(configuration, query)) length += geometry::lengthOf(line);
+  return length;
+}
+
+}  // namespace
+
+void registerComponentQueries(QueryRegistry& registry) {
+  registry.add(
+      {"component_type", "core", "uid -> the component's type (wing, wing_segment, plane, ...)", componentType});
+  registry.add(
+      {"component_volume", "core", "uid -> volume of the component's solids and closed shells", componentVolume});
+  registry.add(
+      {"component_surface_area", "core", "uid -> area of all faces of the component's shape", componentSurfaceArea});
+  registry.add({"cross_section_area", "core",
+                "uid, point, normal -> area of the component's section by the plane through point", crossSectionArea});
+  registry.add(
+      {"intersection_count", "core", "uid1, uid2 -> number of lines where the two shapes meet", intersectionCount});
+  registry.add({"intersection_length", "core", "uid1, uid2 -> total length of those lines", intersectionLength});
+}
+
+}  // namespace airshape::query

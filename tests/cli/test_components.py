@@ -1,0 +1,67 @@
+"""Every component is queryable (QUERY-components §1-§2, §4, §6): its type, and the exact
+measures of its shape, on files the test writes itself where the numbers have a closed form."""
+import json
+import math
+
+from conftest import EXAMPLE, airshape, query_answers as ask
+from test_fuselage import write_cylinders
+
+
+def answers(path, *queries):
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    return [json.loads(line) for line in result.stdout.splitlines()]
+
+
+def test_types_of_the_model_its_components_and_their_parts():
+    types = ask(EXAMPLE, *({"op": "component_type", "uid": uid} for uid in
+                           ("ExampleAircraft", "Fuselage", "FSeg2", "MainWing", "WSeg1")))
+    assert types == ["plane", "fuselage", "fuselage_segment", "wing", "wing_segment"]
+
+
+def test_measures_of_a_cylinder_and_its_segments(tmp_path):
+    path = tmp_path / "cylinders.xml"
+    write_cylinders(path)  # a cylinder of radius 1 and length 10 from x = 0, two segments
+    volume, area, segment, section, slanted = ask(
+        path, {"op": "component_volume", "uid": "Full"}, {"op": "component_surface_area", "uid": "Full"},
+        {"op": "component_volume", "uid": "FullG1"},
+        {"op": "cross_section_area", "uid": "Full", "point": [3, 0, 0], "normal": [2, 0, 0]},
+        {"op": "cross_section_area", "uid": "Full", "point": [5, 0, 0], "normal": [1, 0, 1]})
+    assert math.isclose(volume, math.pi * 10, rel_tol=1e-5), volume
+    assert math.isclose(area, 2 * math.pi * 10 + 2 * math.pi, rel_tol=1e-5), area  # caps included
+    assert math.isclose(segment, math.pi * 5, rel_tol=1e-5), segment
+    assert math.isclose(section, math.pi, rel_tol=1e-5), section
+    assert math.isclose(slanted, math.pi * math.sqrt(2), rel_tol=1e-5), slanted  # an ellipse with axes 1, sqrt 2
+
+
+def test_a_component_segment_and_its_segments_make_up_the_wing():
+    wing, first, second, box = ask(EXAMPLE, {"op": "component_volume", "uid": "MainWing"},
+                                   {"op": "component_volume", "uid": "WSeg1"},
+                                   {"op": "component_volume", "uid": "WSeg2"},
+                                   {"op": "bounding_box", "uid": "WSeg1"})
+    assert math.isclose(first + second, wing, rel_tol=1e-8), (first, second, wing)
+    assert box["min"][1] < box["max"][1]
+
+
+def test_where_the_wing_meets_the_fuselage():
+    count, length, reversed_length, curves = ask(
+        EXAMPLE, {"op": "intersection_count", "uid1": "MainWing", "uid2": "Fuselage"},
+        {"op": "intersection_length", "uid1": "MainWing", "uid2": "Fuselage"},
+        {"op": "intersection_length", "uid1": "Fuselage", "uid2": "MainWing"},
+        {"op": "intersection_curves", "uid": "MainWing", "other": "Fuselage", "deflection": 1e-5})
+    assert count == len(curves) >= 1
+    polyline = sum(math.dist(a, b) for line in curves for a, b in zip(line, line[1:]))
+    assert math.isclose(length, polyline, rel_tol=1e-3), (length, polyline)  # exact arc length, not chords
+    assert math.isclose(length, reversed_length, rel_tol=1e-7)  # the order does not matter
+
+
+def test_errors_name_what_is_wrong():
+    wrong = answers(EXAMPLE, {"op": "component_type", "uid": "Nobody"},
+                    {"op": "component_volume", "uid": "ExampleAircraft"},
+                    {"op": "cross_section_area", "uid": "Fuselage", "point": [1, 0, 0], "normal": [0, 0, 0]},
+                    {"op": "intersection_count", "uid1": "MainWing", "uid2": "MainWing"},
+                    {"op": "cross_section_area", "uid": "Fuselage", "point": [1, 0], "normal": [1, 0, 0]})
+    assert wrong[0] == {"error": "no component with uID 'Nobody'"}
+    assert "is the model (type plane): it has no shape" in wrong[1]["error"]
+    assert wrong[2] == {"error": "the normal must not be zero"}
+    assert "same component" in wrong[3]["error"]
+    assert wrong[4] == {"error": "argument 'point' must be [x, y, z]"}
