@@ -13,7 +13,10 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
   for (const auto& loaded : host.plugins()) {
     std::cout << '\n'
               << loaded.plugin->name() << ' ' << loaded.plugin->version() << " - " << loaded.plugin->description()
-              << "\n  file:       " << loaded.file << "\n  node types:";
+              << "\n  file:       " << loaded.file;
+    for (const plugin::Requirement& requirement : loaded.plugin->requirements())
+      std::cout << "\n  requires:   " << requirement.plugin << plugin::describeRange(requirement);
+    std::cout << "\n  node types:";
     for (const auto& type : loaded.nodeTypes) std::cout << ' ' << type.name;
     std::cout << "\n  query ops: ";
     for (const query::Op* op : host.queries().ops())

@@ -64,6 +64,35 @@ def test_third_party_node_type_and_op_appear(tmp_path, third_party):
     assert box == {"error": "no builder yet for landingGear"}, "a component type nobody builds says so"
 
 
+def test_a_plugin_that_builds_on_the_wing_plugin_uses_its_interface(tmp_path, third_party):
+    folder = plugin_folder(tmp_path, third_party, "wing_tip")
+    env = {"AIRSHAPE_PLUGIN_PATH": str(folder)}
+    listing = airshape("plugins", env=env)
+    assert listing.returncode == 0 and listing.stderr == "", listing.stderr
+    assert "wingtip 0.3.0" in listing.stdout and "requires:   wing (version >= 0.1.0, < 1.0.0)" in listing.stdout
+    segment = ('<componentSegments><componentSegment uID="CS"><name>cs</name><fromElementUID>WS1_E1</fromElementUID>'
+               '<toElementUID>WS3_E1</toElementUID></componentSegment></componentSegments></wing>')
+    aircraft = tmp_path / "with-segment.xml"
+    aircraft.write_text(open(EXAMPLE).read().replace("</wing>", segment, 1))
+    answer = airshape("query", str(aircraft), env=env, stdin='{"op":"component_segment_tip","component_segment":"CS"}\n'
+                      '{"op":"wing_chord_point","wing":1,"segment":2,"eta":1,"xsi":0}\n')
+    tip, chord = (json.loads(line)["ok"] for line in answer.stdout.splitlines())
+    assert all(abs(a - b) < 1e-12 for a, b in zip(tip, chord)), (tip, chord)
+
+
+def test_a_plugin_whose_requirement_is_missing_or_too_old_is_refused_alone(tmp_path, third_party):
+    folder = plugin_folder(tmp_path, third_party, "wing_tip_future", "wing_tip_orphan")
+    result = airshape("plugins", env={"AIRSHAPE_PLUGIN_PATH": str(folder)})
+    assert result.returncode == 0
+    messages = result.stderr.strip().splitlines()
+    assert len(messages) == 2, messages
+    assert any("plugin wingtip requires plugin wing (version >= 9.0, < 1.0.0), but version 0.1.0 is loaded; skipped"
+               in m for m in messages), messages
+    assert any("plugin wingtip requires plugin nosuch (version >= 0.1.0, < 1.0.0), which is not loaded; skipped"
+               in m for m in messages), messages
+    assert "wing 0.1.0" in result.stdout and "wingtip" not in result.stdout
+
+
 def test_bad_plugins_get_one_message_each_and_the_rest_works(tmp_path, third_party):
     folder = plugin_folder(tmp_path, third_party, "landing_gear_old_abi", "wing_claimer")
     (folder / "libbroken.so").write_bytes(b"\x7fELF this is not a shared object")
@@ -73,7 +102,7 @@ def test_bad_plugins_get_one_message_each_and_the_rest_works(tmp_path, third_par
     assert result.returncode == 0
     messages = result.stderr.strip().splitlines()
     assert any("libbroken.so: cannot be loaded as a plugin" in m for m in messages), messages
-    assert any("built for plugin ABI version 999, this core has 4" in m for m in messages), messages
+    assert any("built for plugin ABI version 999, this core has 5" in m for m in messages), messages
     assert any("claims node type 'wing', which plugin wing builds already" in m for m in messages), messages
     assert "wing 0.1.0" in result.stdout and "wing_count" in result.stdout
     query = airshape("query", EXAMPLE, stdin='{"op":"wing_count"}\n', env={"AIRSHAPE_PLUGIN_PATH": str(folder)})

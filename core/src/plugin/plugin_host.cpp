@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include <boost/dll/import.hpp>
@@ -30,24 +31,63 @@ std::vector<fs::path> sortedEntries(const fs::path& folder) {
   return entries;
 }
 
+/// A version's numbers: "0.10.2" -> {0, 10, 2}; what is no number counts as 0.
+std::vector<long> versionNumbers(const std::string& version) {
+  std::vector<long> numbers;
+  std::stringstream parts(version);
+  for (std::string part; std::getline(parts, part, '.');) numbers.push_back(std::strtol(part.c_str(), nullptr, 10));
+  return numbers;
+}
+
+/// -1, 0 or 1 as version a comes before, with or after version b (missing numbers are 0).
+int compareVersions(const std::string& a, const std::string& b) {
+  std::vector<long> x = versionNumbers(a), y = versionNumbers(b);
+  x.resize(std::max(x.size(), y.size()), 0);
+  y.resize(x.size(), 0);
+  return x < y ? -1 : x > y ? 1 : 0;
+}
+
+bool versionInRange(const std::string& version, const Requirement& requirement) {
+  return (requirement.minimum.empty() || compareVersions(version, requirement.minimum) >= 0) &&
+         (requirement.below.empty() || compareVersions(version, requirement.below) < 0);
+}
+
 }  // namespace
 
+std::string describeRange(const Requirement& requirement) {
+  std::string bounds;
+  if (!requirement.minimum.empty()) bounds += ">= " + requirement.minimum;
+  if (!requirement.below.empty()) bounds += (bounds.empty() ? "< " : ", < ") + requirement.below;
+  return bounds.empty() ? "" : " (version " + bounds + ")";
+}
+
 PluginHost::PluginHost() { registerCoreQueries(queries_); }
+
+PluginHost::~PluginHost() {
+  shapes_ = ComponentShapes();  // builders and ops are plugin code too: they go first
+  queries_ = query::QueryRegistry();
+  services_ = ServiceRegistry();
+  pending_.clear();
+  while (!plugins_.empty()) plugins_.pop_back();
+}
 
 std::string PluginHost::coreLibraryFolder() { return boost::dll::this_line_location().parent_path().string(); }
 
 void PluginHost::loadDefaultPlugins() {
-  loadFolder(coreLibraryFolder(), false);
-  const char* extra = std::getenv("AIRSHAPE_PLUGIN_PATH");
-  if (extra == nullptr) return;
-  std::stringstream list(extra);
+  openFolder(coreLibraryFolder(), false);
+  if (const char* extra = std::getenv("AIRSHAPE_PLUGIN_PATH")) openPluginPath(extra);
+  registerReadyPlugins();
+}
+
+void PluginHost::openPluginPath(const std::string& path) {
+  std::stringstream list(path);
   for (std::string item; std::getline(list, item, ':');) {
     if (item.empty()) continue;
     std::error_code error;
     if (fs::is_directory(item, error)) {
-      loadFolder(item, true);
+      openFolder(item, true);
     } else if (fs::exists(item, error)) {
-      loadFile(item);
+      open(item);
     } else {
       messages_.push_back("AIRSHAPE_PLUGIN_PATH: " + item + ": no such file or folder");
     }
@@ -55,18 +95,31 @@ void PluginHost::loadDefaultPlugins() {
 }
 
 void PluginHost::loadFolder(const std::string& folder, bool anyName) {
+  openFolder(folder, anyName);
+  registerReadyPlugins();
+}
+
+void PluginHost::openFolder(const std::string& folder, bool anyName) {
   for (const fs::path& path : sortedEntries(folder)) {
     const std::string fileName = path.filename().string();
     if (!isSharedLibrary(path)) continue;
     if (!anyName && fileName.rfind(kBuiltInPrefix, 0) != 0) continue;
-    loadFile(path.string());
+    open(path.string());
   }
 }
 
 bool PluginHost::loadFile(const std::string& file) {
+  const bool opened = open(file);
+  registerReadyPlugins();
+  return opened && std::none_of(pending_.begin(), pending_.end(),
+                                [&](const LoadedPlugin& p) { return p.file == fs::weakly_canonical(file).string(); });
+}
+
+bool PluginHost::open(const std::string& file) {
   const std::string canonical = fs::weakly_canonical(file).string();
-  for (const auto& loaded : plugins_)
-    if (loaded.file == canonical) return true;  // the same file found twice
+  for (const auto* list : {&plugins_, &pending_})
+    for (const auto& loaded : *list)
+      if (loaded.file == canonical) return true;  // the same file found twice
   std::shared_ptr<Plugin> plugin;
   try {
     boost::dll::shared_library library(canonical, boost::dll::load_mode::rtld_lazy | boost::dll::load_mode::rtld_local);
@@ -90,17 +143,58 @@ bool PluginHost::loadFile(const std::string& file) {
     messages_.push_back(canonical + ": cannot be loaded as a plugin (" + std::string(error.what()) + "); skipped");
     return false;
   }
+  pending_.push_back({canonical, plugin, {}});
+  return true;
+}
 
-  LoadedPlugin loaded{canonical, plugin, {}};
+std::optional<std::string> PluginHost::unmetRequirement(const Plugin& plugin) const {
+  for (const Requirement& requirement : plugin.requirements()) {
+    const auto provider = std::find_if(plugins_.begin(), plugins_.end(), [&](const LoadedPlugin& loaded) {
+      return loaded.plugin->name() == requirement.plugin;
+    });
+    const std::string range = describeRange(requirement);
+    if (provider == plugins_.end()) return "requires plugin " + requirement.plugin + range + ", which is not loaded";
+    if (!versionInRange(provider->plugin->version(), requirement))
+      return "requires plugin " + requirement.plugin + range + ", but version " + provider->plugin->version() +
+             " is loaded";
+  }
+  return std::nullopt;
+}
+
+void PluginHost::registerReadyPlugins() {
+  // Plugins whose requirements are registered register in turn, until none is left that can.
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (auto candidate = pending_.begin(); candidate != pending_.end();) {
+      if (unmetRequirement(*candidate->plugin)) {
+        ++candidate;
+        continue;
+      }
+      LoadedPlugin ready = std::move(*candidate);
+      candidate = pending_.erase(candidate);
+      registerPlugin(std::move(ready));
+      progress = true;
+    }
+  }
+  for (const LoadedPlugin& refused : pending_)
+    messages_.push_back(refused.file + ": plugin " + refused.plugin->name() + " " + *unmetRequirement(*refused.plugin) +
+                        "; skipped");
+  pending_.clear();
+}
+
+void PluginHost::registerPlugin(LoadedPlugin loaded) {
+  const std::shared_ptr<Plugin>& plugin = loaded.plugin;
   for (const NodeType& type : plugin->nodeTypes()) {
     const std::string owner = pluginFor(type.name);
     if (!owner.empty()) {
-      messages_.push_back(canonical + ": plugin " + plugin->name() + " claims node type '" + type.name +
+      messages_.push_back(loaded.file + ": plugin " + plugin->name() + " claims node type '" + type.name +
                           "', which plugin " + owner + " builds already; the claim is ignored");
       continue;
     }
     loaded.nodeTypes.push_back(type);
   }
+  plugin->useServices(services_);
+  plugin->offerServices(services_);
   query::QueryRegistry ops;
   plugin->registerQueries(ops);
   for (const query::Op* op : ops.ops()) {
@@ -109,7 +203,7 @@ bool PluginHost::loadFile(const std::string& file) {
     try {
       queries_.add(std::move(copy));
     } catch (const Error& error) {
-      messages_.push_back(canonical + ": " + error.message());
+      messages_.push_back(loaded.file + ": " + error.message());
     }
   }
   ComponentShapes offered;
@@ -117,7 +211,6 @@ bool PluginHost::loadFile(const std::string& file) {
   for (const NodeType& type : loaded.nodeTypes)  // only for the node types it was granted
     if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
   plugins_.push_back(std::move(loaded));
-  return true;
 }
 
 std::vector<graph::ComponentLocation> PluginHost::componentLocations() const {

@@ -9,7 +9,8 @@ class ControlSurfacesPlugin final : public plugin::BasicPlugin {
  public:
   ControlSurfacesPlugin()
       : BasicPlugin("controlsurfaces", "0.1.0", "flaps, slats, ailerons and spoilers of wings (no builder yet)",
-                    {{"trailingEdgeDevice", ""}, {"leadingEdgeDevice", ""}, {"spoiler", ""}}) {}
+                    {{"trailingEdgeDevice", ""}, {"leadingEdgeDevice", ""}, {"spoiler", ""}},
+                    {{"wing", "0.1.0", "1.0.0"}}) {}
 };
 
 }  // namespace

@@ -26,7 +26,8 @@ class StructurePlugin final : public plugin::BasicPlugin {
                      {"floorPanel", ""},
                      {"window", ""},
                      {"intercostal", ""},
-                     {"structuralMember", ""}}) {}
+                     {"structuralMember", ""}},
+                    {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}}) {}
 };
 
 }  // namespace

@@ -15,7 +15,9 @@
 #include "component_segment.h"
 #include "segment_locator.h"
 #include "wing_geometry.h"
+#include "wing_lookup.h"
 #include "wing_measures.h"
+#include "wing_services.h"
 #include "wing_shape.h"
 
 namespace airshape::wing {
@@ -31,14 +33,6 @@ schema::WingType& selectWing(const Configuration& configuration, const Json& que
   if (named != query.end() && named->is_string())  // a uID: says why it is not there, if it is not
     model::findByUid(configuration, model, model.wings, named->get<std::string>(), "wing");
   return *model.wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(model.wings), "wing")];
-}
-
-/// The wing (or rotor blade) that a part of it (a segment, a component segment) lies in.
-const schema::WingType& wingHolding(const Configuration& configuration, const std::string& partUid) {
-  const graph::ComponentGraph& graph = configuration.components();
-  const std::string& wingUid = graph.components()[static_cast<std::size_t>(graph.find(partUid))].parentUid;
-  const model::ModelComponents& model = model::modelHolding(configuration, wingUid);
-  return model::findByUid(configuration, model, model.wings, wingUid, "wing");
 }
 
 std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? wing.segments->segment.size() : 0; }
@@ -96,13 +90,14 @@ class WingPlugin final : public plugin::BasicPlugin {
     });
     shapes.add("wingComponentSegment", [](const Configuration& c, const std::string& uid) {
       const schema::WingType& wing = wingHolding(c, uid);
-      const schema::ComponentSegmentType* definition = nullptr;
-      for (const auto& candidate : wing.componentSegments->componentSegment)
-        if (candidate.uID == uid) definition = &candidate;
-      const ComponentSegment segment(*WingGeometry::of(c, wing), *definition);
+      const ComponentSegment segment(*WingGeometry::of(c, wing), componentSegmentNamed(wing, uid));
       const auto [first, last] = std::minmax_element(segment.segments().begin(), segment.segments().end());
       return WingShape::of(c, wing)->solidOf(*first, *last);
     });
+  }
+
+  void offerServices(plugin::ServiceRegistry& services) const override {
+    services.offer<WingServices>(kWingServices, makeWingServices());
   }
 
   WingPlugin()

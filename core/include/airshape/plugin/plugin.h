@@ -8,13 +8,14 @@
 
 #include "airshape/component_shapes.h"
 #include "airshape/graph/component_graph.h"
+#include "airshape/plugin/services.h"
 #include "airshape/query/query_registry.h"
 
 /// The plugin ABI of this core. A plugin records the value of the headers it was built
 /// against; the host refuses plugins whose value differs from its own. Raise it whenever
 /// a change to Plugin, QueryRegistry, Configuration or the generated model breaks plugins.
 #ifndef AIRSHAPE_PLUGIN_ABI_VERSION
-#define AIRSHAPE_PLUGIN_ABI_VERSION 4
+#define AIRSHAPE_PLUGIN_ABI_VERSION 5
 #endif
 
 namespace airshape::plugin {
@@ -23,6 +24,14 @@ namespace airshape::plugin {
 struct NodeType {
   std::string name;         ///< e.g. "wing"
   std::string pathInModel;  ///< e.g. "wings/wing", relative to /cpacs/vehicles/aircraft/model
+};
+
+/// A plugin another one builds on, in the versions it works with: minimum <= version < below
+/// (versions compare number by number: 0.10.0 comes after 0.9.2; an empty bound is open).
+struct Requirement {
+  std::string plugin;
+  std::string minimum;
+  std::string below;
 };
 
 /// What every plugin implements. See docs/plugins.md for the contract.
@@ -39,6 +48,14 @@ class Plugin {
   virtual void registerQueries(query::QueryRegistry& registry) const = 0;
   /// Adds the builders of the solids of its node types (those it was granted are kept).
   virtual void registerShapeBuilders(ComponentShapes& /*shapes*/) const {}
+  /// The plugins this one builds on: the host loads them first and refuses this one, with one
+  /// line, when one is missing or of a version outside the range.
+  virtual std::vector<Requirement> requirements() const { return {}; }
+  /// Offers what other plugins may use of this one (its public interface).
+  virtual void offerServices(ServiceRegistry& /*services*/) const {}
+  /// Receives what the plugins loaded before it offer (those it requires among them), before
+  /// its queries and builders are registered.
+  virtual void useServices(const ServiceRegistry& /*services*/) {}
 };
 
 /// The plugin ABI version a plugin was compiled with (exported by AIRSHAPE_PLUGIN).

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+
+#include <TopoDS_Shape.hxx>
+#include <gp_Pnt.hxx>
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::wing {
+
+/// What the wing plugin offers the plugins that build on wings (control surfaces, structure,
+/// a third party's): the wing geometry, by uID, in the global frame. It is offered as the
+/// service named kWingServices; a plugin that uses it requires the wing plugin and takes it
+/// in Plugin::useServices (docs/plugins.md). Errors are airshape::Error naming the node.
+class WingServices {
+ public:
+  virtual ~WingServices() = default;
+
+  /// The surfaces of a wing a point can lie on.
+  enum class Surface { Upper, Lower, Chord };
+
+  /// The clean solid of a wing or rotor blade: no cut-outs, devices at rest.
+  virtual const TopoDS_Shape& cleanSolid(const Configuration& configuration, const std::string& wingUid) const = 0;
+
+  /// The point at component-segment coordinates (eta, xsi), both in [0, 1], on a surface of
+  /// the wing that holds the component segment.
+  virtual gp_Pnt componentSegmentPoint(const Configuration& configuration, const std::string& componentSegmentUid,
+                                       double eta, double xsi, Surface surface) const = 0;
+};
+
+/// The name the wing plugin offers WingServices under; the number is the interface's version.
+inline constexpr const char* kWingServices = "airshape.wing.WingServices/1";
+
+}  // namespace airshape::wing
