@@ -3,7 +3,7 @@ measures of its shape, on files the test writes itself where the numbers have a 
 import json
 import math
 
-from conftest import EXAMPLE, airshape, query_answers as ask
+from conftest import EXAMPLE, airshape, conformance_passed, query_answers as ask
 from test_fuselage import write_cylinders
 
 
@@ -65,3 +65,11 @@ def test_errors_name_what_is_wrong():
     assert wrong[2] == {"error": "the normal must not be zero"}
     assert "same component" in wrong[3]["error"]
     assert wrong[4] == {"error": "argument 'point' must be [x, y, z]"}
+
+
+def test_component_conformance_does_not_regress():
+    passed, output = conformance_passed("cases-components.json")
+    # 76 of 1471 do not pass yet: components of plugins without builders (duct and tank
+    # segments), component segments' volumes and areas, two intersection lengths
+    # (docs/conformance.md). This floor guards what works.
+    assert passed >= 1395, output[-3000:]
