@@ -39,11 +39,17 @@ def plugin_folder(tmp_path, build, *names):
     return folder
 
 
-def test_third_party_node_type_and_op_appear(tmp_path, third_party):
-    folder = plugin_folder(tmp_path, third_party, "landing_gear")
-    env = {"AIRSHAPE_PLUGIN_PATH": str(folder)}
+def loaded_cleanly(tmp_path, build, name):
+    """The environment that loads one third-party plugin, and `airshape plugins` under it,
+    which must have loaded every plugin without a message."""
+    env = {"AIRSHAPE_PLUGIN_PATH": str(plugin_folder(tmp_path, build, name))}
     listing = airshape("plugins", env=env)
     assert listing.returncode == 0 and listing.stderr == "", listing.stderr
+    return env, listing
+
+
+def test_third_party_node_type_and_op_appear(tmp_path, third_party):
+    env, listing = loaded_cleanly(tmp_path, third_party, "landing_gear")
     assert "landinggear 1.2.3" in listing.stdout and "landingGear" in listing.stdout
     assert "landing_gear_count" in listing.stdout
     gear = ('<landingGears><landingGear uID="NoseGear"><name>n</name><parentUID>Fuselage</parentUID>'
@@ -65,10 +71,7 @@ def test_third_party_node_type_and_op_appear(tmp_path, third_party):
 
 
 def test_a_plugin_that_builds_on_the_wing_plugin_uses_its_interface(tmp_path, third_party):
-    folder = plugin_folder(tmp_path, third_party, "wing_tip")
-    env = {"AIRSHAPE_PLUGIN_PATH": str(folder)}
-    listing = airshape("plugins", env=env)
-    assert listing.returncode == 0 and listing.stderr == "", listing.stderr
+    env, listing = loaded_cleanly(tmp_path, third_party, "wing_tip")
     assert "wingtip 0.3.0" in listing.stdout and "requires:   wing (version >= 0.1.0, < 1.0.0)" in listing.stdout
     segment = ('<componentSegments><componentSegment uID="CS"><name>cs</name><fromElementUID>WS1_E1</fromElementUID>'
                '<toElementUID>WS3_E1</toElementUID></componentSegment></componentSegments></wing>')
