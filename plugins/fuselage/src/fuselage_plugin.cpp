@@ -7,6 +7,7 @@
 #include "airshape/model/primary_model.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
+#include "airshape/query/model_selection.h"
 #include "fuselage_geometry.h"
 
 namespace airshape::fuselage {
@@ -17,11 +18,8 @@ namespace {
 
 /// The fuselage a query names by index or uID, in the model queries address (the first one).
 schema::FuselageType& selectFuselage(const Configuration& configuration, const Json& query) {
-  const model::ModelComponents& model = model::primaryModel(configuration);
-  const auto named = query.find("fuselage");
-  if (named != query.end() && named->is_string())  // a uID: says why it is not there, if it is not
-    model::findByUid(configuration, model, model.fuselages, named->get<std::string>(), "fuselage");
-  return *model.fuselages[query::selectByIndexOrUid(query, "fuselage", model::uidsOf(model.fuselages), "fuselage")];
+  return query::selectInFirstModel(configuration, model::primaryModel(configuration).fuselages, query, "fuselage",
+                                   "fuselage");
 }
 
 std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {

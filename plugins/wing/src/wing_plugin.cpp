@@ -12,6 +12,7 @@
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
+#include "airshape/query/model_selection.h"
 #include "component_segment.h"
 #include "segment_locator.h"
 #include "wing_geometry.h"
@@ -28,11 +29,7 @@ namespace {
 
 /// The wing a query names by index or uID, in the model queries address (the first one).
 schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
-  const model::ModelComponents& model = model::primaryModel(configuration);
-  const auto named = query.find("wing");
-  if (named != query.end() && named->is_string())  // a uID: says why it is not there, if it is not
-    model::findByUid(configuration, model, model.wings, named->get<std::string>(), "wing");
-  return *model.wings[query::selectByIndexOrUid(query, "wing", model::uidsOf(model.wings), "wing")];
+  return query::selectInFirstModel(configuration, model::primaryModel(configuration).wings, query, "wing", "wing");
 }
 
 std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? wing.segments->segment.size() : 0; }

@@ -1,0 +1,58 @@
+#include "device_list.h"
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/model/primary_model.h"
+
+namespace airshape::controlsurfaces {
+
+namespace {
+
+template <class Node>
+Device deviceOf(const Node& node, Device::Kind kind) {
+  return {kind, node.uID, node.xpath, node.path ? &*node.path : nullptr};
+}
+
+/// Every device of a wing, spoilers too, in the protocol's order (spoilers after the others
+/// of their component segment).
+std::vector<Device> allDevicesOf(const schema::WingType& wing, bool withSpoilers) {
+  std::vector<Device> devices;
+  if (!wing.componentSegments) return devices;
+  for (const auto& segment : wing.componentSegments->componentSegment) {
+    if (!segment.controlSurfaces) continue;
+    const schema::ControlSurfacesType& surfaces = *segment.controlSurfaces;
+    if (surfaces.trailingEdgeDevices)
+      for (const auto& device : surfaces.trailingEdgeDevices->trailingEdgeDevice)
+        devices.push_back(deviceOf(device, Device::Kind::TrailingEdge));
+    if (surfaces.leadingEdgeDevices)
+      for (const auto& device : surfaces.leadingEdgeDevices->leadingEdgeDevice)
+        devices.push_back(deviceOf(device, Device::Kind::LeadingEdge));
+    if (withSpoilers && surfaces.spoilers)
+      for (const auto& device : surfaces.spoilers->spoiler) devices.push_back(deviceOf(device, Device::Kind::Spoiler));
+  }
+  return devices;
+}
+
+}  // namespace
+
+std::vector<Device> countedDevicesOf(const schema::WingType& wing) { return allDevicesOf(wing, false); }
+
+Device deviceNamed(const Configuration& configuration, const std::string& uid) {
+  for (const schema::WingType* wing : model::primaryModel(configuration).wings)
+    for (const Device& device : allDevicesOf(*wing, true))
+      if (device.uid == uid) return device;
+  throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");
+}
+
+const char* kindName(Device::Kind kind) {
+  switch (kind) {
+    case Device::Kind::TrailingEdge:
+      return "trailing_edge_device";
+    case Device::Kind::LeadingEdge:
+      return "leading_edge_device";
+    default:
+      return "spoiler";
+  }
+}
+
+}  // namespace airshape::controlsurfaces

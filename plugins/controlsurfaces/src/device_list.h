@@ -1,0 +1,35 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::controlsurfaces {
+
+/// A control device of a wing as the schema gives it.
+struct Device {
+  enum class Kind { TrailingEdge, LeadingEdge, Spoiler };
+  Kind kind = Kind::TrailingEdge;
+  std::string uid;
+  std::string xpath;
+  const schema::ControlSurfacePathType* path = nullptr;  ///< its steps and hinge points, if given
+};
+
+/// The counted devices of a wing in the order of the query protocol (QUERY-components §3.1):
+/// its component segments in document order, in each first the trailing-edge devices, then
+/// the leading-edge devices. Spoilers are not counted.
+std::vector<Device> countedDevicesOf(const schema::WingType& wing);
+
+/// The device (spoilers included) with this uID in the first model; throws Error when the uID
+/// names no device.
+Device deviceNamed(const Configuration& configuration, const std::string& uid);
+
+/// The protocol's name of a device's kind: trailing_edge_device, leading_edge_device, spoiler.
+const char* kindName(Device::Kind kind);
+
+}  // namespace airshape::controlsurfaces
