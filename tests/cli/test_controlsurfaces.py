@@ -57,3 +57,11 @@ def test_kinds_and_control_parameter_ranges(tmp_path):
     assert answers[4]["ok"] == {"min": 25, "max": -25}, "first and last step, in document order"
     assert answers[5] == {"error": "no control surface with uID 'MainWing'"}
     assert "trailingEdgeDevice[2]/path: the control surface has no path steps" in answers[6]["error"]
+
+
+def test_spoilers_are_counted_on_their_own(tmp_path):
+    answers = ask(tmp_path, {"op": "spoiler_count", "wing": 1}, {"op": "spoiler_uid", "wing": 1, "index": 1},
+                  {"op": "spoiler_uid", "wing": 1, "index": 2}, {"op": "control_surface_uid", "wing": 1, "index": "Flap"})
+    assert answers[0] == {"ok": 1} and answers[1] == {"ok": "Spoiler"}
+    assert "out of range" in answers[2]["error"]
+    assert answers[3] == {"error": "argument 'index' must be a 1-based integer"}

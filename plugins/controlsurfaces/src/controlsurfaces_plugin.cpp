@@ -18,6 +18,15 @@ const schema::WingType& selectWing(const Configuration& configuration, const Jso
   return query::selectInFirstModel(configuration, model::primaryModel(configuration).wings, query, "wing", "wing");
 }
 
+/// The uID of the device a query's 1-based `index` names among `devices`.
+std::string nthUid(const std::vector<Device>& devices, const Json& query, const std::string& kind) {
+  std::vector<std::string> uids;
+  for (const Device& device : devices) uids.push_back(device.uid);
+  if (!query.contains("index") || !query.at("index").is_number_integer())
+    throw Error(ErrorCode::InvalidArgument, "argument 'index' must be a 1-based integer");
+  return uids[query::selectByIndexOrUid(query, "index", uids, kind)];
+}
+
 /// The control parameters of a device's first and last step (QUERY-components §3.3).
 Json parameterRange(const Device& device) {
   if (device.path == nullptr || !device.path->steps || device.path->steps->step.empty())
@@ -38,11 +47,13 @@ class ControlSurfacesPlugin final : public plugin::BasicPlugin {
                   [](Configuration& c, const Json& q) -> Json { return countedDevicesOf(selectWing(c, q)).size(); }});
     registry.add({"control_surface_uid", "", "wing, index -> uID of the wing's index-th device",
                   [](Configuration& c, const Json& q) -> Json {
-                    const std::vector<Device> devices = countedDevicesOf(selectWing(c, q));
-                    std::vector<std::string> uids;
-                    for (const Device& device : devices) uids.push_back(device.uid);
-                    return devices[query::selectByIndexOrUid(q, "index", uids, "control surface")].uid;
+                    return nthUid(countedDevicesOf(selectWing(c, q)), q, "control surface");
                   }});
+    registry.add({"spoiler_count", "", "wing -> number of spoilers",
+                  [](Configuration& c, const Json& q) -> Json { return spoilersOf(selectWing(c, q)).size(); }});
+    registry.add(
+        {"spoiler_uid", "", "wing, index -> uID of the wing's index-th spoiler",
+         [](Configuration& c, const Json& q) -> Json { return nthUid(spoilersOf(selectWing(c, q)), q, "spoiler"); }});
     registry.add({"control_surface_type", "", "uid -> trailing_edge_device, leading_edge_device or spoiler",
                   [](Configuration& c, const Json& q) -> Json {
                     return kindName(deviceNamed(c, query::stringArgument(q, "uid")).kind);

@@ -37,6 +37,13 @@ std::vector<Device> allDevicesOf(const schema::WingType& wing, bool withSpoilers
 
 std::vector<Device> countedDevicesOf(const schema::WingType& wing) { return allDevicesOf(wing, false); }
 
+std::vector<Device> spoilersOf(const schema::WingType& wing) {
+  std::vector<Device> spoilers;
+  for (const Device& device : allDevicesOf(wing, true))
+    if (device.kind == Device::Kind::Spoiler) spoilers.push_back(device);
+  return spoilers;
+}
+
 Device deviceNamed(const Configuration& configuration, const std::string& uid) {
   for (const schema::WingType* wing : model::primaryModel(configuration).wings)
     for (const Device& device : allDevicesOf(*wing, true))

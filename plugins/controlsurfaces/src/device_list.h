@@ -25,6 +25,9 @@ struct Device {
 /// the leading-edge devices. Spoilers are not counted.
 std::vector<Device> countedDevicesOf(const schema::WingType& wing);
 
+/// The spoilers of a wing: its component segments in document order, in each its spoilers.
+std::vector<Device> spoilersOf(const schema::WingType& wing);
+
 /// The device (spoilers included) with this uID in the first model; throws Error when the uID
 /// names no device.
 Device deviceNamed(const Configuration& configuration, const std::string& uid);
