@@ -39,23 +39,14 @@ std::vector<double> solidVolumes(const TopoDS_Shape& shape) {
   return volumes;
 }
 
-/// OCCT's readers convert what they read into the session unit: metres here, as a user of
-/// metre-based CPACS geometry sets it.
-void readInMetres() { Interface_Static::SetCVal("xstep.cascade.unit", "M"); }
-
-TopoDS_Shape readStep(const std::string& path) {
-  readInMetres();
-  STEPControl_Reader reader;
-  readInMetres();
-  EXPECT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone) << path;
-  reader.TransferRoots();
-  return reader.OneShape();
-}
-
-TopoDS_Shape readIges(const std::string& path) {
-  readInMetres();
-  IGESControl_Reader reader;
-  readInMetres();
+/// A STEP or IGES file read with OCCT's reader of that format in metres: the readers convert
+/// what they read into the session unit, which a user of metre-based CPACS geometry sets (the
+/// reader's constructor initialises its parameters, so it is set before and after it).
+template <class Reader>
+TopoDS_Shape readInMetres(const std::string& path) {
+  Interface_Static::SetCVal("xstep.cascade.unit", "M");
+  Reader reader;
+  Interface_Static::SetCVal("xstep.cascade.unit", "M");
   EXPECT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone) << path;
   reader.TransferRoots();
   return reader.OneShape();
@@ -156,7 +147,7 @@ TEST_F(CadExportReadBack, StepDeclaresMetresAndHoldsTheQueriedVolumes) {
   const std::string text = contents(path);
   EXPECT_NE(text.find("SI_UNIT($,.METRE.)"), std::string::npos);  // metres, no prefix
   EXPECT_EQ(text.find(".MILLI."), std::string::npos);
-  expectVolumesAsQueried(solidVolumes(readStep(path)));
+  expectVolumesAsQueried(solidVolumes(readInMetres<STEPControl_Reader>(path)));
 }
 
 TEST_F(CadExportReadBack, IgesDeclaresMetresAndHoldsTheQueriedVolumes) {
@@ -165,7 +156,7 @@ TEST_F(CadExportReadBack, IgesDeclaresMetresAndHoldsTheQueriedVolumes) {
   ASSERT_GE(global.size(), 15u);
   EXPECT_EQ(global[13], "6");  // parameter 14, the unit flag: 6 is metres
   EXPECT_EQ(global[14], "M");  // parameter 15, the unit's name
-  expectVolumesAsQueried(solidVolumes(readIges(path)));
+  expectVolumesAsQueried(solidVolumes(readInMetres<IGESControl_Reader>(path)));
 }
 
 TEST_F(CadExportReadBack, BrepHoldsTheQueriedVolumes) {
