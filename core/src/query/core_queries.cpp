@@ -11,19 +11,13 @@
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/query/arguments.h"
+#include "airshape/query/box_answer.h"
 #include "component_queries.h"
 #include "intersection_curves.h"
 
 namespace airshape::query {
 
 namespace {
-
-/// The tight box of a shape (from its exact geometry, not its control points).
-Bnd_Box tightBox(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::AddOptimal(shape, box, false, false);
-  return box;
-}
 
 /// The box of the mirror image about a coordinate plane: the box mirrored.
 Bnd_Box mirrored(const Bnd_Box& box, const std::string& symmetry) {
@@ -37,15 +31,9 @@ Bnd_Box mirrored(const Bnd_Box& box, const std::string& symmetry) {
   return result;
 }
 
-Json asJson(const Bnd_Box& box) {
-  double x1, y1, z1, x2, y2, z2;
-  box.Get(x1, y1, z1, x2, y2, z2);
-  return {{"min", {x1, y1, z1}}, {"max", {x2, y2, z2}}};
-}
-
 Json boundingBox(Configuration& configuration, const Json& query) {
   if (query.contains("uid"))
-    return asJson(tightBox(configuration.shapes().shapeOf(configuration, stringArgument(query, "uid"))));
+    return boxAnswer(tightBox(configuration.shapes().shapeOf(configuration, stringArgument(query, "uid"))));
   // The whole configuration, mirrored halves included: every component a plugin builds.
   Bnd_Box all;
   for (const auto& component : configuration.components().components()) {
@@ -56,7 +44,7 @@ Json boundingBox(Configuration& configuration, const Json& query) {
     if (symmetry != "none") all.Add(mirrored(box, symmetry));
   }
   if (all.IsVoid()) throw Error(ErrorCode::NotImplemented, "no builder yet for any component of the configuration");
-  return asJson(all);
+  return boxAnswer(all);
 }
 
 }  // namespace

@@ -1,18 +1,26 @@
 // The control-surface plugin: leading- and trailing-edge devices and spoilers of wing
-// component segments. It answers the device ops that need no geometry (count, uIDs, kinds,
-// control parameter ranges); it builds no device geometry yet.
+// component segments. It builds each device from its wing, through the wing plugin's public
+// interface (airshape/wing/wing_services.h), and answers the device ops of the query
+// protocol (QUERY-components §3).
+#include <BRepBuilderAPI_Transform.hxx>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
+#include "airshape/query/box_answer.h"
 #include "airshape/query/model_selection.h"
+#include "device_geometry.h"
 #include "device_list.h"
+#include "hinge_motion.h"
 
 namespace airshape::controlsurfaces {
 namespace {
 
 using query::Json;
+using Services = std::shared_ptr<const wing::WingServices>;
 
 const schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
   return query::selectInFirstModel(configuration, model::primaryModel(configuration).wings, query, "wing", "wing");
@@ -27,22 +35,48 @@ std::string nthUid(const std::vector<Device>& devices, const Json& query, const 
   return uids[query::selectByIndexOrUid(query, "index", uids, kind)];
 }
 
-/// The control parameters of a device's first and last step (QUERY-components §3.3).
-Json parameterRange(const Device& device) {
-  if (device.path == nullptr || !device.path->steps || device.path->steps->step.empty())
-    throw Error(ErrorCode::InvalidModel, "the control surface has no path steps", {}, device.xpath + "/path");
-  const auto& steps = device.path->steps->step;
-  return {{"min", steps[0].controlParameter}, {"max", steps[steps.size() - 1].controlParameter}};
+/// The control parameter a device holds when asked for `p`: the reference ignores changes of
+/// at most 1e-6 from the device's initial value (0, clamped to the range).
+double heldParameter(const DeviceGeometry& device, double p) {
+  const auto [first, last] = device.parameterRange();
+  const double initial = std::clamp(0.0, std::min(first, last), std::max(first, last));
+  return std::abs(p - initial) <= 1e-6 ? initial : p;
+}
+
+Json motionJson(double p, const gp_Trsf& motion) {
+  Json rows = Json::array();
+  for (int row = 1; row <= 3; ++row)
+    rows.push_back({motion.Value(row, 1), motion.Value(row, 2), motion.Value(row, 3), motion.Value(row, 4)});
+  return {{"control_parameter", p}, {"rotation", rotationAngle(motion)}, {"matrix", rows}};
 }
 
 class ControlSurfacesPlugin final : public plugin::BasicPlugin {
  public:
   ControlSurfacesPlugin()
-      : BasicPlugin("controlsurfaces", "0.1.0", "flaps, slats, ailerons and spoilers of wings (no geometry yet)",
+      : BasicPlugin("controlsurfaces", "0.2.0", "flaps, slats, ailerons and spoilers of wings",
                     {{"trailingEdgeDevice", ""}, {"leadingEdgeDevice", ""}, {"spoiler", ""}},
                     {{"wing", "0.1.0", "1.0.0"}}) {}
 
+  void useServices(const plugin::ServiceRegistry& services) override {
+    wing_ = services.find<wing::WingServices>(wing::kWingServices);
+  }
+
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    const Services wing = wing_;
+    const ShapeBuilder atRest = [wing](const Configuration& c, const std::string& uid) {
+      return DeviceGeometry(c, *wing, deviceInAnyModel(c, uid)).atRest();
+    };
+    for (const char* type : {"trailingEdgeDevice", "leadingEdgeDevice", "spoiler"}) shapes.add(type, atRest);
+  }
+
   void registerQueries(query::QueryRegistry& registry) const override {
+    registerListing(registry);
+    registerMotion(registry);
+  }
+
+ private:
+  /// The ops that need no geometry: counts, uIDs, kinds, ranges.
+  static void registerListing(query::QueryRegistry& registry) {
     registry.add({"control_surface_count", "", "wing -> number of trailing- and leading-edge devices (no spoilers)",
                   [](Configuration& c, const Json& q) -> Json { return countedDevicesOf(selectWing(c, q)).size(); }});
     registry.add({"control_surface_uid", "", "wing, index -> uID of the wing's index-th device",
@@ -61,9 +95,45 @@ class ControlSurfacesPlugin final : public plugin::BasicPlugin {
     registry.add({"control_surface_parameter_range", "",
                   "uid -> {min, max}: control parameters of its first and last step",
                   [](Configuration& c, const Json& q) -> Json {
-                    return parameterRange(deviceNamed(c, query::stringArgument(q, "uid")));
+                    const auto [first, last] = parameterRangeOf(deviceNamed(c, query::stringArgument(q, "uid")));
+                    return Json{{"min", first}, {"max", last}};
                   }});
   }
+
+  /// The ops of a deflected device: its rigid motion and the measures of its moved shape.
+  void registerMotion(query::QueryRegistry& registry) const {
+    const Services wing = wing_;
+    // The device a query names and the control parameter it holds (within its range).
+    auto deflected = [wing](Configuration& c, const Json& q) {
+      const DeviceGeometry device(c, *wing, deviceNamed(c, query::stringArgument(q, "uid")));
+      const double p = heldParameter(device, query::numberArgument(q, "control_parameter"));
+      return std::make_pair(p, device.motionAt(p));
+    };
+    // The device's shape at rest moved by its motion at the query's control parameter.
+    auto movedShape = [deflected](Configuration& c, const Json& q) {
+      const gp_Trsf motion = deflected(c, q).second;
+      const TopoDS_Shape& rest = c.shapes().shapeOf(c, query::stringArgument(q, "uid"));
+      return BRepBuilderAPI_Transform(rest, motion, true).Shape();
+    };
+    registry.add({"control_surface_deflection", "",
+                  "uid, control_parameter -> {control_parameter, rotation, matrix}: the device's rigid motion",
+                  [deflected](Configuration& c, const Json& q) -> Json {
+                    const auto [p, motion] = deflected(c, q);
+                    return motionJson(p, motion);
+                  }});
+    registry.add({"control_surface_bounding_box", "", "uid, control_parameter -> {min, max} of the deflected device",
+                  [movedShape](Configuration& c, const Json& q) -> Json {
+                    return query::boxAnswer(query::tightBox(movedShape(c, q)));
+                  }});
+    registry.add(
+        {"control_surface_volume", "", "uid, control_parameter -> volume of the deflected device",
+         [movedShape](Configuration& c, const Json& q) -> Json { return geometry::enclosedVolume(movedShape(c, q)); }});
+    registry.add(
+        {"control_surface_surface_area", "", "uid, control_parameter -> area of the deflected device",
+         [movedShape](Configuration& c, const Json& q) -> Json { return geometry::areaOf(movedShape(c, q)); }});
+  }
+
+  Services wing_;
 };
 
 }  // namespace

@@ -9,8 +9,22 @@ namespace airshape::controlsurfaces {
 namespace {
 
 template <class Node>
-Device deviceOf(const Node& node, Device::Kind kind) {
-  return {kind, node.uID, node.xpath, node.path ? &*node.path : nullptr};
+Device deviceOf(const Node& node, Device::Kind kind, const schema::WingType& wing,
+                const schema::ComponentSegmentType& segment) {
+  Device device;
+  device.kind = kind;
+  device.uid = node.uID;
+  device.xpath = node.xpath;
+  device.path = node.path ? &*node.path : nullptr;
+  device.parentUid = node.parentUID;
+  device.componentSegmentUid = segment.uID;
+  device.wingUid = wing.uID;
+  device.hasOuterShape = node.outerShape && node.outerShape->innerBorder && node.outerShape->outerBorder;
+  if (device.hasOuterShape) {
+    device.innerBorder = borderOf(*node.outerShape->innerBorder);
+    device.outerBorder = borderOf(*node.outerShape->outerBorder);
+  }
+  return device;
 }
 
 /// Every device of a wing, spoilers too, in the protocol's order (spoilers after the others
@@ -23,12 +37,13 @@ std::vector<Device> allDevicesOf(const schema::WingType& wing, bool withSpoilers
     const schema::ControlSurfacesType& surfaces = *segment.controlSurfaces;
     if (surfaces.trailingEdgeDevices)
       for (const auto& device : surfaces.trailingEdgeDevices->trailingEdgeDevice)
-        devices.push_back(deviceOf(device, Device::Kind::TrailingEdge));
+        devices.push_back(deviceOf(device, Device::Kind::TrailingEdge, wing, segment));
     if (surfaces.leadingEdgeDevices)
       for (const auto& device : surfaces.leadingEdgeDevices->leadingEdgeDevice)
-        devices.push_back(deviceOf(device, Device::Kind::LeadingEdge));
+        devices.push_back(deviceOf(device, Device::Kind::LeadingEdge, wing, segment));
     if (withSpoilers && surfaces.spoilers)
-      for (const auto& device : surfaces.spoilers->spoiler) devices.push_back(deviceOf(device, Device::Kind::Spoiler));
+      for (const auto& device : surfaces.spoilers->spoiler)
+        devices.push_back(deviceOf(device, Device::Kind::Spoiler, wing, segment));
   }
   return devices;
 }
@@ -49,6 +64,21 @@ Device deviceNamed(const Configuration& configuration, const std::string& uid) {
     for (const Device& device : allDevicesOf(*wing, true))
       if (device.uid == uid) return device;
   throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");
+}
+
+Device deviceInAnyModel(const Configuration& configuration, const std::string& uid) {
+  for (const model::ModelComponents& model : model::everyModel(configuration))
+    for (const schema::WingType* wing : model.wings)
+      for (const Device& device : allDevicesOf(*wing, true))
+        if (device.uid == uid) return device;
+  throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");
+}
+
+std::pair<double, double> parameterRangeOf(const Device& device) {
+  if (device.path == nullptr || !device.path->steps || device.path->steps->step.empty())
+    throw Error(ErrorCode::InvalidModel, "the control surface has no path steps", {}, device.xpath + "/path");
+  const auto& steps = device.path->steps->step;
+  return {steps[0].controlParameter, steps[steps.size() - 1].controlParameter};
 }
 
 const char* kindName(Device::Kind kind) {

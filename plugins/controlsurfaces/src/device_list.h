@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "airshape/schema/generated/cpacs_model.h"
+#include "device_border.h"
 
 namespace airshape {
 class Configuration;
@@ -18,6 +19,11 @@ struct Device {
   std::string uid;
   std::string xpath;
   const schema::ControlSurfacePathType* path = nullptr;  ///< its steps and hinge points, if given
+  std::string parentUid;                                 ///< its component segment, or the device it sits on
+  std::string componentSegmentUid;                       ///< the component segment it belongs to
+  std::string wingUid;
+  bool hasOuterShape = false;  ///< both borders given; without them it has no geometry
+  BorderDefinition innerBorder, outerBorder;
 };
 
 /// The counted devices of a wing in the order of the query protocol (QUERY-components §3.1):
@@ -31,6 +37,13 @@ std::vector<Device> spoilersOf(const schema::WingType& wing);
 /// The device (spoilers included) with this uID in the first model; throws Error when the uID
 /// names no device.
 Device deviceNamed(const Configuration& configuration, const std::string& uid);
+
+/// The device (spoilers included) with this uID in any model of the document, for building.
+Device deviceInAnyModel(const Configuration& configuration, const std::string& uid);
+
+/// The control parameters of the device's first and last step, in document order
+/// (QUERY-components §3.3). Throws Error naming its path when it has no steps.
+std::pair<double, double> parameterRangeOf(const Device& device);
 
 /// The protocol's name of a device's kind: trailing_edge_device, leading_edge_device, spoiler.
 const char* kindName(Device::Kind kind);

@@ -1,14 +1,45 @@
 #include "wing_services.h"
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
+#include "airshape/model/placement.h"
 #include "component_segment.h"
 #include "wing_geometry.h"
 #include "wing_lookup.h"
+#include "wing_profile.h"
 
 namespace airshape::wing {
 
 namespace {
+
+gp_Pnt apply(const model::Transform& transform, const gp_Pnt& p) {
+  const Eigen::Vector3d q = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
+  return {q.x(), q.y(), q.z()};
+}
+
+gp_Vec applyLinear(const model::Transform& transform, const gp_Vec& v) {
+  const Eigen::Vector3d q = transform.linear() * Eigen::Vector3d(v.X(), v.Y(), v.Z());
+  return {q.x(), q.y(), q.z()};
+}
+
+/// The wing airfoil (or rotor airfoil) definition of this uID; throws Error when none has it.
+const schema::ProfileGeometryType& airfoilDefinition(const Configuration& configuration, const std::string& uid) {
+  const schema::CpacsType& cpacs = configuration.cpacs();
+  if (cpacs.vehicles && cpacs.vehicles->profiles) {
+    const schema::ProfilesType& profiles = *cpacs.vehicles->profiles;
+    if (profiles.wingAirfoils)
+      for (const auto& airfoil : profiles.wingAirfoils->wingAirfoil)
+        if (airfoil.uID == uid) return airfoil;
+    if (profiles.rotorAirfoils)
+      for (const auto& airfoil : profiles.rotorAirfoils->rotorAirfoil)
+        if (airfoil.uID == uid) return airfoil;
+  }
+  throw Error(ErrorCode::InvalidModel, "airfoilUID '" + uid + "' names no wing airfoil");
+}
 
 class WingServicesOfThisPlugin final : public WingServices {
  public:
@@ -35,6 +66,71 @@ class WingServicesOfThisPlugin final : public WingServices {
       default:
         return geometry->chordPoint(at.segment, at.eta, at.xsi);
     }
+  }
+
+  double componentSegmentEta(const Configuration& configuration, const std::string& componentSegmentUid,
+                             const std::string& referenceUid, double eta) const override {
+    if (referenceUid.empty() || referenceUid == componentSegmentUid) return eta;
+    const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
+    const auto geometry = WingGeometry::of(configuration, wing);
+    const ComponentSegment segment(*geometry, componentSegmentNamed(wing, componentSegmentUid));
+    const std::vector<std::string>& uids = geometry->segmentUids();
+    for (std::size_t k = 0; k < uids.size(); ++k)
+      if (uids[k] == referenceUid) return segment.toComponentSegment(k, eta);
+    throw Error(ErrorCode::InvalidModel, "referenceUID '" + referenceUid + "' names neither component segment '" +
+                                             componentSegmentUid + "' nor one of its wing segments");
+  }
+
+  gp_Vec midplaneNormal(const Configuration& configuration, const std::string& componentSegmentUid,
+                        double eta) const override {
+    const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
+    const auto geometry = WingGeometry::of(configuration, wing);
+    const ComponentSegment segment(*geometry, componentSegmentNamed(wing, componentSegmentUid));
+    const model::Transform toGlobal = model::componentTransform(configuration, wing.uID);
+    const model::Transform toWing = toGlobal.inverse();
+    const gp_Vec spanwise = leadingEdgeSeenFromFront(*geometry, segment, toWing, eta);
+    const ComponentSegment::SegmentPoint front = segment.toSegment(eta, 0.0);
+    const gp_Pnt leadingEdge = apply(toWing, geometry->chordPoint(front.segment, front.eta, 0.0));
+    const gp_Pnt trailingEdge = apply(toWing, geometry->chordPoint(front.segment, front.eta, 1.0));
+    const gp_Vec chord(leadingEdge, trailingEdge);
+    if (chord.Magnitude() < 1e-15)
+      throw Error(ErrorCode::InvalidModel,
+                  "component segment '" + componentSegmentUid + "' has no chord at eta " + std::to_string(eta));
+    return applyLinear(toGlobal, chord.Normalized().Crossed(spanwise));
+  }
+
+  TopoDS_Wire airfoilWire(const Configuration& configuration, const std::string& airfoilUid) const override {
+    const WingProfile profile = WingProfile::fromDefinition(airfoilDefinition(configuration, airfoilUid));
+    BRepBuilderAPI_MakeWire wire;
+    const std::vector<Handle(Geom_BSplineCurve)> outline = profile.outline();
+    for (const auto& curve : outline) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
+    const gp_Pnt start = outline.front()->StartPoint(), end = outline.back()->EndPoint();
+    if (start.Distance(end) > 1e-12) wire.Add(BRepBuilderAPI_MakeEdge(geometry::straightLine(end, start)).Edge());
+    return wire.Wire();
+  }
+
+ private:
+  /// The direction of the component segment's leading edge at eta, its points seen from the
+  /// front (x dropped) in the wing's own frame, eta taken as a share of that line's length.
+  static gp_Vec leadingEdgeSeenFromFront(const WingGeometry& geometry, const ComponentSegment& segment,
+                                         const model::Transform& toWing, double eta) {
+    std::vector<gp_Pnt> points;
+    auto add = [&](const gp_Pnt& global) {
+      const gp_Pnt local = apply(toWing, global);
+      points.emplace_back(0.0, local.Y(), local.Z());
+    };
+    add(geometry.segments()[segment.segments().front()].inner.leadingEdge());
+    for (std::size_t k : segment.segments()) add(geometry.segments()[k].outer.leadingEdge());
+    double total = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i) total += points[i - 1].Distance(points[i]);
+    double travelled = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      const double piece = points[i - 1].Distance(points[i]);
+      if (piece > 1e-15 && (travelled + piece >= eta * total || i + 1 == points.size()))
+        return gp_Vec(points[i - 1], points[i]).Normalized();
+      travelled += piece;
+    }
+    throw Error(ErrorCode::InvalidModel, "the leading edge of the component segment has no spanwise extent");
   }
 };
 

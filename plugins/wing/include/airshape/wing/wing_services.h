@@ -3,7 +3,9 @@
 #include <string>
 
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
 
 namespace airshape {
 class Configuration;
@@ -29,9 +31,26 @@ class WingServices {
   /// the wing that holds the component segment.
   virtual gp_Pnt componentSegmentPoint(const Configuration& configuration, const std::string& componentSegmentUid,
                                        double eta, double xsi, Surface surface) const = 0;
+
+  /// An eta that CPACS gives relative to `referenceUid` (the component segment itself, or
+  /// one of its wing segments) as the component segment's eta. Throws Error for a reference
+  /// that is neither.
+  virtual double componentSegmentEta(const Configuration& configuration, const std::string& componentSegmentUid,
+                                     const std::string& referenceUid, double eta) const = 0;
+
+  /// The normal of the component segment's mid-plane at `eta`, in the global frame (not
+  /// normalised): in the wing's own frame, the chord direction at eta crossed with the
+  /// spanwise direction of its leading edge seen from the front (x dropped); it points to
+  /// the upper skin.
+  virtual gp_Vec midplaneNormal(const Configuration& configuration, const std::string& componentSegmentUid,
+                                double eta) const = 0;
+
+  /// A wing airfoil by uID as one closed wire in profile coordinates (x along the chord,
+  /// z up): its outline, closed by a straight trailing edge where it is blunt.
+  virtual TopoDS_Wire airfoilWire(const Configuration& configuration, const std::string& airfoilUid) const = 0;
 };
 
 /// The name the wing plugin offers WingServices under; the number is the interface's version.
-inline constexpr const char* kWingServices = "airshape.wing.WingServices/1";
+inline constexpr const char* kWingServices = "airshape.wing.WingServices/2";
 
 }  // namespace airshape::wing

@@ -1,0 +1,258 @@
+#include "device_border.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <BRepBuilderAPI_GTransform.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <Geom2dAPI_Interpolate.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <GeomAPI.hxx>
+#include <Geom_Curve.hxx>
+#include <TColgp_HArray1OfPnt2d.hxx>
+#include <TopoDS.hxx>
+#include <gp_GTrsf.hxx>
+#include <gp_Lin.hxx>
+#include <gp_Pln.hxx>
+#include <tuple>
+
+#include "airshape/error.h"
+#include "line_crossings.h"
+
+namespace airshape::controlsurfaces {
+
+namespace {
+
+RelativeCoordinate relative(const schema::EtaIsoLineType& eta) { return {eta.eta, eta.referenceUID}; }
+
+BorderDefinition withMissing(BorderDefinition border, const char* element) {
+  border.missing = element;
+  return border;
+}
+
+/// How far (in chords of the border and in heights of the wing section) the wire reaches
+/// beyond the device, so that the ruled solid between two borders surely leaves the wing.
+constexpr double kReach = 5.0;
+
+/// Where a line across the wing section meets a skin: the point and the skin's direction
+/// there, both in the border plane's coordinates.
+struct SkinCrossing {
+  gp_Pnt2d point;
+  gp_Vec2d tangent;
+};
+
+gp_Pnt2d inPlane(const BorderPlane& plane, const gp_Pnt& p) {
+  const gp_Vec d(plane.origin, p);
+  return {d.Dot(plane.x), d.Dot(plane.y)};
+}
+
+gp_Vec2d inPlane(const BorderPlane& plane, const gp_Vec& v) { return {v.Dot(plane.x), v.Dot(plane.y)}; }
+
+/// The lower and the upper skin crossing of the line normal to the chord at `xsi`, a share
+/// of the chord counted from the trailing-edge point (1 is the leading-edge point).
+std::pair<SkinCrossing, SkinCrossing> skinCrossings(const BorderDefinition& border, const BorderPlane& plane,
+                                                    const TopoDS_Shape& wing, double xsi) {
+  const gp_Pnt start = plane.at((1.0 - xsi) * plane.chord, 0.0);
+  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(start, gp_Dir(plane.y)), 1e-9 * plane.chord);
+  if (hits.size() < 2)
+    throw Error(ErrorCode::InvalidModel,
+                "the border does not cross both skins of the wing at xsi " + std::to_string(xsi) + " of its chord", {},
+                border.xpath);
+  auto crossing = [&](const LineCrossing& hit) {
+    return SkinCrossing{inPlane(plane, hit.point), inPlane(plane, plane.z.Crossed(hit.normal))};
+  };
+  return {crossing(hits.front()), crossing(hits.back())};
+}
+
+TopoDS_Edge straightEdge(const BorderPlane& plane, const gp_Pnt2d& a, const gp_Pnt2d& b) {
+  return BRepBuilderAPI_MakeEdge(plane.at(a.X(), a.Y()), plane.at(b.X(), b.Y())).Edge();
+}
+
+/// Where a ray from `from` along `direction` reaches the height v = `height`.
+gp_Pnt2d reachHeight(const gp_Pnt2d& from, const gp_Vec2d& direction, double height) {
+  const double along = (height - from.Y()) / direction.Y();
+  return {from.X() + along * direction.X(), from.Y() + along * direction.Y()};
+}
+
+/// The corners of the part of a border wire outside the wing: from the upper skin point out
+/// along `upOut` to a height well above the wing, `reach` chords along x (negative: forward),
+/// down to as far below the wing, and back along `downOut` to the lower skin point.
+struct OuterCorners {
+  gp_Pnt2d upperOut, upperFar, lowerFar, lowerOut;
+};
+
+OuterCorners outerCorners(const BorderPlane& plane, const gp_Pnt2d& lower, const gp_Pnt2d& upper, gp_Vec2d upOut,
+                          gp_Vec2d downOut, double reach) {
+  if (upOut.Y() < 0) upOut.Reverse();
+  if (downOut.Y() > 0) downOut.Reverse();
+  const double height = std::abs(reach) * std::max(std::abs(lower.Y()), std::abs(upper.Y()));
+  return {reachHeight(upper, upOut, height), gp_Pnt2d(reach * plane.chord, height),
+          gp_Pnt2d(reach * plane.chord, -height), reachHeight(lower, downOut, -height)};
+}
+
+/// Cut straight across the wing at the border's leading edge, the device aft of it.
+TopoDS_Wire straightWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing) {
+  const auto [lower, upper] = skinCrossings(border, plane, wing, 1.0);
+  const gp_Vec2d across(lower.point, upper.point);
+  const OuterCorners c = outerCorners(plane, lower.point, upper.point, across, across.Reversed(), kReach);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(straightEdge(plane, c.lowerOut, c.upperOut));
+  wire.Add(straightEdge(plane, c.upperOut, c.upperFar));
+  wire.Add(straightEdge(plane, c.upperFar, c.lowerFar));
+  wire.Add(straightEdge(plane, c.lowerFar, c.lowerOut));
+  return wire.Wire();
+}
+
+/// A rounded edge from the lower skin through a middle point between the skins to the upper
+/// skin, leaving the skins along them; the device lies aft of it (reach > 0, a flap's nose)
+/// or ahead of it (reach < 0, a slat's hollow back).
+TopoDS_Wire shapedWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+                       double reach) {
+  SkinCrossing lower, upper;
+  if (std::abs(border.xsiUpperSkin - border.xsiLowerSkin) < 1e-10) {
+    std::tie(lower, upper) = skinCrossings(border, plane, wing, border.xsiUpperSkin);
+  } else {
+    upper = skinCrossings(border, plane, wing, border.xsiUpperSkin).second;
+    lower = skinCrossings(border, plane, wing, border.xsiLowerSkin).first;
+  }
+  const auto [middleLower, middleUpper] = skinCrossings(border, plane, wing, border.xsiMiddle);
+  const gp_Pnt2d middle(middleLower.point.XY() * (1.0 - border.relHeight) + middleUpper.point.XY() * border.relHeight);
+
+  // The edge runs lower -> middle -> upper; its end tangents follow the skins in that sense.
+  gp_Vec2d leaveLower = lower.tangent, reachUpper = upper.tangent;
+  if ((middle.X() > lower.point.X()) != (leaveLower.X() > 0)) leaveLower.Reverse();
+  if ((middle.X() > upper.point.X()) != (reachUpper.X() < 0)) reachUpper.Reverse();
+  Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, 3);
+  points->SetValue(1, lower.point);
+  points->SetValue(2, middle);
+  points->SetValue(3, upper.point);
+  Geom2dAPI_Interpolate interpolation(points, false, 1e-7);
+  interpolation.Load(leaveLower.Normalized(), reachUpper.Normalized());
+  interpolation.Perform();
+  if (!interpolation.IsDone())
+    throw Error(ErrorCode::InvalidModel, "the border's rounded edge cannot be drawn", {}, border.xpath);
+  const gp_Pln borderPlane(gp_Ax3(plane.origin, gp_Dir(plane.z), gp_Dir(plane.x)));
+  const TopoDS_Edge innerEdge = BRepBuilderAPI_MakeEdge(GeomAPI::To3d(interpolation.Curve(), borderPlane)).Edge();
+
+  const gp_Vec2d upOut(-upper.tangent.Y(), upper.tangent.X()), downOut(-lower.tangent.Y(), lower.tangent.X());
+  const OuterCorners c = outerCorners(plane, lower.point, upper.point, upOut, downOut, reach);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(innerEdge);
+  wire.Add(straightEdge(plane, upper.point, c.upperOut));
+  wire.Add(straightEdge(plane, c.upperOut, c.upperFar));
+  wire.Add(straightEdge(plane, c.upperFar, c.lowerFar));
+  wire.Add(straightEdge(plane, c.lowerFar, c.lowerOut));
+  wire.Add(straightEdge(plane, c.lowerOut, lower.point));
+  return wire.Wire();
+}
+
+/// The border's own airfoil: x scaled to the border's chord, z by its scaling, laid into the
+/// border plane (profile x along the chord, profile z along the plane's y).
+TopoDS_Wire airfoilWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Wire& airfoil) {
+  gp_GTrsf place;
+  // Profile y (zero on an airfoil) goes along the plane normal, keeping the map regular.
+  place.SetVectorialPart(gp_Mat(plane.x.X() * plane.chord, plane.z.X(), plane.y.X() * border.airfoilScaleZ,
+                                plane.x.Y() * plane.chord, plane.z.Y(), plane.y.Y() * border.airfoilScaleZ,
+                                plane.x.Z() * plane.chord, plane.z.Z(), plane.y.Z() * border.airfoilScaleZ));
+  place.SetTranslationPart(plane.origin.XYZ());
+  return TopoDS::Wire(BRepBuilderAPI_GTransform(airfoil, place, true).Shape());
+}
+
+}  // namespace
+
+BorderPlane::BorderPlane(const gp_Pnt& leadingEdge, const gp_Pnt& trailingEdge, const gp_Vec& up)
+    : origin(leadingEdge), chord(leadingEdge.Distance(trailingEdge)) {
+  if (chord < 1e-12) throw Error(ErrorCode::InvalidModel, "the border's leading and trailing edge coincide");
+  x = gp_Vec(leadingEdge, trailingEdge).Normalized();
+  z = x.Crossed(up.Normalized());
+  if (z.Magnitude() < 1e-12) throw Error(ErrorCode::InvalidModel, "the border's chord is normal to the wing");
+  z.Normalize();
+  y = z.Crossed(x);
+}
+
+TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+                       const TopoDS_Wire& airfoil) {
+  switch (border.nose) {
+    case BorderDefinition::Nose::LeadingEdgeShape:
+      return shapedWire(border, plane, wing, kReach);
+    case BorderDefinition::Nose::InnerShape:
+      return shapedWire(border, plane, wing, -kReach);
+    case BorderDefinition::Nose::Airfoil:
+      return airfoilWire(border, plane, airfoil);
+    default:
+      return straightWire(border, plane, wing);
+  }
+}
+
+BorderDefinition borderOf(const schema::ControlSurfaceBorderTrailingEdgeType& border) {
+  BorderDefinition d;
+  d.xpath = border.xpath;
+  d.missing = !border.etaLE ? "etaLE" : "";
+  if (!d.missing.empty()) return d;
+  d.etaLE = relative(*border.etaLE);
+  d.etaTE = border.etaTE ? relative(*border.etaTE) : d.etaLE;
+  if (!border.xsiLE) return withMissing(d, "xsiLE");
+  d.xsiLE = border.xsiLE->xsi;
+  d.xsiTE = 1.0;
+  if (border.leadingEdgeShape) {
+    d.nose = BorderDefinition::Nose::LeadingEdgeShape;
+    d.relHeight = border.leadingEdgeShape->relHeightLE;
+    d.xsiUpperSkin = border.leadingEdgeShape->xsiUpperSkin;
+    d.xsiLowerSkin = border.leadingEdgeShape->xsiLowerSkin;
+    d.xsiMiddle = 1.0;
+  } else if (border.airfoil) {
+    d.nose = BorderDefinition::Nose::Airfoil;
+    d.airfoilUid = border.airfoil->airfoilUID;
+    d.airfoilScaleZ = border.airfoil->scalZ;
+  }
+  return d;
+}
+
+BorderDefinition borderOf(const schema::ControlSurfaceBorderLeadingEdgeType& border) {
+  BorderDefinition d;
+  d.xpath = border.xpath;
+  d.missing = !border.etaLE ? "etaLE" : "";
+  if (!d.missing.empty()) return d;
+  d.etaLE = relative(*border.etaLE);
+  d.etaTE = border.etaTE ? relative(*border.etaTE) : d.etaLE;
+  d.xsiLE = 0.0;
+  if (!border.xsiTE && !border.xsiTEUpper) return withMissing(d, "xsiTE");
+  const double upper = border.xsiTE ? border.xsiTE->xsi : border.xsiTEUpper.value_or(0.0);
+  const double lower = border.xsiTE ? border.xsiTE->xsi : border.xsiTELower.value_or(upper);
+  d.xsiTE = std::max(upper, lower);
+  if (border.innerShape) {
+    d.nose = BorderDefinition::Nose::InnerShape;
+    d.relHeight = border.innerShape->relHeightTE;
+    d.xsiMiddle = border.innerShape->xsiTE;
+    d.xsiUpperSkin = upper;
+    d.xsiLowerSkin = lower;
+  } else if (border.airfoil) {
+    d.nose = BorderDefinition::Nose::Airfoil;
+    d.airfoilUid = border.airfoil->airfoilUID;
+    d.airfoilScaleZ = border.airfoil->scalZ;
+  }
+  return d;
+}
+
+BorderDefinition borderOf(const schema::ControlSurfaceBorderSpoilerType& border) {
+  BorderDefinition d;
+  d.xpath = border.xpath;
+  d.missing = !border.etaLE ? "etaLE" : "";
+  if (!d.missing.empty()) return d;
+  d.etaLE = relative(*border.etaLE);
+  d.etaTE = border.etaTE ? relative(*border.etaTE) : d.etaLE;
+  if (!border.xsiLE) return withMissing(d, "xsiLE");
+  if (!border.xsiTE) return withMissing(d, "xsiTE");
+  d.xsiLE = border.xsiLE->xsi;
+  d.xsiTE = border.xsiTE->xsi;
+  if (border.airfoil) {
+    d.nose = BorderDefinition::Nose::Airfoil;
+    d.airfoilUid = border.airfoil->airfoilUID;
+    d.airfoilScaleZ = border.airfoil->scalZ;
+  }
+  return d;
+}
+
+}  // namespace airshape::controlsurfaces

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <string>
+
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape::controlsurfaces {
+
+/// An eta or xsi as CPACS gives it: a number relative to a reference (the component segment
+/// or one of its wing segments; empty for the component segment).
+struct RelativeCoordinate {
+  double value = 0.0;
+  std::string referenceUid;
+};
+
+/// One end of a device's outer shape (its inner or outer border): where its leading and
+/// trailing edges lie on the component segment and how its nose is shaped.
+struct BorderDefinition {
+  enum class Nose {
+    Straight,          ///< cut straight across the wing at the leading edge
+    LeadingEdgeShape,  ///< a rounded nose through a point at relHeight between the skins (flaps)
+    InnerShape,        ///< a hollow trailing end, rounded through a point between the skins (slats)
+    Airfoil            ///< its own airfoil, scaled to the border's chord
+  };
+  std::string xpath;
+  std::string missing;  ///< the required element the border lacks (then nothing else is set)
+  RelativeCoordinate etaLE, etaTE;
+  double xsiLE = 0.0, xsiTE = 1.0;
+  Nose nose = Nose::Straight;
+  /// For a shaped nose: where the rounded edge meets the upper and the lower skin and where
+  /// its middle point lies, as shares of the border's chord from its trailing edge (1 is the
+  /// leading edge), and the middle point's height between the skins.
+  double xsiUpperSkin = 1.0, xsiLowerSkin = 1.0, xsiMiddle = 1.0, relHeight = 0.5;
+  std::string airfoilUid;
+  double airfoilScaleZ = 1.0;
+};
+
+BorderDefinition borderOf(const schema::ControlSurfaceBorderTrailingEdgeType& border);
+BorderDefinition borderOf(const schema::ControlSurfaceBorderLeadingEdgeType& border);
+BorderDefinition borderOf(const schema::ControlSurfaceBorderSpoilerType& border);
+
+/// The plane a border is drawn in: through its leading-edge point `origin`, spanned by the
+/// chord direction `x` (towards its trailing-edge point) and `y`, the component segment's
+/// upward direction made normal to the chord; `z` is normal to the plane.
+struct BorderPlane {
+  gp_Pnt origin;
+  gp_Vec x, y, z;
+  double chord = 0.0;  ///< distance of the leading- and trailing-edge points
+
+  BorderPlane(const gp_Pnt& leadingEdge, const gp_Pnt& trailingEdge, const gp_Vec& up);
+  gp_Pnt at(double u, double v) const { return origin.Translated(u * x + v * y); }
+};
+
+/// The closed wire of a border in its plane, enclosing the part of the wing section that
+/// belongs to the device and reaching well outside the wing elsewhere, so that a ruled solid
+/// between the inner and the outer border cuts the device out of the wing. `wing` is the
+/// clean wing solid whose skins the border meets; `airfoil` the border's own airfoil in
+/// profile coordinates (Nose::Airfoil only). Throws Error naming the border's CPACS path
+/// when the border does not cross the wing's skins.
+TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+                       const TopoDS_Wire& airfoil);
+
+}  // namespace airshape::controlsurfaces

@@ -1,0 +1,155 @@
+#include "device_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
+#include <gp_Lin.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/model/placement.h"
+#include "airshape/model/primary_model.h"
+#include "hinge_motion.h"
+#include "line_crossings.h"
+
+namespace airshape::controlsurfaces {
+
+namespace {
+
+using Surface = wing::WingServices::Surface;
+
+gp_Pnt apply(const model::Transform& transform, const gp_Pnt& p) {
+  const Eigen::Vector3d q = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
+  return {q.x(), q.y(), q.z()};
+}
+
+const schema::WingType& wingNamed(const Configuration& configuration, const std::string& uid) {
+  const model::ModelComponents& model = model::modelHolding(configuration, uid);
+  return model::findByUid(configuration, model, model.wings, uid, "wing");
+}
+
+void requireFraction(double value, const std::string& name, const std::string& xpath) {
+  if (!(value >= 0.0 && value <= 1.0))
+    throw Error(ErrorCode::InvalidModel, name + " " + std::to_string(value) + " lies outside [0, 1]", {}, xpath);
+}
+
+}  // namespace
+
+DeviceGeometry::DeviceGeometry(const Configuration& configuration, const wing::WingServices& wing, Device device)
+    : configuration_(configuration), wing_(wing), device_(std::move(device)) {
+  if (!device_.hasOuterShape)
+    throw Error(ErrorCode::InvalidModel, "the device has no outerShape with an inner and an outer border", {},
+                device_.xpath);
+  for (const BorderDefinition* border : {&device_.innerBorder, &device_.outerBorder})
+    if (!border->missing.empty())
+      throw Error(ErrorCode::InvalidModel, "the border has no " + border->missing, {}, border->xpath);
+}
+
+double DeviceGeometry::componentSegmentEta(const RelativeCoordinate& eta) const {
+  return wing_.componentSegmentEta(configuration_, device_.componentSegmentUid, eta.referenceUid, eta.value);
+}
+
+gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi) const {
+  return wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, componentSegmentEta(eta), xsi,
+                                     Surface::Chord);
+}
+
+TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border) const {
+  for (const double eta : {border.etaLE.value, border.etaTE.value}) requireFraction(eta, "eta", border.xpath);
+  for (const double xsi : {border.xsiLE, border.xsiTE}) requireFraction(xsi, "xsi", border.xpath);
+  const std::string& cs = device_.componentSegmentUid;
+  // The component segment's upward direction: its inner chord crossed with its inner leading edge.
+  const gp_Pnt innerFront = wing_.componentSegmentPoint(configuration_, cs, 0.0, 0.0, Surface::Chord);
+  const gp_Vec up =
+      gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 0.0, 1.0, Surface::Chord))
+          .Crossed(gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 1.0, 0.0, Surface::Chord)));
+  try {
+    const BorderPlane plane(chordPoint(border.etaLE, border.xsiLE), chordPoint(border.etaTE, border.xsiTE), up);
+    const TopoDS_Wire airfoil = border.nose == BorderDefinition::Nose::Airfoil
+                                    ? wing_.airfoilWire(configuration_, border.airfoilUid)
+                                    : TopoDS_Wire();
+    return borderWire(border, plane, wing_.cleanSolid(configuration_, device_.wingUid), airfoil);
+  } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;
+    throw Error(error.code(), error.message(), {}, border.xpath);
+  }
+}
+
+TopoDS_Shape DeviceGeometry::cutter() const {
+  const TopoDS_Wire inner = borderWireOf(device_.innerBorder), outer = borderWireOf(device_.outerBorder);
+  BRepOffsetAPI_ThruSections loft(true, true);
+  loft.AddWire(outer);
+  loft.AddWire(inner);
+  loft.Build();
+  if (!loft.IsDone())
+    throw Error(ErrorCode::InvalidModel, "no solid joins the device's inner and outer border", {},
+                device_.xpath + "/outerShape");
+  return loft.Shape();
+}
+
+NamedShape DeviceGeometry::atRest() const {
+  const TopoDS_Shape cut = cutter();
+  NamedShape shape;
+  if (device_.innerBorder.nose == BorderDefinition::Nose::Airfoil) {
+    shape.shape = cut;
+    return shape;
+  }
+  BRepAlgoAPI_Common common(wing_.cleanSolid(configuration_, device_.wingUid), cut);
+  if (!common.IsDone() || common.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
+  shape.shape = common.Shape();
+  return shape;
+}
+
+std::pair<double, double> DeviceGeometry::parameterRange() const { return parameterRangeOf(device_); }
+
+gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,
+                                  const char* which) const {
+  const std::string xpath = device_.xpath + "/path/" + which;
+  requireFraction(hinge.hingeXsi, "hingeXsi", xpath);
+  requireFraction(hinge.hingeRelHeight, "hingeRelHeight", xpath);
+  const double eta = componentSegmentEta(border.etaLE);
+  const gp_Pnt onChord =
+      wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, eta, hinge.hingeXsi, Surface::Chord);
+  const gp_Vec normal = wing_.midplaneNormal(configuration_, device_.componentSegmentUid, eta);
+  const std::vector<LineCrossing> crossings =
+      crossingsOf(wing_.cleanSolid(configuration_, device_.wingUid), gp_Lin(onChord, gp_Dir(normal)), 1e-10);
+  // The nearest skin above the chord surface and the nearest below it.
+  const auto above =
+      std::find_if(crossings.begin(), crossings.end(), [](const LineCrossing& c) { return c.along > 0; });
+  if (above == crossings.end() || above == crossings.begin())
+    throw Error(ErrorCode::InvalidModel, "the hinge point lies outside the wing", {}, xpath);
+  const gp_Pnt upper = above->point, lower = std::prev(above)->point;
+  const gp_Pnt between(lower.XYZ() + hinge.hingeRelHeight * (upper.XYZ() - lower.XYZ()));
+
+  // The reference places hinge points by the wing's own transformation only.
+  const schema::WingType& wing = wingNamed(configuration_, device_.wingUid);
+  gp_Pnt local = apply(model::componentTransform(configuration_, device_.wingUid).inverse(), between);
+  if (hinge.translation) {
+    const schema::PointType& t = *hinge.translation;
+    local.Translate(gp_Vec(t.x.value_or(0.0), t.y.value_or(0.0), t.z.value_or(0.0)));
+  }
+  return apply(model::transformationMatrix(wing.transformation ? &*wing.transformation : nullptr), local);
+}
+
+gp_Trsf DeviceGeometry::motionAt(double controlParameter) const {
+  const auto [first, last] = parameterRange();
+  if (!(controlParameter >= std::min(first, last) && controlParameter <= std::max(first, last)))
+    throw Error(ErrorCode::InvalidArgument, "control parameter " + std::to_string(controlParameter) +
+                                                " lies outside the range [" + std::to_string(std::min(first, last)) +
+                                                ", " + std::to_string(std::max(first, last)) + "] of '" + device_.uid +
+                                                "'");
+  if (!device_.path->innerHingePoint || !device_.path->outerHingePoint)
+    throw Error(ErrorCode::InvalidModel, "the path has no inner and outer hinge point", {}, device_.xpath + "/path");
+  const gp_Pnt inner = hingePoint(*device_.path->innerHingePoint, device_.innerBorder, "innerHingePoint");
+  const gp_Pnt outer = hingePoint(*device_.path->outerHingePoint, device_.outerBorder, "outerHingePoint");
+  try {
+    return hingeMotion(inner, outer, stepValuesAt(*device_.path->steps, controlParameter));
+  } catch (const Error& error) {
+    throw Error(error.code(), error.message(), {}, device_.xpath + "/path");
+  }
+}
+
+}  // namespace airshape::controlsurfaces

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Trsf.hxx>
+
+#include "airshape/named_shape.h"
+#include "airshape/wing/wing_services.h"
+#include "device_list.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::controlsurfaces {
+
+/// The geometry of one device, from the wing it lies in (through the wing plugin's public
+/// interface): its shape at rest and its rigid motion at any control parameter.
+class DeviceGeometry {
+ public:
+  DeviceGeometry(const Configuration& configuration, const wing::WingServices& wing, Device device);
+
+  /// The device at rest (QUERY-components §3.2): the clean wing cut by the ruled solid between
+  /// its inner and outer border; a border with its own airfoil gives that solid itself.
+  /// Throws Error naming the device's CPACS path when it cannot be built.
+  NamedShape atRest() const;
+
+  /// The ruled solid between the two borders that cuts the device out of the wing.
+  TopoDS_Shape cutter() const;
+
+  /// The device's rigid motion at a control parameter within the range of its steps
+  /// (QUERY-components §3.4); outside the range, an error.
+  gp_Trsf motionAt(double controlParameter) const;
+
+  /// The control parameters of the first and the last step (QUERY-components §3.3).
+  std::pair<double, double> parameterRange() const;
+
+  const Device& device() const { return device_; }
+
+ private:
+  /// A border point on the component segment's chord surface.
+  gp_Pnt chordPoint(const RelativeCoordinate& eta, double xsi) const;
+  /// The component-segment eta of an eta given relative to a reference.
+  double componentSegmentEta(const RelativeCoordinate& eta) const;
+  TopoDS_Wire borderWireOf(const BorderDefinition& border) const;
+  /// A hinge point at rest: between the skins at the hinge's xsi on the border's leading
+  /// edge, in the global frame without the wing's parent translation (as the reference).
+  gp_Pnt hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,
+                    const char* which) const;
+
+  const Configuration& configuration_;
+  const wing::WingServices& wing_;
+  Device device_;
+};
+
+}  // namespace airshape::controlsurfaces
