@@ -2,7 +2,7 @@
 // component segments. It builds each device from its wing, through the wing plugin's public
 // interface (airshape/wing/wing_services.h), and answers the device ops of the query
 // protocol (QUERY-components §3).
-#include <BRepBuilderAPI_Transform.hxx>
+#include <TopLoc_Location.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -113,7 +113,7 @@ class ControlSurfacesPlugin final : public plugin::BasicPlugin {
     auto movedShape = [deflected](Configuration& c, const Json& q) {
       const gp_Trsf motion = deflected(c, q).second;
       const TopoDS_Shape& rest = c.shapes().shapeOf(c, query::stringArgument(q, "uid"));
-      return BRepBuilderAPI_Transform(rest, motion, true).Shape();
+      return rest.Moved(TopLoc_Location(motion));
     };
     registry.add({"control_surface_deflection", "",
                   "uid, control_parameter -> {control_parameter, rotation, matrix}: the device's rigid motion",

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepLib.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <gp_Lin.hxx>
 
@@ -47,12 +48,26 @@ DeviceGeometry::DeviceGeometry(const Configuration& configuration, const wing::W
       throw Error(ErrorCode::InvalidModel, "the border has no " + border->missing, {}, border->xpath);
 }
 
-double DeviceGeometry::componentSegmentEta(const RelativeCoordinate& eta) const {
+double DeviceGeometry::componentSegmentEta(const RelativeCoordinate& eta, const std::string& xpath) const {
+  const graph::ComponentGraph& components = configuration_.components();
+  const long reference = components.find(eta.referenceUid);
+  const bool otherComponentSegment =
+      reference >= 0 && eta.referenceUid != device_.componentSegmentUid &&
+      components.components()[static_cast<std::size_t>(reference)].typeName == "wing_component_segment";
+  if (otherComponentSegment) {
+    // Written by copying a device from another wing, as often; the reference library reads
+    // the eta as the device's own component segment's, and so does this plugin.
+    configuration_.warnAboutGeometry({Problem::Severity::Warning, xpath,
+                                      "referenceUID '" + eta.referenceUid + "' is another component segment than '" +
+                                          device_.componentSegmentUid + "'; eta read as one of '" +
+                                          device_.componentSegmentUid + "'"});
+    return eta.value;
+  }
   return wing_.componentSegmentEta(configuration_, device_.componentSegmentUid, eta.referenceUid, eta.value);
 }
 
-gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi) const {
-  return wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, componentSegmentEta(eta), xsi,
+gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const {
+  return wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, componentSegmentEta(eta, xpath), xsi,
                                      Surface::Chord);
 }
 
@@ -66,7 +81,8 @@ TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border) const {
       gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 0.0, 1.0, Surface::Chord))
           .Crossed(gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 1.0, 0.0, Surface::Chord)));
   try {
-    const BorderPlane plane(chordPoint(border.etaLE, border.xsiLE), chordPoint(border.etaTE, border.xsiTE), up);
+    const BorderPlane plane(chordPoint(border.etaLE, border.xsiLE, border.xpath + "/etaLE"),
+                            chordPoint(border.etaTE, border.xsiTE, border.xpath + "/etaTE"), up);
     const TopoDS_Wire airfoil = border.nose == BorderDefinition::Nose::Airfoil
                                     ? wing_.airfoilWire(configuration_, border.airfoilUid)
                                     : TopoDS_Wire();
@@ -100,6 +116,9 @@ NamedShape DeviceGeometry::atRest() const {
   if (!common.IsDone() || common.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
   shape.shape = common.Shape();
+  // Where a border lies in a cap of the wing, the Boolean leaves edges with curves on their
+  // faces only; measures and exports need them in space too.
+  BRepLib::BuildCurves3d(shape.shape);
   return shape;
 }
 
@@ -110,18 +129,18 @@ gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hi
   const std::string xpath = device_.xpath + "/path/" + which;
   requireFraction(hinge.hingeXsi, "hingeXsi", xpath);
   requireFraction(hinge.hingeRelHeight, "hingeRelHeight", xpath);
-  const double eta = componentSegmentEta(border.etaLE);
+  const double eta = componentSegmentEta(border.etaLE, border.xpath + "/etaLE");
   const gp_Pnt onChord =
       wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, eta, hinge.hingeXsi, Surface::Chord);
   const gp_Vec normal = wing_.midplaneNormal(configuration_, device_.componentSegmentUid, eta);
-  const std::vector<LineCrossing> crossings =
-      crossingsOf(wing_.cleanSolid(configuration_, device_.wingUid), gp_Lin(onChord, gp_Dir(normal)), 1e-10);
-  // The nearest skin above the chord surface and the nearest below it.
-  const auto above =
-      std::find_if(crossings.begin(), crossings.end(), [](const LineCrossing& c) { return c.along > 0; });
-  if (above == crossings.end() || above == crossings.begin())
-    throw Error(ErrorCode::InvalidModel, "the hinge point lies outside the wing", {}, xpath);
-  const gp_Pnt upper = above->point, lower = std::prev(above)->point;
+  // Projected along the normal onto each skin: where the normal meets it, or its nearest point.
+  const gp_Lin across(onChord, gp_Dir(normal));
+  const std::string& cs = device_.componentSegmentUid;
+  const double chord = wing_.componentSegmentPoint(configuration_, cs, eta, 0.0, Surface::Chord)
+                           .Distance(wing_.componentSegmentPoint(configuration_, cs, eta, 1.0, Surface::Chord));
+  const double reach = 10.0 * chord;
+  const gp_Pnt upper = nearestToLine(wing_.componentSegmentSkin(configuration_, cs, Surface::Upper), across, reach);
+  const gp_Pnt lower = nearestToLine(wing_.componentSegmentSkin(configuration_, cs, Surface::Lower), across, reach);
   const gp_Pnt between(lower.XYZ() + hinge.hingeRelHeight * (upper.XYZ() - lower.XYZ()));
 
   // The reference places hinge points by the wing's own transformation only.

@@ -39,9 +39,9 @@ class DeviceGeometry {
 
  private:
   /// A border point on the component segment's chord surface.
-  gp_Pnt chordPoint(const RelativeCoordinate& eta, double xsi) const;
-  /// The component-segment eta of an eta given relative to a reference.
-  double componentSegmentEta(const RelativeCoordinate& eta) const;
+  gp_Pnt chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const;
+  /// The component-segment eta of an eta given relative to a reference (at `xpath`).
+  double componentSegmentEta(const RelativeCoordinate& eta, const std::string& xpath) const;
   TopoDS_Wire borderWireOf(const BorderDefinition& border) const;
   /// A hinge point at rest: between the skins at the hinge's xsi on the border's leading
   /// edge, in the global frame without the wing's parent translation (as the reference).

@@ -45,15 +45,17 @@ StepValues blend(const StepValues& a, const StepValues& b, double share) {
 }
 
 /// The frame of a hinge line (its rows): x along it, y level and normal to it, z normal to
-/// both, pointing up. Left-handed where the line runs towards +y, as in the reference.
+/// both, pointing up. Left-handed where the line runs towards +y, as in the reference, whose
+/// y is (1, -x.x / x.y, 0) normalised: only the sign of x.y matters, so a hinge line of a fin
+/// (x.y tiny, from rounding) has a frame, and one with x.y exactly 0 has none.
 Matrix hingeFrame(const Vector& along) {
   const Vector x = along.normalized();
-  if (std::abs(x.y()) < 1e-12)
-    throw Error(ErrorCode::InvalidModel, "the hinge line runs parallel to the x-z plane; it has no hinge frame");
   const double level = x.x() * x.x() + x.y() * x.y();
+  if (x.y() == 0.0 || level == 0.0)
+    throw Error(ErrorCode::InvalidModel, "the hinge line runs parallel to the x-z plane; it has no hinge frame");
   Matrix frame;
   frame.row(0) = x;
-  frame.row(1) = Vector(1.0, -x.x() / x.y(), 0.0).normalized();
+  frame.row(1) = (x.y() > 0 ? 1.0 : -1.0) * Vector(x.y(), -x.x(), 0.0) / std::sqrt(level);
   frame.row(2) = Vector(-x.x() * x.z() / level, -x.y() * x.z() / level, 1.0).normalized();
   return frame;
 }

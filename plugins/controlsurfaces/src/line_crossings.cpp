@@ -2,9 +2,14 @@
 
 #include <algorithm>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepIntCurveSurface_Inter.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Surface.hxx>
+#include <TopoDS_Edge.hxx>
+
+#include "airshape/error.h"
 
 namespace airshape::controlsurfaces {
 
@@ -23,6 +28,18 @@ std::vector<LineCrossing> crossingsOf(const TopoDS_Shape& shape, const gp_Lin& l
                               [&](const LineCrossing& a, const LineCrossing& b) { return b.along - a.along < merge; }),
                   crossings.end());
   return crossings;
+}
+
+gp_Pnt nearestToLine(const TopoDS_Shape& shape, const gp_Lin& line, double reach) {
+  const TopoDS_Edge segment = BRepBuilderAPI_MakeEdge(line, -reach, reach).Edge();
+  BRepExtrema_DistShapeShape distance(segment, shape);
+  if (!distance.IsDone() || distance.NbSolution() == 0)
+    throw Error(ErrorCode::InvalidModel, "no skin to place the point on");
+  gp_Pnt nearest = distance.PointOnShape2(1);
+  for (int k = 2; k <= distance.NbSolution(); ++k)
+    if (distance.PointOnShape2(k).Distance(line.Location()) < nearest.Distance(line.Location()))
+      nearest = distance.PointOnShape2(k);
+  return nearest;
 }
 
 }  // namespace airshape::controlsurfaces

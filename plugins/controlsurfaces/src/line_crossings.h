@@ -20,4 +20,9 @@ struct LineCrossing {
 /// between two faces crosses once (crossings closer than `merge` are one).
 std::vector<LineCrossing> crossingsOf(const TopoDS_Shape& shape, const gp_Lin& line, double merge);
 
+/// The point of `shape` nearest to `line` within `reach` of its origin (where the line meets
+/// the shape, if it does); of several equally near, the one nearest the line's origin.
+/// Throws Error when the shape is empty.
+gp_Pnt nearestToLine(const TopoDS_Shape& shape, const gp_Lin& line, double reach);
+
 }  // namespace airshape::controlsurfaces

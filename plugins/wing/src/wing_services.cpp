@@ -2,6 +2,8 @@
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -11,6 +13,7 @@
 #include "wing_geometry.h"
 #include "wing_lookup.h"
 #include "wing_profile.h"
+#include "wing_shape.h"
 
 namespace airshape::wing {
 
@@ -66,6 +69,23 @@ class WingServicesOfThisPlugin final : public WingServices {
       default:
         return geometry->chordPoint(at.segment, at.eta, at.xsi);
     }
+  }
+
+  TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,
+                                    Surface surface) const override {
+    const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
+    const ComponentSegment segment(*WingGeometry::of(configuration, wing),
+                                   componentSegmentNamed(wing, componentSegmentUid));
+    const auto shape = WingShape::of(configuration, wing);
+    BRep_Builder builder;
+    TopoDS_Compound skin;
+    builder.MakeCompound(skin);
+    for (std::size_t k : segment.segments()) {
+      const SegmentShape& faces = shape->segments()[k];
+      const TopoDS_Face& face = surface == Surface::Lower && !faces.lower.IsNull() ? faces.lower : faces.upper;
+      builder.Add(skin, face);
+    }
+    return skin;
   }
 
   double componentSegmentEta(const Configuration& configuration, const std::string& componentSegmentUid,

@@ -32,6 +32,12 @@ class WingServices {
   virtual gp_Pnt componentSegmentPoint(const Configuration& configuration, const std::string& componentSegmentUid,
                                        double eta, double xsi, Surface surface) const = 0;
 
+  /// The upper or the lower skin of a component segment (Surface::Upper or Lower), as faces
+  /// in the global frame. A skin shaped by guide curves that no leading-edge guide splits is
+  /// one face, returned for both.
+  virtual TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,
+                                            Surface surface) const = 0;
+
   /// An eta that CPACS gives relative to `referenceUid` (the component segment itself, or
   /// one of its wing segments) as the component segment's eta. Throws Error for a reference
   /// that is neither.
