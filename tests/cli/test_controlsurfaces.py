@@ -1,8 +1,13 @@
-"""Control devices that need no geometry to answer (QUERY-components §3.1, §3.3): which devices
-a wing counts and in which order, their kinds and control parameter ranges."""
+"""Control devices (QUERY-components §3): which devices a wing counts and in which order, their
+kinds and control parameter ranges; devices at rest and deflected on a wing whose figures are
+known in closed form (docs/controlsurfaces.md)."""
 import json
+import math
+import os
 
-from conftest import EXAMPLE, airshape
+import pytest
+
+from conftest import EXAMPLE, airshape, conformance_passed
 
 with open(EXAMPLE) as example:
     AIRCRAFT = example.read()
@@ -65,3 +70,110 @@ def test_spoilers_are_counted_on_their_own(tmp_path):
     assert answers[0] == {"ok": 1} and answers[1] == {"ok": "Spoiler"}
     assert "out of range" in answers[2]["error"]
     assert answers[3] == {"error": "argument 'index' must be a 1-based integer"}
+
+
+# A rectangular wing (chord 2, span 5, x from 1 to 3) of parabolic arcs z = ±0.15·c·ξ(1−ξ),
+# ξ = x/c: the section area aft of ξ0 is 0.3·c²·(1/6 − ξ0²/2 + ξ0³/3), so a plain flap's volume
+# is known in closed form, and its hinge line (on the chord, the airfoil is symmetric) too.
+RECTANGULAR = os.path.join(os.path.dirname(__file__), "..", "data", "wing-cst-rectangular.xml")
+
+
+def border(eta, xsi_le=None, xsi_te=None, extra=""):
+    text = f"<etaLE><eta>{eta}</eta><referenceUID>RectCS</referenceUID></etaLE>"
+    if xsi_le is not None:
+        text += f"<xsiLE><xsi>{xsi_le}</xsi><referenceUID>RectCS</referenceUID></xsiLE>"
+    if xsi_te is not None:
+        text += f"<xsiTE><xsi>{xsi_te}</xsi><referenceUID>RectCS</referenceUID></xsiTE>"
+    return text + extra
+
+
+def moving(kind, uid, inner, outer, hinge_xsi, rotation):
+    return (f'<{kind} uID="{uid}"><name>{uid}</name><parentUID>RectCS</parentUID>'
+            f"<outerShape><innerBorder>{inner}</innerBorder><outerBorder>{outer}</outerBorder></outerShape>"
+            f"<path><innerHingePoint><hingeXsi>{hinge_xsi}</hingeXsi><hingeRelHeight>0.5</hingeRelHeight></innerHingePoint>"
+            f"<outerHingePoint><hingeXsi>{hinge_xsi}</hingeXsi><hingeRelHeight>0.5</hingeRelHeight></outerHingePoint>"
+            f"<steps><step><controlParameter>0</controlParameter><hingeLineRotation>0</hingeLineRotation></step>"
+            f"<step><controlParameter>1</controlParameter><hingeLineRotation>{rotation}</hingeLineRotation></step>"
+            f"</steps></path></{kind}>")
+
+
+FLAP = moving("trailingEdgeDevice", "Flap", border(0.2, xsi_le=0.7), border(0.8, xsi_le=0.7), 0.7, 20)
+SLAT = moving("leadingEdgeDevice", "Slat", border(0.2, xsi_te=0.15, extra="<innerShape><relHeightTE>0.5</relHeightTE>"
+                                                                          "<xsiTE>0.5</xsiTE></innerShape>"),
+              border(0.8, xsi_te=0.15, extra="<innerShape><relHeightTE>0.5</relHeightTE><xsiTE>0.5</xsiTE></innerShape>"),
+              0.05, -20)
+SPOILER = moving("spoiler", "Spoiler", border(0.3, xsi_le=0.5, xsi_te=0.65, extra="<relHeightLE>0.5</relHeightLE>"),
+                 border(0.6, xsi_le=0.5, xsi_te=0.65, extra="<relHeightLE>0.5</relHeightLE>"), 0.5, -40)
+DEVICES = f"""<componentSegments><componentSegment uID="RectCS"><name>cs</name>
+  <fromElementUID>R1E</fromElementUID><toElementUID>R2E</toElementUID>
+  <controlSurfaces><leadingEdgeDevices>{SLAT}</leadingEdgeDevices><trailingEdgeDevices>{FLAP}</trailingEdgeDevices>
+  <spoilers>{SPOILER}</spoilers></controlSurfaces></componentSegment></componentSegments></wing>"""
+
+
+def section_area_aft(xi, chord=2.0):
+    return 0.3 * chord ** 2 * (1 / 6 - xi ** 2 / 2 + xi ** 3 / 3)
+
+
+def ask_rectangular(tmp_path, *queries):
+    with open(RECTANGULAR) as original:
+        text = original.read()
+    path = tmp_path / "rectangular-devices.xml"
+    path.write_text(text.replace("</wing>", DEVICES, 1))
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    answers = [json.loads(line) for line in result.stdout.splitlines()]
+    assert all("ok" in a for a in answers), answers
+    return [a["ok"] for a in answers]
+
+
+def test_a_plain_flap_at_rest_and_deflected_in_closed_form(tmp_path):
+    volume, area, box, motion, moved_volume, moved_box = ask_rectangular(
+        tmp_path, {"op": "component_volume", "uid": "Flap"}, {"op": "component_surface_area", "uid": "Flap"},
+        {"op": "bounding_box", "uid": "Flap"}, {"op": "control_surface_deflection", "uid": "Flap", "control_parameter": 1},
+        {"op": "control_surface_volume", "uid": "Flap", "control_parameter": 0.5},
+        {"op": "control_surface_bounding_box", "uid": "Flap", "control_parameter": 1})
+    # The CST sides are B-splines within 1e-5 of the chord of the parabolas.
+    assert volume == pytest.approx(3.0 * section_area_aft(0.7), rel=1e-6)
+    assert box["min"][:2] == pytest.approx([2.4, 1.0], abs=1e-6) and box["max"][:2] == pytest.approx([3.0, 4.0], abs=1e-6)
+    assert box["max"][2] == pytest.approx(0.15 * 2 * 0.7 * 0.3, abs=1e-6), "the skin's height at the flap's front"
+    assert area > 2 * 3.0 * 0.6, "skins above and below, front face and sides"
+    # The hinge line lies on the chord at x = 2.4: 20 degrees about +y through it, trailing edge down.
+    angle = math.radians(20)
+    assert motion["rotation"] == pytest.approx(20, abs=1e-9)
+    expected_rotation = [[math.cos(angle), 0, math.sin(angle)], [0, 1, 0], [-math.sin(angle), 0, math.cos(angle)]]
+    for row, expected in zip(motion["matrix"], expected_rotation):
+        assert row[:3] == pytest.approx(expected, abs=1e-12)
+    hinge = [2.4, 0.0, 0.0]
+    translation = [hinge[i] - sum(expected_rotation[i][k] * hinge[k] for k in range(3)) for i in range(3)]
+    assert [row[3] for row in motion["matrix"]] == pytest.approx(translation, abs=1e-12)
+    assert moved_volume == pytest.approx(volume, rel=1e-7), "a rigid motion keeps the volume"
+    # The trailing edge (x = 3, z = 0) turns down to 2.4 + 0.6 cos 20°, −0.6 sin 20°.
+    assert moved_box["min"][2] == pytest.approx(-0.6 * math.sin(angle), abs=1e-6)
+    assert moved_box["max"][0] == pytest.approx(2.4 + 0.6 * math.cos(angle), abs=1e-3)
+
+
+def test_a_slat_and_a_spoiler_lie_where_their_borders_say(tmp_path):
+    slat, slat_box, slat_motion, spoiler, spoiler_box = ask_rectangular(
+        tmp_path, {"op": "component_volume", "uid": "Slat"}, {"op": "bounding_box", "uid": "Slat"},
+        {"op": "control_surface_deflection", "uid": "Slat", "control_parameter": 1},
+        {"op": "component_volume", "uid": "Spoiler"}, {"op": "bounding_box", "uid": "Spoiler"})
+    # The slat's chord ends at xsi 0.15; its hollow back meets the skins at 0.15 of that chord
+    # from its end (xsi 0.1275) and is deepest halfway (xsi 0.075): it holds the nose up to
+    # 0.075 and lies within the nose up to 0.1275.
+    def nose(xi):
+        return 3.0 * (section_area_aft(0.0) - section_area_aft(xi))
+
+    assert nose(0.075) < slat < nose(0.1275)
+    assert slat_box["min"][:2] == pytest.approx([1.0, 1.0], abs=1e-6) and slat_box["max"][0] <= 1.3 + 1e-6
+    assert slat_motion["rotation"] == pytest.approx(20, abs=1e-9) and slat_motion["matrix"][0][2] < 0, "nose down"
+    # The spoiler is the upper half of the wing between xsi 0.5 and 0.65 over eta 0.3 .. 0.6.
+    upper_half = 1.5 * (section_area_aft(0.5) - section_area_aft(0.65)) / 2
+    assert spoiler == pytest.approx(upper_half, rel=1e-5)
+    assert spoiler_box["min"] == pytest.approx([2.0, 1.5, 0.0], abs=1e-6)
+    assert spoiler_box["max"][:2] == pytest.approx([2.3, 3.0], abs=1e-6)
+
+
+def test_control_surface_conformance_does_not_regress():
+    passed, output = conformance_passed("cases-controlsurfaces.json")
+    # 9 of 233 do not pass yet: boxes of trimmed device faces and one aileron's area
+    # (docs/controlsurfaces.md). This floor guards what works.
+    assert passed >= 224, output[-3000:]

@@ -69,7 +69,12 @@ ELEMENTS = """
                 </structure>
                 <controlSurfaces>
                   <trailingEdgeDevices>
-                    <trailingEdgeDevice uID="Flap"><name>f</name><parentUID>MainWing_CS</parentUID></trailingEdgeDevice>
+                    <trailingEdgeDevice uID="Flap"><name>f</name><parentUID>MainWing_CS</parentUID>
+                      <outerShape>
+                        <innerBorder><etaLE><eta>0.2</eta></etaLE><xsiLE><xsi>0.7</xsi></xsiLE></innerBorder>
+                        <outerBorder><etaLE><eta>0.5</eta></etaLE><xsiLE><xsi>0.7</xsi></xsiLE></outerBorder>
+                      </outerShape>
+                    </trailingEdgeDevice>
                   </trailingEdgeDevices>
                   <spoilers><spoiler uID="Spoiler"><name>s</name><parentUID>MainWing_CS</parentUID></spoiler></spoilers>
                 </controlSurfaces>
@@ -100,19 +105,20 @@ def test_every_geometric_element_is_listed_with_its_type_and_plugin(with_element
                  "control_surface Spoiler  parent: MainWing", "landing_gear NoseGear  parent: Fuselage",
                  "generic_system Battery  parent: -", "system_component Cell  parent: Battery"):
         assert line in info.stdout, (line, info.stdout)
-    assert "plugin: controlsurfaces (no builder yet)" in info.stdout
+    assert "control_surface Flap  parent: MainWing_CS  plugin: controlsurfaces\n" in info.stdout
     assert "plugin: none loaded" in info.stdout  # landing gear: no built-in plugin claims it
     assert "names no geometric component" not in info.stderr  # a device's parentUID names its component segment
 
 
 def test_build_says_for_every_element_what_became_of_it(with_elements):
     built = airshape("build", str(with_elements))
-    assert built.returncode == 0, built.stdout + built.stderr  # nothing failed
+    assert built.returncode == 1, built.stdout + built.stderr  # the spoiler without an outer shape failed
     lines = built.stdout.splitlines()
     assert lines[0].endswith("building 10 components")
     said = {line.split()[1]: line for line in lines[1:]}
     assert "valid solid" in said["MainWing"]
-    assert "no builder yet for control_surface (plugin controlsurfaces)" in said["Flap"]
+    assert "valid solid" in said["Flap"]
+    assert "spoiler[1]: the device has no outerShape with an inner and an outer border" in said["Spoiler"]
     assert "no builder yet for wing_spar (plugin structure)" in said["FrontSpar"]
     assert "no builder yet for generic_system (plugin generic)" in said["Battery"]
     assert "not supported: no loaded plugin builds landingGear" in said["NoseGear"]

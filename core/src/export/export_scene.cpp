@@ -22,12 +22,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// Indices of the components to export, in build order: those named, or every one a
-/// plugin builds (none, when no plugin builds any).
+/// plugin builds that is not inside another (none, when no plugin builds any).
 std::vector<std::size_t> selectedComponents(const Configuration& configuration, const ExportOptions& options) {
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<bool> wanted(graph.components().size(), false);
-  if (options.components.empty())  // every component on its own; parts (segments) are in their parents
-    for (std::size_t index = 0; index < wanted.size(); ++index) wanted[index] = !graph.components()[index].part;
+  // Every component on its own; parts (segments) and what lies inside its parent (devices at
+  // rest) are in their parents already.
+  if (options.components.empty())
+    for (std::size_t index = 0; index < wanted.size(); ++index)
+      wanted[index] = !graph.components()[index].part && !graph.components()[index].insideParent;
   for (const std::string& uid : options.components) {
     const long index = graph.find(uid);
     if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");

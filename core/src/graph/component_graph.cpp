@@ -75,7 +75,7 @@ void addWingContents(const std::string& wing, std::vector<ComponentLocation>& lo
                                        {"leadingEdgeDevice", "leadingEdgeDevices"},
                                        {"spoiler", "spoilers"}}) {
     const std::string path = segment + "/controlSurfaces/" + folder + "/" + device;
-    locations.push_back({device, path, "control_surface"});
+    locations.push_back({device, path, "control_surface", false, true});
     addStructure(path + "/structure");
   }
 }
@@ -177,6 +177,7 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
   component.nodeType = location.nodeType;
   component.typeName = location.typeName;
   component.part = location.part;
+  component.insideParent = location.insideParent;
   if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
   component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
   component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);

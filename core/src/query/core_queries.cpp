@@ -37,7 +37,8 @@ Json boundingBox(Configuration& configuration, const Json& query) {
   // The whole configuration, mirrored halves included: every component a plugin builds.
   Bnd_Box all;
   for (const auto& component : configuration.components().components()) {
-    if (component.part || configuration.shapes().find(component.nodeType) == nullptr) continue;
+    if (component.part || component.insideParent || configuration.shapes().find(component.nodeType) == nullptr)
+      continue;
     const Bnd_Box box = tightBox(configuration.shapes().shapeOf(configuration, component.uid));
     all.Add(box);
     const std::string symmetry = model::resolvedSymmetry(configuration, component.uid);

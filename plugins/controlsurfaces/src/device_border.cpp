@@ -158,6 +158,25 @@ TopoDS_Wire shapedWire(const BorderDefinition& border, const BorderPlane& plane,
   return wire.Wire();
 }
 
+/// A spoiler's section: the wing between the border's leading and trailing edge above the
+/// line at relHeight between the skins, closed well above the wing.
+TopoDS_Wire panelWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing) {
+  const auto [frontLower, frontUpper] = skinCrossings(border, plane, wing, 1.0);
+  const auto [backLower, backUpper] = skinCrossings(border, plane, wing, 0.0);
+  auto lowerSide = [&](const SkinCrossing& lower, const SkinCrossing& upper) {
+    return gp_Pnt2d(lower.point.XY() * (1.0 - border.relHeight) + upper.point.XY() * border.relHeight);
+  };
+  const gp_Pnt2d front = lowerSide(frontLower, frontUpper), back = lowerSide(backLower, backUpper);
+  const double height = kReach * std::max(std::abs(frontUpper.point.Y()), std::abs(backUpper.point.Y()));
+  const gp_Pnt2d frontUp(front.X(), height), backUp(back.X(), height);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(straightEdge(plane, front, frontUp));
+  wire.Add(straightEdge(plane, frontUp, backUp));
+  wire.Add(straightEdge(plane, backUp, back));
+  wire.Add(straightEdge(plane, back, front));
+  return wire.Wire();
+}
+
 /// The border's own airfoil: x scaled to the border's chord, z by its scaling, laid into the
 /// border plane (profile x along the chord, profile z along the plane's y).
 TopoDS_Wire airfoilWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Wire& airfoil) {
@@ -191,6 +210,8 @@ TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane,
       return shapedWire(border, plane, wing, -kReach);
     case BorderDefinition::Nose::Airfoil:
       return airfoilWire(border, plane, airfoil);
+    case BorderDefinition::Nose::Panel:
+      return panelWire(border, plane, wing);
     default:
       return straightWire(border, plane, wing);
   }
@@ -257,6 +278,8 @@ BorderDefinition borderOf(const schema::ControlSurfaceBorderSpoilerType& border)
   if (!border.xsiTE) return withMissing(d, "xsiTE");
   d.xsiLE = border.xsiLE->xsi;
   d.xsiTE = border.xsiTE->xsi;
+  d.nose = BorderDefinition::Nose::Panel;
+  d.relHeight = border.relHeightLE.value_or(0.5);
   if (border.airfoil) {
     d.nose = BorderDefinition::Nose::Airfoil;
     d.airfoilUid = border.airfoil->airfoilUID;

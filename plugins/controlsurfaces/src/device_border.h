@@ -25,7 +25,8 @@ struct BorderDefinition {
     Straight,          ///< cut straight across the wing at the leading edge
     LeadingEdgeShape,  ///< a rounded nose through a point at relHeight between the skins (flaps)
     InnerShape,        ///< a hollow trailing end, rounded through a point between the skins (slats)
-    Airfoil            ///< its own airfoil, scaled to the border's chord
+    Airfoil,           ///< its own airfoil, scaled to the border's chord
+    Panel              ///< the upper skin between the leading and trailing edge, down to relHeight (spoilers)
   };
   std::string xpath;
   std::string missing;  ///< the required element the border lacks (then nothing else is set)
@@ -34,7 +35,8 @@ struct BorderDefinition {
   Nose nose = Nose::Straight;
   /// For a shaped nose: where the rounded edge meets the upper and the lower skin and where
   /// its middle point lies, as shares of the border's chord from its trailing edge (1 is the
-  /// leading edge), and the middle point's height between the skins.
+  /// leading edge), and the middle point's height between the skins (for a panel: the height
+  /// of its lower side).
   double xsiUpperSkin = 1.0, xsiLowerSkin = 1.0, xsiMiddle = 1.0, relHeight = 0.5;
   std::string airfoilUid;
   double airfoilScaleZ = 1.0;

@@ -49,21 +49,19 @@ DeviceGeometry::DeviceGeometry(const Configuration& configuration, const wing::W
 }
 
 double DeviceGeometry::componentSegmentEta(const RelativeCoordinate& eta, const std::string& xpath) const {
-  const graph::ComponentGraph& components = configuration_.components();
-  const long reference = components.find(eta.referenceUid);
-  const bool otherComponentSegment =
-      reference >= 0 && eta.referenceUid != device_.componentSegmentUid &&
-      components.components()[static_cast<std::size_t>(reference)].typeName == "wing_component_segment";
-  if (otherComponentSegment) {
-    // Written by copying a device from another wing, as often; the reference library reads
-    // the eta as the device's own component segment's, and so does this plugin.
+  const std::string& cs = device_.componentSegmentUid;
+  if (eta.referenceUid.empty() || eta.referenceUid == cs) return eta.value;
+  try {
+    return wing_.componentSegmentEta(configuration_, cs, eta.referenceUid, eta.value);
+  } catch (const Error& notConvertible) {
+    // Files often refer to another component segment or to the device itself (copied from
+    // elsewhere); the reference library reads such an eta as the device's own component
+    // segment's, and so does this plugin, saying so.
     configuration_.warnAboutGeometry({Problem::Severity::Warning, xpath,
-                                      "referenceUID '" + eta.referenceUid + "' is another component segment than '" +
-                                          device_.componentSegmentUid + "'; eta read as one of '" +
-                                          device_.componentSegmentUid + "'"});
+                                      "referenceUID '" + eta.referenceUid + "' is neither component segment '" + cs +
+                                          "' nor one of its wing segments; eta read as one of '" + cs + "'"});
     return eta.value;
   }
-  return wing_.componentSegmentEta(configuration_, device_.componentSegmentUid, eta.referenceUid, eta.value);
 }
 
 gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const {

@@ -19,6 +19,10 @@ struct ComponentLocation {
   /// segments) or the model itself: a component that queries measure, but that `build` and
   /// `export` do not build on their own.
   bool part = false;
+  /// Lies inside its parent's solid, which it was cut from (control devices): built and
+  /// measured on its own, but exported only when named, and not part of the configuration's
+  /// box (its parent covers it).
+  bool insideParent = false;
 };
 
 /// The node type of the model element itself (type `plane`), which has no shape.
@@ -34,9 +38,10 @@ const std::vector<ComponentLocation>& standardComponentLocations();
 struct Component {
   std::string uid;  ///< empty for an element without one (the schema requires it; validate says so)
   std::string nodeType;
-  std::string typeName;   ///< ComponentLocation::typeName
-  bool part = false;      ///< ComponentLocation::part
-  std::string parentUid;  ///< its parentUID, else the component it lies in; empty: attached to nothing
+  std::string typeName;       ///< ComponentLocation::typeName
+  bool part = false;          ///< ComponentLocation::part
+  bool insideParent = false;  ///< ComponentLocation::insideParent
+  std::string parentUid;      ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
   const xercesc::DOMElement* element = nullptr;

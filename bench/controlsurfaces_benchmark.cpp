@@ -1,0 +1,64 @@
+// Control devices through the plugin, as a user meets them: every device of a wing built at
+// rest (the wing already built), and one further deflection of a built device (its motion and
+// the measure of the moved shape).
+// Run: build/bin/airshape_bench_controlsurfaces (needs ../shared/data/cpacs).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "airshape/configuration.h"
+#include "airshape/query/query_service.h"
+#include "bench_support.h"
+
+namespace {
+
+using airshape::bench::host;
+using airshape::bench::sharedCpacs;
+using airshape::query::Json;
+
+/// The uIDs of every device (spoilers too) of the first wing.
+std::vector<std::string> devicesOfFirstWing(airshape::Configuration& configuration) {
+  std::vector<std::string> uids;
+  for (const char* kind : {"control_surface", "spoiler"}) {
+    const Json count = host().queries().find(std::string(kind) + "_count")->handler(configuration, {{"wing", 1}});
+    for (int i = 1; i <= count.get<int>(); ++i)
+      uids.push_back(
+          host().queries().find(std::string(kind) + "_uid")->handler(configuration, {{"wing", 1}, {"index", i}}));
+  }
+  return uids;
+}
+
+void everyDeviceAtRest(benchmark::State& state, const std::string& name) {
+  const std::string path = sharedCpacs(name);
+  if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
+  for (auto _ : state) {
+    state.PauseTiming();
+    airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
+    airshape::query::answer(configuration, host().queries(), R"({"op":"wing_volume","wing":1})");
+    const std::vector<std::string> devices = devicesOfFirstWing(configuration);
+    state.ResumeTiming();
+    for (const std::string& uid : devices) benchmark::DoNotOptimize(configuration.shapes().shapeOf(configuration, uid));
+  }
+}
+
+void furtherDeflection(benchmark::State& state, const std::string& name) {
+  const std::string path = sharedCpacs(name);
+  if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
+  airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
+  const std::string uid = devicesOfFirstWing(configuration).front();
+  const auto* op = host().queries().find("control_surface_deflection");
+  const Json query = {{"op", "control_surface_deflection"}, {"uid", uid}, {"control_parameter", 0.5}};
+  op->handler(configuration, query);  // builds the device once
+  for (auto _ : state) benchmark::DoNotOptimize(op->handler(configuration, query));
+}
+
+BENCHMARK_CAPTURE(everyDeviceAtRest, aircraft_flaps, std::string("CPACS_30_aircraft_flaps.xml"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(furtherDeflection, aircraft_flaps, std::string("CPACS_30_aircraft_flaps.xml"))
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
