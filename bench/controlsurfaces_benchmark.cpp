@@ -15,6 +15,7 @@
 namespace {
 
 using airshape::bench::host;
+using airshape::bench::openWithPlugins;
 using airshape::bench::sharedCpacs;
 using airshape::query::Json;
 
@@ -35,7 +36,7 @@ void everyDeviceAtRest(benchmark::State& state, const std::string& name) {
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
   for (auto _ : state) {
     state.PauseTiming();
-    airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
+    airshape::Configuration configuration = openWithPlugins(path);
     airshape::query::answer(configuration, host().queries(), R"({"op":"wing_volume","wing":1})");
     const std::vector<std::string> devices = devicesOfFirstWing(configuration);
     state.ResumeTiming();
@@ -46,7 +47,7 @@ void everyDeviceAtRest(benchmark::State& state, const std::string& name) {
 void furtherDeflection(benchmark::State& state, const std::string& name) {
   const std::string path = sharedCpacs(name);
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
-  airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
+  airshape::Configuration configuration = openWithPlugins(path);
   const std::string uid = devicesOfFirstWing(configuration).front();
   const auto* op = host().queries().find("control_surface_deflection");
   const Json query = {{"op", "control_surface_deflection"}, {"uid", uid}, {"control_parameter", 0.5}};

@@ -160,10 +160,16 @@ gp_Trsf DeviceGeometry::motionAt(double controlParameter) const {
                                                 "'");
   if (!device_.path->innerHingePoint || !device_.path->outerHingePoint)
     throw Error(ErrorCode::InvalidModel, "the path has no inner and outer hinge point", {}, device_.xpath + "/path");
-  const gp_Pnt inner = hingePoint(*device_.path->innerHingePoint, device_.innerBorder, "innerHingePoint");
-  const gp_Pnt outer = hingePoint(*device_.path->outerHingePoint, device_.outerBorder, "outerHingePoint");
+  // The hinge points at rest are found once per configuration; a further deflection is the
+  // motion alone.
+  using HingeLine = std::pair<gp_Pnt, gp_Pnt>;
+  const auto hinge = configuration_.cache().obtain<HingeLine>("device-hinge-line:" + device_.uid, [&] {
+    return std::make_shared<const HingeLine>(
+        hingePoint(*device_.path->innerHingePoint, device_.innerBorder, "innerHingePoint"),
+        hingePoint(*device_.path->outerHingePoint, device_.outerBorder, "outerHingePoint"));
+  });
   try {
-    return hingeMotion(inner, outer, stepValuesAt(*device_.path->steps, controlParameter));
+    return hingeMotion(hinge->first, hinge->second, stepValuesAt(*device_.path->steps, controlParameter));
   } catch (const Error& error) {
     throw Error(error.code(), error.message(), {}, device_.xpath + "/path");
   }
