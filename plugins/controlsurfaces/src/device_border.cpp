@@ -217,13 +217,34 @@ TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane,
   }
 }
 
-BorderDefinition borderOf(const schema::ControlSurfaceBorderTrailingEdgeType& border) {
+namespace {
+
+/// What every kind of border has: where it is written, its leading- and trailing-edge etas.
+template <class Border>
+BorderDefinition withEtas(const Border& border) {
   BorderDefinition d;
   d.xpath = border.xpath;
-  d.missing = !border.etaLE ? "etaLE" : "";
-  if (!d.missing.empty()) return d;
+  if (!border.etaLE) return withMissing(d, "etaLE");
   d.etaLE = relative(*border.etaLE);
   d.etaTE = border.etaTE ? relative(*border.etaTE) : d.etaLE;
+  return d;
+}
+
+/// A border that gives its own airfoil is that airfoil, whatever else it says.
+template <class Border>
+BorderDefinition withAirfoil(BorderDefinition d, const Border& border) {
+  if (!border.airfoil) return d;
+  d.nose = BorderDefinition::Nose::Airfoil;
+  d.airfoilUid = border.airfoil->airfoilUID;
+  d.airfoilScaleZ = border.airfoil->scalZ;
+  return d;
+}
+
+}  // namespace
+
+BorderDefinition borderOf(const schema::ControlSurfaceBorderTrailingEdgeType& border) {
+  BorderDefinition d = withEtas(border);
+  if (!d.missing.empty()) return d;
   if (!border.xsiLE) return withMissing(d, "xsiLE");
   d.xsiLE = border.xsiLE->xsi;
   d.xsiTE = 1.0;
@@ -233,21 +254,13 @@ BorderDefinition borderOf(const schema::ControlSurfaceBorderTrailingEdgeType& bo
     d.xsiUpperSkin = border.leadingEdgeShape->xsiUpperSkin;
     d.xsiLowerSkin = border.leadingEdgeShape->xsiLowerSkin;
     d.xsiMiddle = 1.0;
-  } else if (border.airfoil) {
-    d.nose = BorderDefinition::Nose::Airfoil;
-    d.airfoilUid = border.airfoil->airfoilUID;
-    d.airfoilScaleZ = border.airfoil->scalZ;
   }
-  return d;
+  return withAirfoil(d, border);
 }
 
 BorderDefinition borderOf(const schema::ControlSurfaceBorderLeadingEdgeType& border) {
-  BorderDefinition d;
-  d.xpath = border.xpath;
-  d.missing = !border.etaLE ? "etaLE" : "";
+  BorderDefinition d = withEtas(border);
   if (!d.missing.empty()) return d;
-  d.etaLE = relative(*border.etaLE);
-  d.etaTE = border.etaTE ? relative(*border.etaTE) : d.etaLE;
   d.xsiLE = 0.0;
   if (!border.xsiTE && !border.xsiTEUpper) return withMissing(d, "xsiTE");
   const double upper = border.xsiTE ? border.xsiTE->xsi : border.xsiTEUpper.value_or(0.0);
@@ -259,33 +272,20 @@ BorderDefinition borderOf(const schema::ControlSurfaceBorderLeadingEdgeType& bor
     d.xsiMiddle = border.innerShape->xsiTE;
     d.xsiUpperSkin = upper;
     d.xsiLowerSkin = lower;
-  } else if (border.airfoil) {
-    d.nose = BorderDefinition::Nose::Airfoil;
-    d.airfoilUid = border.airfoil->airfoilUID;
-    d.airfoilScaleZ = border.airfoil->scalZ;
   }
-  return d;
+  return withAirfoil(d, border);
 }
 
 BorderDefinition borderOf(const schema::ControlSurfaceBorderSpoilerType& border) {
-  BorderDefinition d;
-  d.xpath = border.xpath;
-  d.missing = !border.etaLE ? "etaLE" : "";
+  BorderDefinition d = withEtas(border);
   if (!d.missing.empty()) return d;
-  d.etaLE = relative(*border.etaLE);
-  d.etaTE = border.etaTE ? relative(*border.etaTE) : d.etaLE;
   if (!border.xsiLE) return withMissing(d, "xsiLE");
   if (!border.xsiTE) return withMissing(d, "xsiTE");
   d.xsiLE = border.xsiLE->xsi;
   d.xsiTE = border.xsiTE->xsi;
   d.nose = BorderDefinition::Nose::Panel;
   d.relHeight = border.relHeightLE.value_or(0.5);
-  if (border.airfoil) {
-    d.nose = BorderDefinition::Nose::Airfoil;
-    d.airfoilUid = border.airfoil->airfoilUID;
-    d.airfoilScaleZ = border.airfoil->scalZ;
-  }
-  return d;
+  return withAirfoil(d, border);
 }
 
 }  // namespace airshape::controlsurfaces
