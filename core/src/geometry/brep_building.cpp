@@ -26,6 +26,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/skinning.h"
+#include "airshape/model/placement.h"
 
 namespace airshape::geometry {
 
@@ -84,9 +85,7 @@ std::optional<gp_Pln> planeOfPoles(const std::vector<Handle(Geom_BSplineCurve)>&
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
   Handle(Geom_BSplineCurve) moved = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
   for (int i = 1; i <= moved->NbPoles(); ++i) {
-    const gp_Pnt& p = moved->Pole(i);
-    const Eigen::Vector3d q = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
-    moved->SetPole(i, gp_Pnt(q.x(), q.y(), q.z()));
+    moved->SetPole(i, model::apply(transform, moved->Pole(i)));
   }
   return moved;
 }

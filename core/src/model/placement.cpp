@@ -61,6 +61,11 @@ bool findPlaced(const schema::CpacsType& cpacs, const std::string& uid, Placed& 
 
 }  // namespace
 
+gp_Pnt apply(const Transform& transform, const gp_Pnt& point) {
+  const Eigen::Vector3d moved = transform * Eigen::Vector3d(point.X(), point.Y(), point.Z());
+  return {moved.x(), moved.y(), moved.z()};
+}
+
 Transform transformationMatrix(const schema::TransformationType* transformation) {
   Transform result = Transform::Identity();
   if (transformation == nullptr) return result;

@@ -95,17 +95,17 @@ OuterCorners outerCorners(const BorderPlane& plane, const gp_Pnt2d& lower, const
 /// Cut straight across the wing at the border's leading edge, the device aft of it. A border
 /// whose leading edge is the wing's (the whole chord moves) touches the skins in one point:
 /// the cut then runs along the plane's y, as high and low as a chord.
-TopoDS_Wire straightWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing) {
+TopoDS_Wire straightWire(const BorderPlane& plane, const TopoDS_Shape& wing) {
   OuterCorners c;
-  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-7 * plane.chord);
+  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-9 * plane.chord);
   const bool atLeadingEdge = hits.size() < 2 || hits.front().point.Distance(hits.back().point) < 1e-7 * plane.chord;
   if (atLeadingEdge) {
     c = outerCorners(plane, gp_Pnt2d(0.0, -plane.chord), gp_Pnt2d(0.0, plane.chord), gp_Vec2d(0.0, 1.0),
                      gp_Vec2d(0.0, -1.0), kReach);
   } else {
-    const auto [lower, upper] = skinCrossings(border, plane, wing, 1.0);
-    const gp_Vec2d across(lower.point, upper.point);
-    c = outerCorners(plane, lower.point, upper.point, across, across.Reversed(), kReach);
+    const gp_Pnt2d lower = inPlane(plane, hits.front().point), upper = inPlane(plane, hits.back().point);
+    const gp_Vec2d across(lower, upper);
+    c = outerCorners(plane, lower, upper, across, across.Reversed(), kReach);
   }
   BRepBuilderAPI_MakeWire wire;
   wire.Add(straightEdge(plane, c.lowerOut, c.upperOut));
@@ -213,7 +213,7 @@ TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane,
     case BorderDefinition::Nose::Panel:
       return panelWire(border, plane, wing);
     default:
-      return straightWire(border, plane, wing);
+      return straightWire(plane, wing);
   }
 }
 

@@ -21,11 +21,6 @@ namespace {
 
 using Surface = wing::WingServices::Surface;
 
-gp_Pnt apply(const model::Transform& transform, const gp_Pnt& p) {
-  const Eigen::Vector3d q = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
-  return {q.x(), q.y(), q.z()};
-}
-
 const schema::WingType& wingNamed(const Configuration& configuration, const std::string& uid) {
   const model::ModelComponents& model = model::modelHolding(configuration, uid);
   return model::findByUid(configuration, model, model.wings, uid, "wing");
@@ -143,12 +138,12 @@ gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hi
 
   // The reference places hinge points by the wing's own transformation only.
   const schema::WingType& wing = wingNamed(configuration_, device_.wingUid);
-  gp_Pnt local = apply(model::componentTransform(configuration_, device_.wingUid).inverse(), between);
+  gp_Pnt local = model::apply(model::componentTransform(configuration_, device_.wingUid).inverse(), between);
   if (hinge.translation) {
     const schema::PointType& t = *hinge.translation;
     local.Translate(gp_Vec(t.x.value_or(0.0), t.y.value_or(0.0), t.z.value_or(0.0)));
   }
-  return apply(model::transformationMatrix(wing.transformation ? &*wing.transformation : nullptr), local);
+  return model::apply(model::transformationMatrix(wing.transformation ? &*wing.transformation : nullptr), local);
 }
 
 gp_Trsf DeviceGeometry::motionAt(double controlParameter) const {

@@ -11,11 +11,6 @@ namespace airshape::wing {
 
 namespace {
 
-gp_Pnt apply(const model::Transform& transform, const gp_Pnt& point) {
-  const Eigen::Vector3d p = transform * Eigen::Vector3d(point.X(), point.Y(), point.Z());
-  return gp_Pnt(p.x(), p.y(), p.z());
-}
-
 gp_Pnt lerp(const gp_Pnt& a, const gp_Pnt& b, double share) {
   return gp_Pnt((1.0 - share) * a.XYZ() + share * b.XYZ());
 }
@@ -52,10 +47,10 @@ class AirfoilLibrary {
 
 }  // namespace
 
-gp_Pnt SegmentEnd::upper(double xsi) const { return apply(transform, profile->upper(xsi)); }
-gp_Pnt SegmentEnd::lower(double xsi) const { return apply(transform, profile->lower(xsi)); }
-gp_Pnt SegmentEnd::leadingEdge() const { return apply(transform, profile->leadingEdge()); }
-gp_Pnt SegmentEnd::trailingEdge() const { return apply(transform, profile->trailingEdge()); }
+gp_Pnt SegmentEnd::upper(double xsi) const { return model::apply(transform, profile->upper(xsi)); }
+gp_Pnt SegmentEnd::lower(double xsi) const { return model::apply(transform, profile->lower(xsi)); }
+gp_Pnt SegmentEnd::leadingEdge() const { return model::apply(transform, profile->leadingEdge()); }
+gp_Pnt SegmentEnd::trailingEdge() const { return model::apply(transform, profile->trailingEdge()); }
 
 std::shared_ptr<const WingGeometry> WingGeometry::of(const Configuration& configuration, const schema::WingType& wing) {
   return configuration.cache().obtain<WingGeometry>("wing-geometry:" + wing.uID, [&] {

@@ -19,11 +19,6 @@ namespace airshape::wing {
 
 namespace {
 
-gp_Pnt apply(const model::Transform& transform, const gp_Pnt& p) {
-  const Eigen::Vector3d q = transform * Eigen::Vector3d(p.X(), p.Y(), p.Z());
-  return {q.x(), q.y(), q.z()};
-}
-
 gp_Vec applyLinear(const model::Transform& transform, const gp_Vec& v) {
   const Eigen::Vector3d q = transform.linear() * Eigen::Vector3d(v.X(), v.Y(), v.Z());
   return {q.x(), q.y(), q.z()};
@@ -110,8 +105,8 @@ class WingServicesOfThisPlugin final : public WingServices {
     const model::Transform toWing = toGlobal.inverse();
     const gp_Vec spanwise = leadingEdgeSeenFromFront(*geometry, segment, toWing, eta);
     const ComponentSegment::SegmentPoint front = segment.toSegment(eta, 0.0);
-    const gp_Pnt leadingEdge = apply(toWing, geometry->chordPoint(front.segment, front.eta, 0.0));
-    const gp_Pnt trailingEdge = apply(toWing, geometry->chordPoint(front.segment, front.eta, 1.0));
+    const gp_Pnt leadingEdge = model::apply(toWing, geometry->chordPoint(front.segment, front.eta, 0.0));
+    const gp_Pnt trailingEdge = model::apply(toWing, geometry->chordPoint(front.segment, front.eta, 1.0));
     const gp_Vec chord(leadingEdge, trailingEdge);
     if (chord.Magnitude() < 1e-15)
       throw Error(ErrorCode::InvalidModel,
@@ -136,7 +131,7 @@ class WingServicesOfThisPlugin final : public WingServices {
                                          const model::Transform& toWing, double eta) {
     std::vector<gp_Pnt> points;
     auto add = [&](const gp_Pnt& global) {
-      const gp_Pnt local = apply(toWing, global);
+      const gp_Pnt local = model::apply(toWing, global);
       points.emplace_back(0.0, local.Y(), local.Z());
     };
     add(geometry.segments()[segment.segments().front()].inner.leadingEdge());

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <gp_Pnt.hxx>
 
 #include "airshape/schema/generated/cpacs_model.h"
 
@@ -16,6 +17,9 @@ namespace airshape::model {
 
 /// An affine map of 3-D points (CPACS transformations scale non-uniformly).
 using Transform = Eigen::Affine3d;
+
+/// A point moved by a transform.
+gp_Pnt apply(const Transform& transform, const gp_Pnt& point);
 
 /// The matrix of one <transformation>: T · Rx(a) · Ry(b) · Rz(c) · S, angles in degrees;
 /// a missing element is the identity, a missing coordinate of a present one is 0 (the
