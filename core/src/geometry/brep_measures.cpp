@@ -72,13 +72,23 @@ bool isIsoLine(Handle(Geom2d_Curve) pcurve) {
 std::optional<RectangularPatch> rectangularPatch(const TopoDS_Face& face) {
   Handle(Geom_BSplineSurface) surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
   if (surface.IsNull() || surface->IsURational() || surface->IsVRational()) return std::nullopt;
+  // Iso-lines are straight in the parameter plane, so the area they enclose there is the
+  // polygon of their ends; only when it fills the bounding rectangle is the face that
+  // rectangle (a notched face, as a cut leaves it, is bounded by iso-lines too).
+  double enclosed = 0.0;
   for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
     double first, last;
-    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(edges.Current()), face, first, last);
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
     if (!isIsoLine(pcurve)) return std::nullopt;
+    gp_Pnt2d from = pcurve->Value(first), to = pcurve->Value(last);
+    if (edge.Orientation() == TopAbs_REVERSED) std::swap(from, to);
+    enclosed += 0.5 * (from.X() * to.Y() - to.X() * from.Y());
   }
   RectangularPatch patch{surface, 0, 0, 0, 0};
   BRepTools::UVBounds(face, patch.u0, patch.u1, patch.v0, patch.v1);
+  const double rectangle = (patch.u1 - patch.u0) * (patch.v1 - patch.v0);
+  if (std::abs(std::abs(enclosed) - rectangle) > 1e-9 * rectangle) return std::nullopt;
   return patch;
 }
 
