@@ -60,6 +60,9 @@ ExportCommandOptions parseExportOptions(const Arguments& arguments) {
       options.exportOptions.components = exporting::splitAtCommas(arguments[++i]);
     } else if (argument == "--deflection" && hasValue) {
       parseDeflection(arguments[++i], options.exportOptions);
+    } else if (argument == "--deflect" && hasValue) {
+      const std::vector<exporting::Pose> poses = exporting::parsePoses(arguments[++i]);
+      options.exportOptions.poses.insert(options.exportOptions.poses.end(), poses.begin(), poses.end());
     } else if (argument == "--mirror") {
       options.exportOptions.mirror = true;
     } else if (argument == "--fused") {

@@ -48,7 +48,7 @@ const std::map<std::string, Command>& commands() {
       {"export",
        {runExportModule,
         "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"
-        "                 [--deflection LINEAR[,ANGULAR]] [--force] [--quiet]",
+        "                 [--deflect UID=P[,UID=P...]] [--deflection LINEAR[,ANGULAR]] [--force] [--quiet]",
         "Builds the components and writes them, in the format each OUT's extension names:\n"
         "  .step .stp   STEP AP214, an assembly with one product per component (named by uID),\n"
         "               face names as STEP names            .iges .igs  IGES, names and levels\n"
@@ -58,6 +58,9 @@ const std::map<std::string, Command>& commands() {
         "--components   only these uIDs (default: every component a plugin builds)\n"
         "--mirror       add the mirrored halves of components with a symmetry plane\n"
         "--fused        write one solid, the Boolean union of all (face names kept)\n"
+        "--deflect      control devices (flaps, slats, spoilers) at control parameter P (a\n"
+        "               number, min or max; all=min|max for every device): each written as\n"
+        "               a solid of its own, its wing with their cut-outs (one Boolean cut)\n"
         "--deflection   triangulation of STL/VTK/glTF/OBJ: largest distance to the surface\n"
         "               in metres (default per component: 1 % of volume/area), and the\n"
         "               largest angle between normals in radians (default 0.2)\n"

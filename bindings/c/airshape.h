@@ -67,6 +67,24 @@ airshape_status airshape_cache_statistics(airshape_configuration* configuration,
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
                                 int mirror, int fused, double linear_deflection, double angular_deflection);
 
+/* Exports with control devices deflected: deflect is "UID=P,UID=P,..." with P a number, min
+ * or max, UID a device or "all" (docs/controlsurfaces.md); NULL or "" exports as above. */
+airshape_status airshape_export_deflected(airshape_configuration* configuration, const char* path,
+                                          const char* components, const char* deflect, int mirror, int fused,
+                                          double linear_deflection, double angular_deflection);
+
+/* Control devices of a wing (1-based index, spoilers apart) and, by uID, their control
+ * parameter range and rigid motion at p: matrix is [R | t] by rows (12 numbers), rotation the
+ * hinge-line rotation in degrees. */
+airshape_status airshape_control_surface_count(airshape_configuration* configuration, int wing, int* count);
+airshape_status airshape_control_surface_uid(airshape_configuration* configuration, int wing, int index, char** uid);
+airshape_status airshape_spoiler_count(airshape_configuration* configuration, int wing, int* count);
+airshape_status airshape_spoiler_uid(airshape_configuration* configuration, int wing, int index, char** uid);
+airshape_status airshape_control_surface_range(airshape_configuration* configuration, const char* uid, double* minimum,
+                                               double* maximum);
+airshape_status airshape_control_surface_motion(airshape_configuration* configuration, const char* uid, double p,
+                                                double matrix[12], double* rotation);
+
 /* Wings. */
 airshape_status airshape_wing_count(airshape_configuration* configuration, int* count);
 airshape_status airshape_wing_uid(airshape_configuration* configuration, int wing, char** uid);

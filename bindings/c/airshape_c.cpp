@@ -230,13 +230,15 @@ airshape_status airshape_cache_statistics(airshape_configuration* configuration,
   });
 }
 
-airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
-                                int mirror, int fused, double linear_deflection, double angular_deflection) {
+airshape_status airshape_export_deflected(airshape_configuration* configuration, const char* path,
+                                          const char* components, const char* deflect, int mirror, int fused,
+                                          double linear_deflection, double angular_deflection) {
   return guarded([&] {
     require(configuration, "configuration");
     require(path, "path");
     airshape::exporting::ExportOptions options;
     if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
+    if (deflect != nullptr) options.poses = airshape::exporting::parsePoses(deflect);
     options.mirror = mirror != 0;
     options.fused = fused != 0;
     options.linearDeflection = linear_deflection;
@@ -246,6 +248,47 @@ airshape_status airshape_export(airshape_configuration* configuration, const cha
   });
 }
 
+airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
+                                int mirror, int fused, double linear_deflection, double angular_deflection) {
+  return airshape_export_deflected(configuration, path, components, nullptr, mirror, fused, linear_deflection,
+                                   angular_deflection);
+}
+
+airshape_status airshape_control_surface_count(airshape_configuration* c, int wing, int* result) {
+  return count(c, "control_surface_count", {{"wing", wing}}, result);
+}
+airshape_status airshape_control_surface_uid(airshape_configuration* c, int wing, int index, char** uid) {
+  return text(c, "control_surface_uid", {{"wing", wing}, {"index", index}}, uid);
+}
+airshape_status airshape_spoiler_count(airshape_configuration* c, int wing, int* result) {
+  return count(c, "spoiler_count", {{"wing", wing}}, result);
+}
+airshape_status airshape_spoiler_uid(airshape_configuration* c, int wing, int index, char** uid) {
+  return text(c, "spoiler_uid", {{"wing", wing}, {"index", index}}, uid);
+}
+airshape_status airshape_control_surface_range(airshape_configuration* c, const char* uid, double* minimum,
+                                               double* maximum) {
+  return guarded([&] {
+    require(uid, "uid");
+    const Json found = run(c, "control_surface_parameter_range", {{"uid", uid}});
+    if (minimum) *minimum = found.at("min").get<double>();
+    if (maximum) *maximum = found.at("max").get<double>();
+  });
+}
+airshape_status airshape_control_surface_motion(airshape_configuration* c, const char* uid, double p, double matrix[12],
+                                                double* rotation) {
+  return guarded([&] {
+    require(uid, "uid");
+    const Json found = run(c, "control_surface_deflection", {{"uid", uid}, {"control_parameter", p}});
+    if (matrix)
+      for (std::size_t row = 0; row < 3; ++row)
+        for (std::size_t column = 0; column < 4; ++column)
+          matrix[4 * row + column] = found.at("matrix").at(row).at(column).get<double>();
+    if (rotation) *rotation = found.at("rotation").get<double>();
+  });
+}
+
+/* Wings. */
 airshape_status airshape_wing_count(airshape_configuration* c, int* result) {
   return count(c, "wing_count", Json::object(), result);
 }

@@ -1,10 +1,5 @@
 #include "airshape/component_shapes.h"
 
-#include <BRepBuilderAPI_Transform.hxx>
-#include <TopoDS.hxx>
-#include <gp_Ax2.hxx>
-#include <gp_Trsf.hxx>
-
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/symmetry.h"
@@ -26,15 +21,7 @@ const NamedShape& ComponentShapes::mirroredShapeOf(const Configuration& configur
   if (plane == "none") throw Error(ErrorCode::InvalidArgument, "component '" + uid + "' has no symmetry plane");
   const NamedShape& original = namedShapeOf(configuration, uid);
   return *configuration.cache().obtain<NamedShape>("mirrored-shape:" + uid, [&] {
-    const gp_Dir normal = plane == "x-y" ? gp_Dir(0, 0, 1) : plane == "x-z" ? gp_Dir(0, 1, 0) : gp_Dir(1, 0, 0);
-    gp_Trsf mirror;
-    mirror.SetMirror(gp_Ax2(gp_Pnt(0, 0, 0), normal));
-    BRepBuilderAPI_Transform transform(original.shape, mirror, true);
-    auto mirrored = std::make_shared<NamedShape>();
-    mirrored->shape = transform.Shape();
-    for (const auto& [name, face] : original.faces)
-      mirrored->faces.emplace_back(name + " (mirrored)", TopoDS::Face(transform.ModifiedShape(face)));
-    return std::shared_ptr<const NamedShape>(mirrored);
+    return std::make_shared<const NamedShape>(transformedNamedShape(original, model::mirrorIn(plane), " (mirrored)"));
   });
 }
 

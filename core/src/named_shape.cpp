@@ -1,5 +1,12 @@
 #include "airshape/named_shape.h"
 
+#include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Trsf.hxx>
+
 #include "airshape/geometry/brep_building.h"
 
 namespace airshape {
@@ -12,6 +19,34 @@ NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>
   for (std::size_t i = 0; i < namedFaces.size(); ++i)
     if (!sewn[i].IsNull()) result.faces.emplace_back(namedFaces[i].first, sewn[i]);
   return result;
+}
+
+NamedShape namedBooleanResult(BRepAlgoAPI_BuilderAlgo& operation, const std::vector<const NamedShape*>& inputs) {
+  NamedShape result{operation.Shape(), {}};
+  TopTools_IndexedMapOfShape resultFaces;
+  TopExp::MapShapes(result.shape, TopAbs_FACE, resultFaces);
+  for (const NamedShape* input : inputs)
+    for (const auto& [name, face] : input->faces) {
+      if (operation.IsDeleted(face)) continue;
+      const TopTools_ListOfShape& pieces = operation.Modified(face);
+      if (pieces.IsEmpty()) {
+        if (resultFaces.Contains(face)) result.faces.emplace_back(name, face);
+        continue;
+      }
+      for (const TopoDS_Shape& piece : pieces)
+        if (resultFaces.Contains(piece)) result.faces.emplace_back(name, TopoDS::Face(piece));
+    }
+  return result;
+}
+
+NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transformation, const std::string& suffix) {
+  // Transformed copies: a shape moved by a location only loses its face names on the way
+  // through a later copy (exports copy what they mesh).
+  BRepBuilderAPI_Transform transform(shape.shape, transformation, true);
+  NamedShape transformed{transform.Shape(), {}};
+  for (const auto& [name, face] : shape.faces)
+    transformed.faces.emplace_back(name + suffix, TopoDS::Face(transform.ModifiedShape(face)));
+  return transformed;
 }
 
 }  // namespace airshape

@@ -20,6 +20,7 @@ static int failures = 0;
   } while (0)
 
 static const char* airliner;
+static const char* with_devices;
 
 /* The number a generic query answers. */
 static double queried(airshape_configuration* c, const char* query) {
@@ -185,16 +186,51 @@ static void handles_work_from_several_threads(void) {
   airshape_close(shared);
 }
 
+/* The rectangular wing with a flap, a slat and a spoiler: devices listed, ranges, the flap's
+ * motion (20 degrees about its hinge line on the chord at x = 2.4), an export with them deflected. */
+static void control_devices(const char* folder) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(with_devices, &c) == AIRSHAPE_OK);
+  int count = 0;
+  char* uid = NULL;
+  CHECK(airshape_control_surface_count(c, 1, &count) == AIRSHAPE_OK && count == 2);
+  CHECK(airshape_control_surface_uid(c, 1, 1, &uid) == AIRSHAPE_OK && strcmp(uid, "Flap") == 0);
+  airshape_free(uid);
+  CHECK(airshape_spoiler_count(c, 1, &count) == AIRSHAPE_OK && count == 1);
+  CHECK(airshape_spoiler_uid(c, 1, 1, &uid) == AIRSHAPE_OK && strcmp(uid, "Spoiler") == 0);
+  airshape_free(uid);
+  double minimum = NAN, maximum = NAN, matrix[12], rotation = NAN;
+  CHECK(airshape_control_surface_range(c, "Flap", &minimum, &maximum) == AIRSHAPE_OK && minimum == 0 && maximum == 1);
+  CHECK(airshape_control_surface_motion(c, "Flap", 1.0, matrix, &rotation) == AIRSHAPE_OK);
+  CHECK(fabs(rotation - 20) < 1e-9 && fabs(matrix[2] - sin(20 * M_PI / 180)) < 1e-12);
+  CHECK(fabs(matrix[3] - (2.4 - 2.4 * cos(20 * M_PI / 180))) < 1e-12);
+  CHECK(airshape_control_surface_motion(c, "Flap", 2.0, matrix, &rotation) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(strstr(airshape_last_error(), "outside the range") != NULL);
+
+  char path[4096];
+  snprintf(path, sizeof path, "%s/c_api_deflected.brep", folder);
+  remove(path);
+  CHECK(airshape_export_deflected(c, path, "Rect", "Flap=1,Slat=max", 0, 0, 0, 0) == AIRSHAPE_OK);
+  FILE* written = fopen(path, "r");
+  CHECK(written != NULL);
+  if (written) fclose(written);
+  CHECK(airshape_export_deflected(c, path, "Rect", "Rect=1", 0, 0, 0, 0) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(strstr(airshape_last_error(), "names no moving component") != NULL);
+  airshape_close(c);
+}
+
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    fprintf(stderr, "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER\n");
+  if (argc != 4) {
+    fprintf(stderr, "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER WING_WITH_DEVICES.xml\n");
     return 2;
   }
   airliner = argv[1];
+  with_devices = argv[3];
   bad_input_gives_statuses();
   typed_ops_agree_with_the_query();
   editing_and_exporting(argv[2]);
   handles_work_from_several_threads();
+  control_devices(argv[2]);
   if (failures == 0) printf("c_api_test: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

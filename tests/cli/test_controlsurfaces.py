@@ -8,6 +8,7 @@ import os
 import pytest
 
 from conftest import EXAMPLE, airshape, conformance_passed
+from independent_readers import gmsh_volumes, vtk_polydata
 
 with open(EXAMPLE) as example:
     AIRCRAFT = example.read()
@@ -74,60 +75,27 @@ def test_spoilers_are_counted_on_their_own(tmp_path):
 
 # A rectangular wing (chord 2, span 5, x from 1 to 3) of parabolic arcs z = ±0.15·c·ξ(1−ξ),
 # ξ = x/c: the section area aft of ξ0 is 0.3·c²·(1/6 − ξ0²/2 + ξ0³/3), so a plain flap's volume
-# is known in closed form, and its hinge line (on the chord, the airfoil is symmetric) too.
-RECTANGULAR = os.path.join(os.path.dirname(__file__), "..", "data", "wing-cst-rectangular.xml")
-
-
-def border(eta, xsi_le=None, xsi_te=None, extra=""):
-    text = f"<etaLE><eta>{eta}</eta><referenceUID>RectCS</referenceUID></etaLE>"
-    if xsi_le is not None:
-        text += f"<xsiLE><xsi>{xsi_le}</xsi><referenceUID>RectCS</referenceUID></xsiLE>"
-    if xsi_te is not None:
-        text += f"<xsiTE><xsi>{xsi_te}</xsi><referenceUID>RectCS</referenceUID></xsiTE>"
-    return text + extra
-
-
-def moving(kind, uid, inner, outer, hinge_xsi, rotation):
-    return (f'<{kind} uID="{uid}"><name>{uid}</name><parentUID>RectCS</parentUID>'
-            f"<outerShape><innerBorder>{inner}</innerBorder><outerBorder>{outer}</outerBorder></outerShape>"
-            f"<path><innerHingePoint><hingeXsi>{hinge_xsi}</hingeXsi><hingeRelHeight>0.5</hingeRelHeight></innerHingePoint>"
-            f"<outerHingePoint><hingeXsi>{hinge_xsi}</hingeXsi><hingeRelHeight>0.5</hingeRelHeight></outerHingePoint>"
-            f"<steps><step><controlParameter>0</controlParameter><hingeLineRotation>0</hingeLineRotation></step>"
-            f"<step><controlParameter>1</controlParameter><hingeLineRotation>{rotation}</hingeLineRotation></step>"
-            f"</steps></path></{kind}>")
-
-
-FLAP = moving("trailingEdgeDevice", "Flap", border(0.2, xsi_le=0.7), border(0.8, xsi_le=0.7), 0.7, 20)
-SLAT = moving("leadingEdgeDevice", "Slat", border(0.2, xsi_te=0.15, extra="<innerShape><relHeightTE>0.5</relHeightTE>"
-                                                                          "<xsiTE>0.5</xsiTE></innerShape>"),
-              border(0.8, xsi_te=0.15, extra="<innerShape><relHeightTE>0.5</relHeightTE><xsiTE>0.5</xsiTE></innerShape>"),
-              0.05, -20)
-SPOILER = moving("spoiler", "Spoiler", border(0.3, xsi_le=0.5, xsi_te=0.65, extra="<relHeightLE>0.5</relHeightLE>"),
-                 border(0.6, xsi_le=0.5, xsi_te=0.65, extra="<relHeightLE>0.5</relHeightLE>"), 0.5, -40)
-DEVICES = f"""<componentSegments><componentSegment uID="RectCS"><name>cs</name>
-  <fromElementUID>R1E</fromElementUID><toElementUID>R2E</toElementUID>
-  <controlSurfaces><leadingEdgeDevices>{SLAT}</leadingEdgeDevices><trailingEdgeDevices>{FLAP}</trailingEdgeDevices>
-  <spoilers>{SPOILER}</spoilers></controlSurfaces></componentSegment></componentSegments></wing>"""
+# is known in closed form, and its hinge line (on the chord, the airfoil is symmetric) too. Its
+# devices: a plain flap (aft of xsi 0.7, eta 0.2 .. 0.8, hinge on the chord at xsi 0.7, 20° at
+# p = 1), a slat (ahead of xsi 0.15 with a hollow back, -20° at p = 1), a spoiler (xsi 0.5 ..
+# 0.65, eta 0.3 .. 0.6, down to half the height).
+WITH_DEVICES = os.path.join(os.path.dirname(__file__), "..", "data", "wing-cst-devices.xml")
 
 
 def section_area_aft(xi, chord=2.0):
     return 0.3 * chord ** 2 * (1 / 6 - xi ** 2 / 2 + xi ** 3 / 3)
 
 
-def ask_rectangular(tmp_path, *queries):
-    with open(RECTANGULAR) as original:
-        text = original.read()
-    path = tmp_path / "rectangular-devices.xml"
-    path.write_text(text.replace("</wing>", DEVICES, 1))
-    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+def ask_rectangular(*queries):
+    result = airshape("query", WITH_DEVICES, stdin="".join(json.dumps(q) + "\n" for q in queries))
     answers = [json.loads(line) for line in result.stdout.splitlines()]
     assert all("ok" in a for a in answers), answers
     return [a["ok"] for a in answers]
 
 
-def test_a_plain_flap_at_rest_and_deflected_in_closed_form(tmp_path):
+def test_a_plain_flap_at_rest_and_deflected_in_closed_form():
     volume, area, box, motion, moved_volume, moved_box = ask_rectangular(
-        tmp_path, {"op": "component_volume", "uid": "Flap"}, {"op": "component_surface_area", "uid": "Flap"},
+        {"op": "component_volume", "uid": "Flap"}, {"op": "component_surface_area", "uid": "Flap"},
         {"op": "bounding_box", "uid": "Flap"}, {"op": "control_surface_deflection", "uid": "Flap", "control_parameter": 1},
         {"op": "control_surface_volume", "uid": "Flap", "control_parameter": 0.5},
         {"op": "control_surface_bounding_box", "uid": "Flap", "control_parameter": 1})
@@ -151,9 +119,9 @@ def test_a_plain_flap_at_rest_and_deflected_in_closed_form(tmp_path):
     assert moved_box["max"][0] == pytest.approx(2.4 + 0.6 * math.cos(angle), abs=1e-3)
 
 
-def test_a_slat_and_a_spoiler_lie_where_their_borders_say(tmp_path):
+def test_a_slat_and_a_spoiler_lie_where_their_borders_say():
     slat, slat_box, slat_motion, spoiler, spoiler_box = ask_rectangular(
-        tmp_path, {"op": "component_volume", "uid": "Slat"}, {"op": "bounding_box", "uid": "Slat"},
+        {"op": "component_volume", "uid": "Slat"}, {"op": "bounding_box", "uid": "Slat"},
         {"op": "control_surface_deflection", "uid": "Slat", "control_parameter": 1},
         {"op": "component_volume", "uid": "Spoiler"}, {"op": "bounding_box", "uid": "Spoiler"})
     # The slat's chord ends at xsi 0.15; its hollow back meets the skins at 0.15 of that chord
@@ -170,6 +138,47 @@ def test_a_slat_and_a_spoiler_lie_where_their_borders_say(tmp_path):
     assert spoiler == pytest.approx(upper_half, rel=1e-5)
     assert spoiler_box["min"] == pytest.approx([2.0, 1.5, 0.0], abs=1e-6)
     assert spoiler_box["max"][:2] == pytest.approx([2.3, 3.0], abs=1e-6)
+
+
+def export_summary(result):
+    """{solid name: volume} from the summary `airshape export` prints."""
+    assert result.returncode == 0, result.stderr
+    rows = result.stdout.split("area [m2]\n", 1)[1].split("total time")[0].strip().splitlines()
+    return {row.rsplit(None, 2)[0].strip(): float(row.rsplit(None, 2)[1]) for row in rows}
+
+
+def test_the_wing_with_deflected_devices_exports_as_named_solids(tmp_path):
+    source = WITH_DEVICES
+    step, vtp = tmp_path / "deflected.step", tmp_path / "deflected.vtp"
+    volumes = export_summary(airshape("export", str(source), "--deflect", "Flap=1,Slat=max,Spoiler=0.5",
+                                      "--components", "Rect", "-o", str(step), "-o", str(vtp)))
+    flap = 3.0 * section_area_aft(0.7)
+    assert volumes["Flap"] == pytest.approx(flap, abs=1e-4)
+    # The wing loses exactly what its devices take out of it (they do not overlap).
+    assert volumes["Rect"] == pytest.approx(1.0 - volumes["Flap"] - volumes["Slat"] - volumes["Spoiler"], abs=2e-4)
+    # A CAD reader sees the four solids, each of its own volume, the flap turned 20° about
+    # its hinge line (its trailing edge below the wing).
+    read = {name.rsplit("/", 1)[-1]: volume for name, volume in gmsh_volumes(str(step))}
+    assert sorted(read) == ["Flap", "Rect", "Slat", "Spoiler"]
+    assert read["Rect"] == pytest.approx(volumes["Rect"], rel=1e-2)
+    faces = set(vtk_polydata(str(vtp))["arrays"]["face"])
+    assert {"Flap/upper", "Flap/lower", "Flap/leading edge", "Flap/inner side", "Flap/outer side", "Slat/trailing edge",
+            "Spoiler/upper", "Flap/cut-out", "RS/upper"} <= faces
+    box = ask_rectangular({"op": "control_surface_bounding_box", "uid": "Flap", "control_parameter": 1})[0]
+    assert box["min"][2] == pytest.approx(-0.6 * math.sin(math.radians(20)), abs=1e-6)
+
+
+def test_without_deflect_the_export_is_unchanged_and_bad_poses_are_one_line(tmp_path):
+    source = WITH_DEVICES
+    plain = export_summary(airshape("export", str(source), "-o", str(tmp_path / "plain.brep")))
+    assert set(plain) == {"Rect", "Swept"} and plain["Rect"] == pytest.approx(1.0, abs=1e-6)
+    for deflect, message in (("Flap=3", "lies outside the range [0.000000, 1.000000] of 'Flap'"),
+                             ("Rect=1", "'Rect' names no moving component"), ("Flap", "expected UID=P"),
+                             ("all=0.5", "all takes min or max"), ("Flap=up", "'up' is not a control parameter")):
+        result = airshape("export", str(source), "--deflect", deflect, "-o", str(tmp_path / "bad.brep"))
+        assert result.returncode == 2 and message in result.stderr, (deflect, result.stderr)
+        assert len(result.stderr.strip().splitlines()) == 1
+        assert not (tmp_path / "bad.brep").exists()
 
 
 def test_control_surface_conformance_does_not_regress():

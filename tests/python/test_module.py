@@ -174,3 +174,32 @@ def test_installs_with_cmake(tmp_path):
                             env={"PATH": os.environ["PATH"], "PYTHONPATH": str(package)})
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("Wing ") and str(prefix) in result.stdout
+
+
+WITH_DEVICES = os.path.join(SOURCE, "tests", "data", "wing-cst-devices.xml")
+
+
+def test_control_surfaces_of_a_wing(tmp_path):
+    config = airshape.Configuration.open(WITH_DEVICES)
+    wing = config.wings["Rect"]
+    assert [device.uid for device in wing.control_surfaces] == ["Flap", "Slat"]
+    assert [device.uid for device in wing.spoilers] == ["Spoiler"]
+    flap = wing.control_surfaces["Flap"]
+    assert flap.type == "trailing_edge_device" and wing.spoilers[0].type == "spoiler"
+    assert flap.parameter_range == (0, 1)
+    motion = flap.deflection(1.0)
+    assert motion["rotation"] == pytest.approx(20) and motion["matrix"].shape == (3, 4)
+    # Aft of xsi 0.7 of parabolic arcs on a chord of 2, over 3 m of span (closed form).
+    at_rest = 3.0 * 0.3 * 4 * (1 / 6 - 0.49 / 2 + 0.343 / 3)
+    assert flap.volume() == pytest.approx(at_rest, rel=1e-6) and flap.volume(0.5) == pytest.approx(at_rest, rel=1e-7)
+    assert flap.bounding_box(1.0)["min"][2] < flap.bounding_box()["min"][2]
+    with pytest.raises(airshape.ArgumentError, match="outside the range"):
+        flap.deflection(3.0)
+    with pytest.raises(airshape.ArgumentError, match="has no control surface 'Spoiler'"):
+        wing.control_surfaces["Spoiler"]
+
+    deflected = tmp_path / "deflected.brep"
+    config.export(str(deflected), components=["Rect"], deflect={"Flap": 1.0, "Slat": "max"})
+    assert deflected.stat().st_size > 0
+    with pytest.raises(airshape.ArgumentError, match="names no moving component"):
+        config.export(str(tmp_path / "bad.brep"), deflect={"Rect": 1})

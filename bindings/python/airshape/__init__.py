@@ -13,7 +13,7 @@ CPACS path it concerns.
 """
 from __future__ import annotations
 
-from typing import Any, Iterator, List, Optional, Sequence, Union
+from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -21,7 +21,7 @@ from . import _airshape
 from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetError, PluginError,
                      WriteError)
 
-__all__ = ["Configuration", "Wing", "Fuselage", "Node", "NodeList", "Error", "FileError", "ModelError",
+__all__ = ["Configuration", "Wing", "Fuselage", "ControlSurface", "Node", "NodeList", "Error", "FileError", "ModelError",
            "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError"]
 
 Number = Union[int, float]
@@ -241,6 +241,96 @@ class Wing(_Component):
         """{"mac": length, "point": [x, y, z]}"""
         return self._op("mac")
 
+    @property
+    def control_surfaces(self) -> "_Devices":
+        """Its trailing- and leading-edge devices (no spoilers), by index or uID."""
+        return _Devices(self, "control_surface")
+
+    @property
+    def spoilers(self) -> "_Devices":
+        """Its spoilers, by index or uID."""
+        return _Devices(self, "spoiler")
+
+
+class ControlSurface:
+    """A control device of a wing (trailing-edge device, leading-edge device or spoiler): its
+    kind, its control parameter range, its rigid motion and its measures at rest or deflected
+    (docs/controlsurfaces.md)."""
+
+    def __init__(self, config: "Configuration", uid: str) -> None:
+        self._config = config
+        self.uid = uid
+
+    @property
+    def type(self) -> str:
+        """"trailing_edge_device", "leading_edge_device" or "spoiler"."""
+        return self._config.query("control_surface_type", uid=self.uid)
+
+    @property
+    def parameter_range(self) -> Tuple[float, float]:
+        """The control parameters of its first and last step, in document order."""
+        found = self._config.query("control_surface_parameter_range", uid=self.uid)
+        return found["min"], found["max"]
+
+    def deflection(self, p: float) -> dict:
+        """Its rigid motion at control parameter p: {"control_parameter", "rotation" (degrees),
+        "matrix": a 3x4 array [R | t]}; p outside the range raises ArgumentError."""
+        found = self._config.query("control_surface_deflection", uid=self.uid, control_parameter=p)
+        found["matrix"] = np.array(found["matrix"])
+        return found
+
+    def _measure(self, what: str, p: Optional[float]) -> Any:
+        if p is None:
+            return self._config.query(f"component_{what}" if what != "bounding_box" else what, uid=self.uid)
+        return self._config.query(f"control_surface_{what}", uid=self.uid, control_parameter=p)
+
+    def volume(self, p: Optional[float] = None) -> float:
+        """Its volume at rest, or deflected to control parameter p."""
+        return self._measure("volume", p)
+
+    def surface_area(self, p: Optional[float] = None) -> float:
+        """Its surface area at rest, or deflected to control parameter p."""
+        return self._measure("surface_area", p)
+
+    def bounding_box(self, p: Optional[float] = None) -> dict:
+        """{"min": [x, y, z], "max": [x, y, z]} at rest, or deflected to control parameter p."""
+        return self._measure("bounding_box", p)
+
+    def __repr__(self) -> str:
+        return f"ControlSurface({self.uid!r})"
+
+
+class _Devices(Sequence):
+    """The control surfaces (or the spoilers) of one wing, by 0-based index or by uID, in the
+    order of the query protocol."""
+
+    def __init__(self, wing: "Wing", kind: str) -> None:
+        self._wing, self._kind = wing, kind
+
+    def _uids(self) -> List[str]:
+        config, wing = self._wing._config, self._wing.uid
+        count = config.query(f"{self._kind}_count", wing=wing)
+        return [config.query(f"{self._kind}_uid", wing=wing, index=i) for i in range(1, count + 1)]
+
+    def __len__(self) -> int:
+        return self._wing._config.query(f"{self._kind}_count", wing=self._wing.uid)
+
+    def __getitem__(self, key):  # type: ignore[override]
+        uids = self._uids()
+        if isinstance(key, str):
+            if key not in uids:
+                raise ArgumentError(f"wing '{self._wing.uid}' has no {self._kind.replace('_', ' ')} '{key}'")
+            return ControlSurface(self._wing._config, key)
+        if key < 0:
+            key += len(uids)
+        if not 0 <= key < len(uids):
+            raise ArgumentError(f"{self._kind.replace('_', ' ')} index {key} is out of range ({len(uids)} on "
+                                f"wing '{self._wing.uid}')")
+        return ControlSurface(self._wing._config, uids[key])
+
+    def __iter__(self) -> Iterator:
+        return (ControlSurface(self._wing._config, uid) for uid in self._uids())
+
 
 class Fuselage(_Component):
     """A fuselage: points by segment, eta and zeta, and its measures."""
@@ -342,9 +432,13 @@ class Configuration:
         self._core.save(str(path))
 
     def export(self, path: str, components: Optional[List[str]] = None, mirror: bool = False, fused: bool = False,
-               linear_deflection: float = 0.0, angular_deflection: float = 0.0) -> None:
-        """Writes the geometry in the format the extension names (docs/export.md)."""
-        self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection)
+               linear_deflection: float = 0.0, angular_deflection: float = 0.0,
+               deflect: Optional[Dict[str, Union[float, str]]] = None) -> None:
+        """Writes the geometry in the format the extension names (docs/export.md). `deflect`
+        maps device uIDs (or "all") to control parameters (a number, "min" or "max"): those
+        devices are written deflected, their wings with the cut-outs (docs/controlsurfaces.md)."""
+        poses = ",".join(f"{uid}={_text(p)}" for uid, p in (deflect or {}).items())
+        self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection, poses)
 
     def cache_statistics(self) -> dict:
         """{"built", "reused", "invalidated", "builds_by_key"}: what the geometry cache did."""

@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include <gp_Trsf.hxx>
+
 #include "airshape/named_shape.h"
 
 namespace airshape {
@@ -12,6 +14,19 @@ class Configuration;
 
 /// Builds the solid of one component (by uID) of a configuration, its faces named.
 using ShapeBuilder = std::function<NamedShape(const Configuration& configuration, const std::string& uid)>;
+
+/// How a component moves inside the component it was cut from, by one control parameter (a
+/// flap in its wing), as the plugin that builds it says; the core poses such components for
+/// exports without knowing what they are.
+struct ComponentMotion {
+  /// The control parameters of its first and its last position.
+  std::function<std::pair<double, double>(const Configuration& configuration, const std::string& uid)> range;
+  /// Its rigid motion at a control parameter; Error outside the range.
+  std::function<gp_Trsf(const Configuration& configuration, const std::string& uid, double parameter)> at;
+  /// What its host (the exported component it lies in) loses when it moves: a solid to cut
+  /// out of the host, its faces named.
+  std::function<NamedShape(const Configuration& configuration, const std::string& uid)> cutOut;
+};
 
 /// The shape builders plugins register, by CPACS node type, so that any code (a wing asking
 /// for its parent fuselage, the bounding box, exports) gets a component's solid without
@@ -23,6 +38,13 @@ class ComponentShapes {
   const ShapeBuilder* find(const std::string& nodeType) const {
     const auto entry = builders_.find(nodeType);
     return entry == builders_.end() ? nullptr : &entry->second;
+  }
+
+  void addMotion(const std::string& nodeType, ComponentMotion motion) { motions_[nodeType] = std::move(motion); }
+  /// How components of a node type move, or nullptr for those that do not.
+  const ComponentMotion* findMotion(const std::string& nodeType) const {
+    const auto entry = motions_.find(nodeType);
+    return entry == motions_.end() ? nullptr : &entry->second;
   }
 
   /// The solid of the component with this uID and its face names, built once and cached
@@ -40,6 +62,7 @@ class ComponentShapes {
 
  private:
   std::map<std::string, ShapeBuilder> builders_;
+  std::map<std::string, ComponentMotion> motions_;
 };
 
 }  // namespace airshape

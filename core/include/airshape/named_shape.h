@@ -7,6 +7,9 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+class BRepAlgoAPI_BuilderAlgo;
+class gp_Trsf;
+
 namespace airshape {
 
 /// A component's solid with a name on each of its faces, so that a face can be found again
@@ -20,5 +23,15 @@ struct NamedShape {
 /// Sews named faces (null faces are left out) into one solid whose faces keep their names.
 /// Throws Error when they do not close.
 NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>& namedFaces);
+
+/// The result of a Boolean operation (fuse, cut, common) on named shapes, each of its faces
+/// named as the input face it came from: a face kept as it was keeps its name, the pieces of
+/// a split face inherit it; faces of inputs that name none of their faces stay unnamed.
+NamedShape namedBooleanResult(BRepAlgoAPI_BuilderAlgo& operation, const std::vector<const NamedShape*>& inputs);
+
+/// A transformed copy of a named shape (moved or mirrored by `transformation`), each face
+/// named as before plus `suffix`.
+NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transformation,
+                                 const std::string& suffix = "");
 
 }  // namespace airshape

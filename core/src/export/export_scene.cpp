@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 
 #include <BRepBuilderAPI_Copy.hxx>
 #include <Standard_Failure.hxx>
@@ -14,6 +16,7 @@
 #include "airshape/export/fused_shape.h"
 #include "airshape/graph/parallel_build.h"
 #include "airshape/model/symmetry.h"
+#include "posed_components.h"
 
 namespace airshape::exporting {
 
@@ -22,8 +25,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// Indices of the components to export, in build order: those named, or every one a
-/// plugin builds that is not inside another (none, when no plugin builds any).
-std::vector<std::size_t> selectedComponents(const Configuration& configuration, const ExportOptions& options) {
+/// plugin builds that is not inside another (none, when no plugin builds any), and the posed ones.
+std::vector<std::size_t> selectedComponents(const Configuration& configuration, const ExportOptions& options,
+                                            const std::map<std::string, PosedComponent>& posed) {
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<bool> wanted(graph.components().size(), false);
   // Every component on its own; parts (segments) and what lies inside its parent (devices at
@@ -39,6 +43,7 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
       throw Error(ErrorCode::NotImplemented, "no builder yet for " + component.nodeType + " '" + uid + "'");
     wanted[static_cast<std::size_t>(index)] = true;
   }
+  for (const auto& [uid, component] : posed) wanted[static_cast<std::size_t>(graph.find(uid))] = true;
   std::vector<std::size_t> selected;
   for (std::size_t index : graph.buildOrder())
     if (wanted[index] && configuration.shapes().find(graph.components()[index].nodeType) != nullptr)
@@ -111,11 +116,38 @@ SceneComponent copied(const std::string& name, const NamedShape& shape) {
   }
 }
 
+/// The solids of the selected components that were built, with their mirrored halves on
+/// request: moving components posed, those they lie in with their cut-outs.
+std::vector<std::pair<std::string, NamedShape>> sceneSolids(const Configuration& configuration,
+                                                            const std::vector<std::size_t>& selected,
+                                                            const std::vector<bool>& failed,
+                                                            const std::map<std::string, PosedComponent>& posed,
+                                                            const ExportOptions& options) {
+  std::set<std::string> changed;  // posed, or hosting a posed one
+  for (const auto& [uid, component] : posed) changed.insert({uid, component.host});
+  std::vector<std::pair<std::string, NamedShape>> solids;
+  for (std::size_t index : selected) {
+    if (failed[index]) continue;
+    const std::string& uid = configuration.components().components()[index].uid;
+    const bool asBuilt = changed.count(uid) == 0;
+    const NamedShape shape =
+        asBuilt ? configuration.shapes().namedShapeOf(configuration, uid) : posedSolid(configuration, uid, posed);
+    solids.emplace_back(uid, shape);
+    if (!options.mirror || !hasMirror(configuration, uid)) continue;
+    const std::string plane = model::resolvedSymmetry(configuration, uid);
+    solids.emplace_back(uid + " (mirrored)", asBuilt
+                                                 ? configuration.shapes().mirroredShapeOf(configuration, uid)
+                                                 : transformedNamedShape(shape, model::mirrorIn(plane), " (mirrored)"));
+  }
+  return solids;
+}
+
 }  // namespace
 
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options) {
   const Clock::time_point start = Clock::now();
-  const std::vector<std::size_t> selected = selectedComponents(configuration, options);
+  const std::map<std::string, PosedComponent> posed = resolvePoses(configuration, options.poses);
+  const std::vector<std::size_t> selected = selectedComponents(configuration, options, posed);
   ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}};
   std::vector<bool> failed(configuration.components().components().size(), false);
   const auto failures = buildSelected(configuration, selected, options, start);
@@ -126,24 +158,16 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
     scene.leftOut.push_back(configuration.components().components()[index].uid + ": " + why);
   }
 
-  std::vector<std::pair<std::string, const NamedShape*>> solids;
-  for (std::size_t index : selected) {
-    if (failed[index]) continue;
-    const std::string& uid = configuration.components().components()[index].uid;
-    solids.emplace_back(uid, &configuration.shapes().namedShapeOf(configuration, uid));
-    if (options.mirror && hasMirror(configuration, uid))
-      solids.emplace_back(uid + " (mirrored)", &configuration.shapes().mirroredShapeOf(configuration, uid));
-  }
-
+  const auto solids = sceneSolids(configuration, selected, failed, posed, options);
   if (options.fused) {
     if (options.progress)
       options.progress(
           {selected.size(), selected.size(), std::chrono::duration<double>(Clock::now() - start).count(), "fusing"});
     std::vector<const NamedShape*> shapes;
-    for (const auto& solid : solids) shapes.push_back(solid.second);
+    for (const auto& solid : solids) shapes.push_back(&solid.second);
     scene.components.push_back(copied(scene.name + " (fused)", fuseNamedShapes(shapes)));
   } else {
-    for (const auto& [name, shape] : solids) scene.components.push_back(copied(name, *shape));
+    for (const auto& [name, shape] : solids) scene.components.push_back(copied(name, shape));
   }
   return scene;
 }

@@ -1,5 +1,6 @@
 #include "airshape/model/symmetry.h"
 
+#include <gp_Ax2.hxx>
 #include <xercesc/dom/DOM.hpp>
 
 #include "airshape/configuration.h"
@@ -26,6 +27,13 @@ std::string resolvedSymmetry(const Configuration& configuration, const std::stri
     uid = component.parentUid;
   }
   return "none";
+}
+
+gp_Trsf mirrorIn(const std::string& plane) {
+  const gp_Dir normal = plane == "x-y" ? gp_Dir(0, 0, 1) : plane == "x-z" ? gp_Dir(0, 1, 0) : gp_Dir(1, 0, 0);
+  gp_Trsf mirror;
+  mirror.SetMirror(gp_Ax2(gp_Pnt(0, 0, 0), normal));
+  return mirror;
 }
 
 }  // namespace airshape::model

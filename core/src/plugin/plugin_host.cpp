@@ -208,8 +208,10 @@ void PluginHost::registerPlugin(LoadedPlugin loaded) {
   }
   ComponentShapes offered;
   plugin->registerShapeBuilders(offered);
-  for (const NodeType& type : loaded.nodeTypes)  // only for the node types it was granted
+  for (const NodeType& type : loaded.nodeTypes) {  // only for the node types it was granted
     if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
+    if (const ComponentMotion* motion = offered.findMotion(type.name)) shapes_.addMotion(type.name, *motion);
+  }
   plugins_.push_back(std::move(loaded));
 }
 

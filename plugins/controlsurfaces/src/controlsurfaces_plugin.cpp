@@ -66,7 +66,24 @@ class ControlSurfacesPlugin final : public plugin::BasicPlugin {
     const ShapeBuilder atRest = [wing](const Configuration& c, const std::string& uid) {
       return DeviceGeometry(c, *wing, deviceInAnyModel(c, uid)).atRest();
     };
-    for (const char* type : {"trailingEdgeDevice", "leadingEdgeDevice", "spoiler"}) shapes.add(type, atRest);
+    ComponentMotion motion;
+    motion.range = [](const Configuration& c, const std::string& uid) {
+      return parameterRangeOf(deviceInAnyModel(c, uid));
+    };
+    motion.at = [wing](const Configuration& c, const std::string& uid, double p) {
+      const DeviceGeometry device(c, *wing, deviceInAnyModel(c, uid));
+      return device.motionAt(heldParameter(device, p));
+    };
+    // The wing loses the whole ruled solid between the borders: the device and its cove.
+    motion.cutOut = [wing](const Configuration& c, const std::string& uid) {
+      NamedShape cutOut = DeviceGeometry(c, *wing, deviceInAnyModel(c, uid)).cutter();
+      for (auto& face : cutOut.faces) face.first = uid + "/cut-out";
+      return cutOut;
+    };
+    for (const char* type : {"trailingEdgeDevice", "leadingEdgeDevice", "spoiler"}) {
+      shapes.add(type, atRest);
+      shapes.addMotion(type, motion);
+    }
   }
 
   void registerQueries(query::QueryRegistry& registry) const override {

@@ -6,6 +6,8 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepLib.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 
 #include "airshape/configuration.h"
@@ -86,7 +88,34 @@ TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border) const {
   }
 }
 
-TopoDS_Shape DeviceGeometry::cutter() const {
+namespace {
+
+/// What the faces of the ruled solid between a device's borders become of the device.
+std::string cutterFaceName(const Device& device) {
+  if (device.innerBorder.nose == BorderDefinition::Nose::Airfoil) return "skin";
+  switch (device.kind) {
+    case Device::Kind::LeadingEdge:
+      return "trailing edge";
+    case Device::Kind::Spoiler:
+      return "lower";
+    case Device::Kind::TrailingEdge:
+      break;
+  }
+  return "leading edge";
+}
+
+/// What a face of the wing becomes of a device cut out of it, by the last part of its name.
+std::string deviceFaceName(const std::string& wingFaceName) {
+  const std::string what = wingFaceName.substr(wingFaceName.rfind('/') + 1);
+  if (what == "trailingEdge") return "trailing edge";
+  if (what == "root" || what == "inner") return "inner side";
+  if (what == "tip" || what == "outer") return "outer side";
+  return what;  // upper, lower, skin
+}
+
+}  // namespace
+
+NamedShape DeviceGeometry::cutter() const {
   const TopoDS_Wire inner = borderWireOf(device_.innerBorder), outer = borderWireOf(device_.outerBorder);
   BRepOffsetAPI_ThruSections loft(true, true);
   loft.AddWire(outer);
@@ -95,20 +124,27 @@ TopoDS_Shape DeviceGeometry::cutter() const {
   if (!loft.IsDone())
     throw Error(ErrorCode::InvalidModel, "no solid joins the device's inner and outer border", {},
                 device_.xpath + "/outerShape");
-  return loft.Shape();
+  NamedShape cutter{loft.Shape(), {}};
+  for (TopExp_Explorer face(cutter.shape, TopAbs_FACE); face.More(); face.Next()) {
+    const std::string name = face.Current().IsSame(loft.FirstShape())  ? "outer side"
+                             : face.Current().IsSame(loft.LastShape()) ? "inner side"
+                                                                       : cutterFaceName(device_);
+    cutter.faces.emplace_back(device_.uid + "/" + name, TopoDS::Face(face.Current()));
+  }
+  return cutter;
 }
 
 NamedShape DeviceGeometry::atRest() const {
-  const TopoDS_Shape cut = cutter();
-  NamedShape shape;
-  if (device_.innerBorder.nose == BorderDefinition::Nose::Airfoil) {
-    shape.shape = cut;
-    return shape;
-  }
-  BRepAlgoAPI_Common common(wing_.cleanSolid(configuration_, device_.wingUid), cut);
+  const NamedShape cut = cutter();
+  if (device_.innerBorder.nose == BorderDefinition::Nose::Airfoil) return cut;
+  const NamedShape& wing = configuration_.shapes().namedShapeOf(configuration_, device_.wingUid);
+  NamedShape wingFaces{wing.shape, {}};
+  for (const auto& [name, face] : wing.faces)
+    wingFaces.faces.emplace_back(device_.uid + "/" + deviceFaceName(name), face);
+  BRepAlgoAPI_Common common(wing.shape, cut.shape);
   if (!common.IsDone() || common.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
-  shape.shape = common.Shape();
+  NamedShape shape = namedBooleanResult(common, {&wingFaces, &cut});
   // Where a border lies in a cap of the wing, the Boolean leaves edges with curves on their
   // faces only; measures and exports need them in space too.
   BRepLib::BuildCurves3d(shape.shape);

@@ -21,12 +21,17 @@ class DeviceGeometry {
   DeviceGeometry(const Configuration& configuration, const wing::WingServices& wing, Device device);
 
   /// The device at rest (QUERY-components §3.2): the clean wing cut by the ruled solid between
-  /// its inner and outer border; a border with its own airfoil gives that solid itself.
+  /// its inner and outer border; a border with its own airfoil gives that solid itself. Its
+  /// faces are named "<uID>/upper", "lower", "leading edge" (a slat's "trailing edge"),
+  /// "trailing edge", "inner side", "outer side" (docs/controlsurfaces.md).
   /// Throws Error naming the device's CPACS path when it cannot be built.
   NamedShape atRest() const;
 
-  /// The ruled solid between the two borders that cuts the device out of the wing.
-  TopoDS_Shape cutter() const;
+  /// The ruled solid between the two borders that cuts the device out of the wing, its
+  /// faces named "<uID>/inner side", "<uID>/outer side" and, between them, as the face of the
+  /// device they become (a flap's "leading edge", a slat's "trailing edge", a spoiler's
+  /// "lower", an own airfoil's "skin").
+  NamedShape cutter() const;
 
   /// The device's rigid motion at a control parameter within the range of its steps
   /// (QUERY-components §3.4); outside the range, an error.

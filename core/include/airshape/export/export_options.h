@@ -16,6 +16,15 @@ struct ExportProgress {
   std::string step;    ///< what is being done now, e.g. "built Wing", "meshing", "writing STEP"
 };
 
+/// The control parameter at which an export shows a moving component (a flap, a slat, a
+/// spoiler): `airshape export --deflect UID=P`.
+struct Pose {
+  enum class At { Parameter, Minimum, Maximum };
+  std::string uid;  ///< a moving component's uID, or "all" for every one
+  At at = At::Parameter;
+  double parameter = 0.0;  ///< with At::Parameter
+};
+
 /// What an export writes and how finely it triangulates.
 struct ExportOptions {
   /// uIDs of the components to write; empty: every component a plugin builds.
@@ -24,6 +33,10 @@ struct ExportOptions {
   bool mirror = false;
   /// Write one solid: the Boolean union of all components (and halves, with `mirror`).
   bool fused = false;
+  /// Moving components to show posed: each is written as a solid of its own at its control
+  /// parameter, and the component it lies in (its host) with the cut-outs of those posed in
+  /// it, in one Boolean operation. Empty: every component as built, at rest.
+  std::vector<Pose> poses;
   /// Leave out components that fail to build (ExportScene::leftOut says which and why)
   /// instead of failing the export.
   bool skipFailed = false;
@@ -46,5 +59,9 @@ inline std::vector<std::string> splitAtCommas(const std::string& list) {
     if (!item.empty()) items.push_back(item);
   return items;
 }
+
+/// Poses written as "UID=P,UID=P,..." where P is a number, "min" or "max" and UID may be
+/// "all" (then P is min or max). Throws Error(InvalidArgument) on anything else.
+std::vector<Pose> parsePoses(const std::string& list);
 
 }  // namespace airshape::exporting

@@ -1,0 +1,118 @@
+#include "posed_components.h"
+
+#include <algorithm>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <TopTools_ListOfShape.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+
+namespace airshape::exporting {
+
+namespace {
+
+const ComponentMotion* motionOf(const Configuration& configuration, const std::string& uid) {
+  const long index = configuration.components().find(uid);
+  if (index < 0) return nullptr;
+  return configuration.shapes().findMotion(
+      configuration.components().components()[static_cast<std::size_t>(index)].nodeType);
+}
+
+/// The uIDs of the components a component lies in, nearest first (its parentUID chain).
+std::vector<std::string> ancestorsOf(const Configuration& configuration, const std::string& uid) {
+  const graph::ComponentGraph& graph = configuration.components();
+  std::vector<std::string> ancestors;
+  long index = graph.find(uid);
+  // A parentUID chain is acyclic (the graph refuses cycles), so this walk ends.
+  while (index >= 0 && ancestors.size() <= graph.components().size()) {
+    index = graph.find(graph.components()[static_cast<std::size_t>(index)].parentUid);
+    if (index >= 0) ancestors.push_back(graph.components()[static_cast<std::size_t>(index)].uid);
+  }
+  return ancestors;
+}
+
+/// An exported component on its own: not a part of another (a component segment) and not
+/// inside one (a device).
+bool standsAlone(const Configuration& configuration, const std::string& uid) {
+  const graph::Component& component =
+      configuration.components().components()[static_cast<std::size_t>(configuration.components().find(uid))];
+  return !component.part && !component.insideParent;
+}
+
+double parameterOf(const Configuration& configuration, const ComponentMotion& motion, const std::string& uid,
+                   const Pose& pose) {
+  if (pose.at == Pose::At::Parameter) return pose.parameter;
+  const auto [first, last] = motion.range(configuration, uid);
+  return pose.at == Pose::At::Minimum ? std::min(first, last) : std::max(first, last);
+}
+
+/// Every component posed with its own motion: "all" first, then those named on their own.
+std::map<std::string, PosedComponent> ownPoses(const Configuration& configuration, const std::vector<Pose>& poses) {
+  const graph::ComponentGraph& graph = configuration.components();
+  std::map<std::string, PosedComponent> posed;
+  auto pose = [&](const std::string& uid, const Pose& at) {
+    const ComponentMotion& motion = *motionOf(configuration, uid);
+    const double parameter = parameterOf(configuration, motion, uid, at);
+    posed[uid] = {uid, parameter, motion.at(configuration, uid, parameter), {}};
+  };
+  for (const Pose& at : poses)
+    if (at.uid == "all")
+      for (const graph::Component& component : graph.components())
+        if (motionOf(configuration, component.uid) != nullptr) pose(component.uid, at);
+  for (const Pose& at : poses) {
+    if (at.uid == "all") continue;
+    if (motionOf(configuration, at.uid) == nullptr)
+      throw Error(ErrorCode::InvalidArgument, "--deflect: '" + at.uid + "' names no moving component");
+    pose(at.uid, at);
+  }
+  return posed;
+}
+
+}  // namespace
+
+std::map<std::string, PosedComponent> resolvePoses(const Configuration& configuration, const std::vector<Pose>& poses) {
+  std::map<std::string, PosedComponent> posed = ownPoses(configuration, poses);
+  std::map<std::string, gp_Trsf> own;
+  for (const auto& [uid, component] : posed) own[uid] = component.motion;
+  for (auto& [uid, component] : posed)
+    for (const std::string& ancestor : ancestorsOf(configuration, uid)) {
+      const auto moving = own.find(ancestor);
+      if (moving != own.end()) {
+        component.motion.PreMultiply(moving->second);
+        if (component.host.empty()) component.host = ancestor;
+      } else if (component.host.empty() && standsAlone(configuration, ancestor)) {
+        component.host = ancestor;
+      }
+    }
+  return posed;
+}
+
+NamedShape posedSolid(const Configuration& configuration, const std::string& uid,
+                      const std::map<std::string, PosedComponent>& posed) {
+  const NamedShape& built = configuration.shapes().namedShapeOf(configuration, uid);
+  std::vector<NamedShape> cutOuts;
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(built.shape);
+  for (const auto& [moving, component] : posed)
+    if (component.host == uid) {
+      cutOuts.push_back(motionOf(configuration, moving)->cutOut(configuration, moving));
+      tools.Append(cutOuts.back().shape);
+    }
+  NamedShape solid = built;
+  if (!cutOuts.empty()) {
+    BRepAlgoAPI_Cut cut;
+    cut.SetArguments(arguments);
+    cut.SetTools(tools);
+    cut.Build();
+    if (!cut.IsDone() || cut.HasErrors())
+      throw Error(ErrorCode::InvalidModel, "the cut-outs of its moving parts could not be cut out of '" + uid + "'");
+    std::vector<const NamedShape*> inputs{&built};
+    for (const NamedShape& cutOut : cutOuts) inputs.push_back(&cutOut);
+    solid = namedBooleanResult(cut, inputs);
+  }
+  const auto moving = posed.find(uid);
+  return moving == posed.end() ? solid : transformedNamedShape(solid, moving->second.motion);
+}
+
+}  // namespace airshape::exporting
