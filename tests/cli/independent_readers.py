@@ -22,7 +22,8 @@ iges = sys.argv[1].lower().endswith((".iges", ".igs"))
 if sys.argv[1].lower().endswith((".step", ".stp")):
     gmsh.option.setString("Geometry.OCCTargetUnit", "M")
 gmsh.merge(sys.argv[1])
-print(json.dumps([[gmsh.model.getEntityName(3, tag), gmsh.model.occ.getMass(3, tag) * (1e-9 if iges else 1)]
+print(json.dumps([[gmsh.model.getEntityName(3, tag), gmsh.model.occ.getMass(3, tag) * (1e-9 if iges else 1),
+                   [c * (1e-3 if iges else 1) for c in gmsh.model.occ.getCenterOfMass(3, tag)]]
                   for _, tag in gmsh.model.getEntities(3)]))
 gmsh.finalize()
 """
@@ -57,6 +58,12 @@ def _run_python(script, path):
 def gmsh_volumes(path):
     """[(entity name, volume)] of the solids gmsh reads from a STEP, IGES or BREP file, in
     cubic metres."""
+    return [(name, volume) for name, volume, _ in gmsh_solids(path)]
+
+
+def gmsh_solids(path):
+    """[(entity name, volume, centre of mass)] of the solids gmsh reads from a STEP, IGES or
+    BREP file, in metres."""
     _require_module("gmsh")
     return [tuple(v) for v in _run_python(GMSH_VOLUMES, path)]
 

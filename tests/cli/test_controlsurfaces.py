@@ -8,7 +8,7 @@ import os
 import pytest
 
 from conftest import EXAMPLE, airshape, conformance_passed
-from independent_readers import gmsh_volumes, vtk_polydata
+from independent_readers import gmsh_solids, gmsh_volumes, vtk_polydata
 
 with open(EXAMPLE) as example:
     AIRCRAFT = example.read()
@@ -179,6 +179,33 @@ def test_without_deflect_the_export_is_unchanged_and_bad_poses_are_one_line(tmp_
         assert result.returncode == 2 and message in result.stderr, (deflect, result.stderr)
         assert len(result.stderr.strip().splitlines()) == 1
         assert not (tmp_path / "bad.brep").exists()
+
+
+def transform(matrix, point):
+    return [sum(row[k] * point[k] for k in range(3)) + row[3] for row in matrix]
+
+
+def compose(outer, inner):
+    """The 3x4 matrix of applying `inner`, then `outer`."""
+    return [[sum(outer[i][k] * inner[k][j] for k in range(3)) + (outer[i][3] if j == 3 else 0) for j in range(4)]
+            for i in range(3)]
+
+
+def test_a_tab_is_cut_out_of_its_flap_and_moves_with_it(tmp_path):
+    at_rest, posed = tmp_path / "rest.step", tmp_path / "posed.step"
+    export_summary(airshape("export", WITH_DEVICES, "--components", "Tab,Flap", "-o", str(at_rest)))
+    volumes = export_summary(airshape("export", WITH_DEVICES, "--deflect", "Flap=1,Tab=1", "--components", "Rect",
+                                      "-o", str(posed)))
+    tab = 1.0 * section_area_aft(0.9)  # aft of xsi 0.9 over 1 m of span
+    assert volumes["Tab"] == pytest.approx(tab, abs=1e-4)
+    assert volumes["Flap"] == pytest.approx(3.0 * section_area_aft(0.7) - tab, abs=1e-4), "the flap less its tab"
+    assert volumes["Rect"] == pytest.approx(1.0 - 3.0 * section_area_aft(0.7), abs=1e-4), "the wing less the flap"
+    flap, own = (ask_rectangular({"op": "control_surface_deflection", "uid": uid, "control_parameter": 1})[0]["matrix"]
+                 for uid in ("Flap", "Tab"))
+    rest = {name.rsplit("/", 1)[-1]: centre for name, _, centre in gmsh_solids(str(at_rest))}
+    moved = {name.rsplit("/", 1)[-1]: centre for name, _, centre in gmsh_solids(str(posed))}
+    # The tab turns about its own hinge line, then with its flap about the flap's.
+    assert moved["Tab"] == pytest.approx(transform(compose(flap, own), rest["Tab"]), abs=1e-6)
 
 
 def test_control_surface_conformance_does_not_regress():

@@ -182,7 +182,7 @@ WITH_DEVICES = os.path.join(SOURCE, "tests", "data", "wing-cst-devices.xml")
 def test_control_surfaces_of_a_wing(tmp_path):
     config = airshape.Configuration.open(WITH_DEVICES)
     wing = config.wings["Rect"]
-    assert [device.uid for device in wing.control_surfaces] == ["Flap", "Slat"]
+    assert [device.uid for device in wing.control_surfaces] == ["Flap", "Tab", "Slat"]
     assert [device.uid for device in wing.spoilers] == ["Spoiler"]
     flap = wing.control_surfaces["Flap"]
     assert flap.type == "trailing_edge_device" and wing.spoilers[0].type == "spoiler"
