@@ -208,6 +208,35 @@ def test_a_tab_is_cut_out_of_its_flap_and_moves_with_it(tmp_path):
     assert moved["Tab"] == pytest.approx(transform(compose(flap, own), rest["Tab"]), abs=1e-6)
 
 
+def airfoil_border(eta):
+    return (f"<etaLE><eta>{eta}</eta><referenceUID>RectCS</referenceUID></etaLE><xsiLE><xsi>0.7</xsi>"
+            "<referenceUID>RectCS</referenceUID></xsiLE><airfoil><airfoilUID>Parabolic</airfoilUID><rotX>90</rotX>"
+            "<scalY>1</scalY><scalZ>1</scalZ></airfoil>")
+
+
+def test_intermediate_airfoils_shape_a_device_of_airfoils(tmp_path):
+    # Borders of the wing's own airfoil (z scaled by 1 on a chord of 0.6: area 0.6 * 0.05) and,
+    # halfway, the same airfoil twice as thick: two ruled pieces of 1.5 m, in closed form.
+    intermediate = ("<intermediateAirfoils><intermediateAirfoil><eta><eta>0.5</eta><referenceUID>RectCS</referenceUID>"
+                    "</eta><airfoilUID>Parabolic</airfoilUID><rotX>90</rotX><rotZ>90</rotZ><scalY>1</scalY>"
+                    "<scalZ>2</scalZ></intermediateAirfoil></intermediateAirfoils>")
+    device = ('<trailingEdgeDevice uID="Shaped"><name>s</name><parentUID>RectCS</parentUID><outerShape>'
+              f"<innerBorder>{airfoil_border(0.2)}</innerBorder><outerBorder>{airfoil_border(0.8)}</outerBorder>"
+              f"{intermediate}</outerShape></trailingEdgeDevice>")
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    path = tmp_path / "intermediate.xml"
+    path.write_text(text.replace("<trailingEdgeDevices>", "<trailingEdgeDevices>" + device, 1))
+    plain = tmp_path / "plain.xml"
+    plain.write_text(path.read_text().replace(intermediate, ""))
+    queries = json.dumps({"op": "component_volume", "uid": "Shaped"}) + "\n"
+    shaped = json.loads(airshape("query", str(path), stdin=queries).stdout)["ok"]
+    straight = json.loads(airshape("query", str(plain), stdin=queries).stdout)["ok"]
+    section = 0.6 * 0.05
+    assert straight == pytest.approx(3.0 * section, rel=1e-4)
+    assert shaped == pytest.approx(2 * 1.5 * (section + 2 * section) / 2, rel=1e-4)
+
+
 def test_control_surface_conformance_does_not_regress():
     passed, output = conformance_passed("cases-controlsurfaces.json")
     # 9 of 233 do not pass yet: boxes of trimmed device faces and one aileron's area

@@ -66,18 +66,28 @@ gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi, con
                                      Surface::Chord);
 }
 
-TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border) const {
+BorderPlane DeviceGeometry::borderPlaneOf(const BorderDefinition& border) const {
   for (const double eta : {border.etaLE.value, border.etaTE.value}) requireFraction(eta, "eta", border.xpath);
   for (const double xsi : {border.xsiLE, border.xsiTE}) requireFraction(xsi, "xsi", border.xpath);
-  const std::string& cs = device_.componentSegmentUid;
-  // The component segment's upward direction: its inner chord crossed with its inner leading edge.
-  const gp_Pnt innerFront = wing_.componentSegmentPoint(configuration_, cs, 0.0, 0.0, Surface::Chord);
-  const gp_Vec up =
-      gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 0.0, 1.0, Surface::Chord))
-          .Crossed(gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 1.0, 0.0, Surface::Chord)));
   try {
-    const BorderPlane plane(chordPoint(border.etaLE, border.xsiLE, border.xpath + "/etaLE"),
-                            chordPoint(border.etaTE, border.xsiTE, border.xpath + "/etaTE"), up);
+    return BorderPlane(chordPoint(border.etaLE, border.xsiLE, border.xpath + "/etaLE"),
+                       chordPoint(border.etaTE, border.xsiTE, border.xpath + "/etaTE"), upward());
+  } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;
+    throw Error(error.code(), error.message(), {}, border.xpath);
+  }
+}
+
+gp_Vec DeviceGeometry::upward() const {
+  // The component segment's inner chord crossed with its inner leading edge.
+  const std::string& cs = device_.componentSegmentUid;
+  const gp_Pnt innerFront = wing_.componentSegmentPoint(configuration_, cs, 0.0, 0.0, Surface::Chord);
+  return gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 0.0, 1.0, Surface::Chord))
+      .Crossed(gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 1.0, 0.0, Surface::Chord)));
+}
+
+TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border, const BorderPlane& plane) const {
+  try {
     const TopoDS_Wire airfoil = border.nose == BorderDefinition::Nose::Airfoil
                                     ? wing_.airfoilWire(configuration_, border.airfoilUid)
                                     : TopoDS_Wire();
@@ -86,6 +96,42 @@ TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border) const {
     if (!error.cpacsPath().empty()) throw;
     throw Error(error.code(), error.message(), {}, border.xpath);
   }
+}
+
+std::vector<TopoDS_Wire> DeviceGeometry::intermediateWires(const BorderPlane& inner, const BorderPlane& outer) const {
+  if (device_.intermediateAirfoils.empty()) return {};
+  if (device_.innerBorder.nose != BorderDefinition::Nose::Airfoil ||
+      device_.outerBorder.nose != BorderDefinition::Nose::Airfoil) {
+    configuration_.warnAboutGeometry({Problem::Severity::Warning, device_.xpath + "/outerShape/intermediateAirfoils",
+                                      "intermediate airfoils shape a device whose borders give airfoils; ignored"});
+    return {};
+  }
+  const double innerEta = componentSegmentEta(device_.innerBorder.etaLE, device_.innerBorder.xpath + "/etaLE");
+  const double outerEta = componentSegmentEta(device_.outerBorder.etaLE, device_.outerBorder.xpath + "/etaLE");
+  std::vector<std::pair<double, TopoDS_Wire>> placed;  // by their share of the way inner -> outer
+  for (const IntermediateAirfoil& airfoil : device_.intermediateAirfoils) {
+    const double share = (componentSegmentEta(airfoil.eta, airfoil.xpath + "/eta") - innerEta) / (outerEta - innerEta);
+    if (!(share > 0.0 && share < 1.0))
+      throw Error(ErrorCode::InvalidModel, "eta lies outside the device's leading edge between its borders", {},
+                  airfoil.xpath + "/eta");
+    if (std::abs(airfoil.rotX - 90.0) > 1e-9 || std::abs(airfoil.rotZ - 90.0) > 1e-9)
+      configuration_.warnAboutGeometry({Problem::Severity::Warning, airfoil.xpath,
+                                        "rotX and rotZ other than 90 degrees are not applied: the airfoil is "
+                                        "placed between the device's leading and trailing edge"});
+    auto between = [share](const gp_Pnt& a, const gp_Pnt& b) { return gp_Pnt(a.XYZ() + share * (b.XYZ() - a.XYZ())); };
+    const BorderPlane plane(between(inner.origin, outer.origin),
+                            between(inner.at(inner.chord, 0.0), outer.at(outer.chord, 0.0)), upward());
+    BorderDefinition section;
+    section.xpath = airfoil.xpath;
+    section.nose = BorderDefinition::Nose::Airfoil;
+    section.airfoilUid = airfoil.airfoilUid;
+    section.airfoilScaleZ = airfoil.scaleZ;
+    placed.emplace_back(share, borderWireOf(section, plane));
+  }
+  std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<TopoDS_Wire> wires;
+  for (const auto& entry : placed) wires.push_back(entry.second);
+  return wires;
 }
 
 namespace {
@@ -116,10 +162,12 @@ std::string deviceFaceName(const std::string& wingFaceName) {
 }  // namespace
 
 NamedShape DeviceGeometry::cutter() const {
-  const TopoDS_Wire inner = borderWireOf(device_.innerBorder), outer = borderWireOf(device_.outerBorder);
+  const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
+  const std::vector<TopoDS_Wire> between = intermediateWires(innerPlane, outerPlane);
   BRepOffsetAPI_ThruSections loft(true, true);
-  loft.AddWire(outer);
-  loft.AddWire(inner);
+  loft.AddWire(borderWireOf(device_.outerBorder, outerPlane));
+  for (auto wire = between.rbegin(); wire != between.rend(); ++wire) loft.AddWire(*wire);
+  loft.AddWire(borderWireOf(device_.innerBorder, innerPlane));
   loft.Build();
   if (!loft.IsDone())
     throw Error(ErrorCode::InvalidModel, "no solid joins the device's inner and outer border", {},

@@ -4,6 +4,8 @@
 #include <gp_Pnt.hxx>
 #include <gp_Trsf.hxx>
 
+#include <vector>
+
 #include "airshape/named_shape.h"
 #include "airshape/wing/wing_services.h"
 #include "device_list.h"
@@ -47,7 +49,14 @@ class DeviceGeometry {
   gp_Pnt chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const;
   /// The component-segment eta of an eta given relative to a reference (at `xpath`).
   double componentSegmentEta(const RelativeCoordinate& eta, const std::string& xpath) const;
-  TopoDS_Wire borderWireOf(const BorderDefinition& border) const;
+  /// The plane a border is drawn in (through its leading- and trailing-edge points).
+  BorderPlane borderPlaneOf(const BorderDefinition& border) const;
+  /// The component segment's upward direction: its inner chord crossed with its leading edge.
+  gp_Vec upward() const;
+  TopoDS_Wire borderWireOf(const BorderDefinition& border, const BorderPlane& plane) const;
+  /// The wires of the intermediate airfoils, from the inner border outwards, each in the plane
+  /// between the borders' planes at its eta.
+  std::vector<TopoDS_Wire> intermediateWires(const BorderPlane& inner, const BorderPlane& outer) const;
   /// A hinge point at rest: between the skins at the hinge's xsi on the border's leading
   /// edge, in the global frame without the wing's parent translation (as the reference).
   gp_Pnt hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,

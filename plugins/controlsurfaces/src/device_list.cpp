@@ -23,6 +23,15 @@ Device deviceOf(const Node& node, Device::Kind kind, const schema::WingType& win
   if (device.hasOuterShape) {
     device.innerBorder = borderOf(*node.outerShape->innerBorder);
     device.outerBorder = borderOf(*node.outerShape->outerBorder);
+    if (node.outerShape->intermediateAirfoils)
+      for (const auto& airfoil : node.outerShape->intermediateAirfoils->intermediateAirfoil)
+        device.intermediateAirfoils.push_back(
+            {airfoil.xpath,
+             {airfoil.eta ? airfoil.eta->eta : 0.0, airfoil.eta ? airfoil.eta->referenceUID : std::string()},
+             airfoil.airfoilUID,
+             airfoil.scalZ,
+             airfoil.rotX,
+             airfoil.rotZ});
   }
   return device;
 }

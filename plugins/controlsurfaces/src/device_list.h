@@ -12,6 +12,17 @@ class Configuration;
 
 namespace airshape::controlsurfaces {
 
+/// An airfoil of a device between its borders (`intermediateAirfoils`): placed with its leading
+/// edge on the device's leading edge at `eta`, its trailing edge on the device's trailing edge,
+/// its z scaled by `scaleZ`.
+struct IntermediateAirfoil {
+  std::string xpath;
+  RelativeCoordinate eta;
+  std::string airfoilUid;
+  double scaleZ = 1.0;
+  double rotX = 90.0, rotZ = 90.0;  ///< degrees; 90 places it in flight direction, upright
+};
+
 /// A control device of a wing as the schema gives it.
 struct Device {
   enum class Kind { TrailingEdge, LeadingEdge, Spoiler };
@@ -24,6 +35,7 @@ struct Device {
   std::string wingUid;
   bool hasOuterShape = false;  ///< both borders given; without them it has no geometry
   BorderDefinition innerBorder, outerBorder;
+  std::vector<IntermediateAirfoil> intermediateAirfoils;  ///< in document order
 };
 
 /// The counted devices of a wing in the order of the query protocol (QUERY-components §3.1):
