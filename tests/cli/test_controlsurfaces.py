@@ -237,6 +237,31 @@ def test_intermediate_airfoils_shape_a_device_of_airfoils(tmp_path):
     assert shaped == pytest.approx(2 * 1.5 * (section + 2 * section) / 2, rel=1e-4)
 
 
+def test_a_wing_cut_out_removes_the_skins_from_its_xsi(tmp_path):
+    # The flap's wingCutOut opens the upper skin from xsi 0.6 and the lower from 0.65: the wing
+    # loses the section aft of the straight line between those skin points, over 3 m of span.
+    cut_out = ("<wingCutOut><upperSkin><xsiInnerBorder>0.6</xsiInnerBorder><xsiOuterBorder>0.6</xsiOuterBorder>"
+               "</upperSkin><lowerSkin><xsiInnerBorder>0.65</xsiInnerBorder><xsiOuterBorder>0.65</xsiOuterBorder>"
+               "</lowerSkin></wingCutOut>")
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    end_of_shape = text.index("</outerShape>", text.index('uID="Flap"')) + len("</outerShape>")
+    path = tmp_path / "cut-out.xml"
+    path.write_text(text[:end_of_shape] + cut_out + text[end_of_shape:])
+    volumes = export_summary(airshape("export", str(path), "--deflect", "Flap=1", "--components", "Rect", "-o",
+                                      str(tmp_path / "cut.brep")))
+
+    def skin(xi, sign):  # chord 2 from x = 0: z = ±0.15·2·ξ(1−ξ)
+        return (2 * xi, sign * 0.3 * xi * (1 - xi))
+
+    n = 4000
+    outline = ([skin(0.6 + 0.4 * k / n, 1) for k in range(n + 1)] +
+               [skin(1 - 0.35 * k / n, -1) for k in range(n + 1)])
+    area = 0.5 * abs(sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(outline, outline[1:] + outline[:1])))
+    assert volumes["Rect"] == pytest.approx(1.0 - 3.0 * area, abs=1e-4)  # the summary has 4 decimals
+    assert volumes["Flap"] == pytest.approx(3.0 * section_area_aft(0.7), abs=1e-4), "the flap is as before"
+
+
 def test_control_surface_conformance_does_not_regress():
     passed, output = conformance_passed("cases-controlsurfaces.json")
     # 9 of 233 do not pass yet: boxes of trimmed device faces and one aileron's area

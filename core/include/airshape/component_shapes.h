@@ -24,7 +24,7 @@ struct ComponentMotion {
   /// Its rigid motion at a control parameter; Error outside the range.
   std::function<gp_Trsf(const Configuration& configuration, const std::string& uid, double parameter)> at;
   /// What its host (the exported component it lies in) loses when it moves: a solid to cut
-  /// out of the host, its faces named.
+  /// out of the host, or a compound of solids that may overlap, its faces named.
   std::function<NamedShape(const Configuration& configuration, const std::string& uid)> cutOut;
 };
 

@@ -4,6 +4,7 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <TopoDS_Iterator.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -45,6 +46,16 @@ double parameterOf(const Configuration& configuration, const ComponentMotion& mo
   if (pose.at == Pose::At::Parameter) return pose.parameter;
   const auto [first, last] = motion.range(configuration, uid);
   return pose.at == Pose::At::Minimum ? std::min(first, last) : std::max(first, last);
+}
+
+/// A cut-out's solids as tools of the cut: those of a compound each on its own, as they may
+/// overlap each other.
+void addTools(const TopoDS_Shape& cutOut, TopTools_ListOfShape& tools) {
+  if (cutOut.ShapeType() != TopAbs_COMPOUND) {
+    tools.Append(cutOut);
+    return;
+  }
+  for (TopoDS_Iterator part(cutOut); part.More(); part.Next()) tools.Append(part.Value());
 }
 
 /// Every component posed with its own motion: "all" first, then those named on their own.
@@ -97,7 +108,7 @@ NamedShape posedSolid(const Configuration& configuration, const std::string& uid
   for (const auto& [moving, component] : posed)
     if (component.host == uid) {
       cutOuts.push_back(motionOf(configuration, moving)->cutOut(configuration, moving));
-      tools.Append(cutOuts.back().shape);
+      addTools(cutOuts.back().shape, tools);
     }
   NamedShape solid = built;
   if (!cutOuts.empty()) {

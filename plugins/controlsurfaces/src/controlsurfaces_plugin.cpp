@@ -2,7 +2,11 @@
 // component segments. It builds each device from its wing, through the wing plugin's public
 // interface (airshape/wing/wing_services.h), and answers the device ops of the query
 // protocol (QUERY-components §3).
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopLoc_Location.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -74,9 +78,21 @@ class ControlSurfacesPlugin final : public plugin::BasicPlugin {
       const DeviceGeometry device(c, *wing, deviceInAnyModel(c, uid));
       return device.motionAt(heldParameter(device, p));
     };
-    // The wing loses the whole ruled solid between the borders: the device and its cove.
+    // The wing loses the whole ruled solid between the borders (the device and its cove) and
+    // the skins its wingCutOut names.
     motion.cutOut = [wing](const Configuration& c, const std::string& uid) {
-      NamedShape cutOut = DeviceGeometry(c, *wing, deviceInAnyModel(c, uid)).cutter();
+      const DeviceGeometry device(c, *wing, deviceInAnyModel(c, uid));
+      NamedShape cutOut = device.cutter();
+      if (const TopoDS_Shape skins = device.skinCutOut(); !skins.IsNull()) {
+        TopoDS_Compound both;
+        BRep_Builder builder;
+        builder.MakeCompound(both);
+        builder.Add(both, cutOut.shape);
+        builder.Add(both, skins);
+        for (TopExp_Explorer face(skins, TopAbs_FACE); face.More(); face.Next())
+          cutOut.faces.emplace_back("", TopoDS::Face(face.Current()));
+        cutOut.shape = both;
+      }
       for (auto& face : cutOut.faces) face.first = uid + "/cut-out";
       return cutOut;
     };

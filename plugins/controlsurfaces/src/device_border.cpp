@@ -92,27 +92,27 @@ OuterCorners outerCorners(const BorderPlane& plane, const gp_Pnt2d& lower, const
           gp_Pnt2d(reach * plane.chord, -height), reachHeight(lower, downOut, -height)};
 }
 
-/// Cut straight across the wing at the border's leading edge, the device aft of it. A border
-/// whose leading edge is the wing's (the whole chord moves) touches the skins in one point:
-/// the cut then runs along the plane's y, as high and low as a chord.
-TopoDS_Wire straightWire(const BorderPlane& plane, const TopoDS_Shape& wing) {
-  OuterCorners c;
-  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-9 * plane.chord);
-  const bool atLeadingEdge = hits.size() < 2 || hits.front().point.Distance(hits.back().point) < 1e-7 * plane.chord;
-  if (atLeadingEdge) {
-    c = outerCorners(plane, gp_Pnt2d(0.0, -plane.chord), gp_Pnt2d(0.0, plane.chord), gp_Vec2d(0.0, 1.0),
-                     gp_Vec2d(0.0, -1.0), kReach);
-  } else {
-    const gp_Pnt2d lower = inPlane(plane, hits.front().point), upper = inPlane(plane, hits.back().point);
-    const gp_Vec2d across(lower, upper);
-    c = outerCorners(plane, lower, upper, across, across.Reversed(), kReach);
-  }
+/// A straight line across the wing from the upper to the lower skin, closed well outside the
+/// wing aft of it (reach > 0) or ahead of it (reach < 0).
+TopoDS_Wire acrossWire(const BorderPlane& plane, const gp_Pnt2d& lower, const gp_Pnt2d& upper, double reach) {
+  const gp_Vec2d across(lower, upper);
+  const OuterCorners c = outerCorners(plane, lower, upper, across, across.Reversed(), reach);
   BRepBuilderAPI_MakeWire wire;
   wire.Add(straightEdge(plane, c.lowerOut, c.upperOut));
   wire.Add(straightEdge(plane, c.upperOut, c.upperFar));
   wire.Add(straightEdge(plane, c.upperFar, c.lowerFar));
   wire.Add(straightEdge(plane, c.lowerFar, c.lowerOut));
   return wire.Wire();
+}
+
+/// Cut straight across the wing at the border's leading edge, the device aft of it. A border
+/// whose leading edge is the wing's (the whole chord moves) touches the skins in one point:
+/// the cut then runs along the plane's y, as high and low as a chord.
+TopoDS_Wire straightWire(const BorderPlane& plane, const TopoDS_Shape& wing) {
+  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-9 * plane.chord);
+  const bool atLeadingEdge = hits.size() < 2 || hits.front().point.Distance(hits.back().point) < 1e-7 * plane.chord;
+  if (atLeadingEdge) return acrossWire(plane, gp_Pnt2d(0.0, -plane.chord), gp_Pnt2d(0.0, plane.chord), kReach);
+  return acrossWire(plane, inPlane(plane, hits.front().point), inPlane(plane, hits.back().point), kReach);
 }
 
 /// A rounded edge from the lower skin through a middle point between the skins to the upper
@@ -190,6 +190,15 @@ TopoDS_Wire airfoilWire(const BorderDefinition& border, const BorderPlane& plane
 }
 
 }  // namespace
+
+TopoDS_Wire skinCutOutWire(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare, double lowerShare,
+                           bool aft, const std::string& xpath) {
+  BorderDefinition border;
+  border.xpath = xpath;
+  const gp_Pnt2d upper = skinCrossings(border, plane, wing, 1.0 - upperShare).second.point;
+  const gp_Pnt2d lower = skinCrossings(border, plane, wing, 1.0 - lowerShare).first.point;
+  return acrossWire(plane, lower, upper, aft ? kReach : -kReach);
+}
 
 BorderPlane::BorderPlane(const gp_Pnt& leadingEdge, const gp_Pnt& trailingEdge, const gp_Vec& up)
     : origin(leadingEdge), chord(leadingEdge.Distance(trailingEdge)) {

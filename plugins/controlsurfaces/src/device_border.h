@@ -67,4 +67,11 @@ struct BorderPlane {
 TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
                        const TopoDS_Wire& airfoil);
 
+/// The outline of a skin cut-out in a border plane: the wing section aft of (`aft`; else ahead
+/// of) the straight line from the upper skin at `upperShare` of the chord (from the plane's
+/// origin) to the lower skin at `lowerShare`, reaching well outside the wing. Throws Error
+/// naming `xpath` when the lines at those shares do not cross both skins.
+TopoDS_Wire skinCutOutWire(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare, double lowerShare,
+                           bool aft, const std::string& xpath);
+
 }  // namespace airshape::controlsurfaces

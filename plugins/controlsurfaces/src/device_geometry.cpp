@@ -199,6 +199,46 @@ NamedShape DeviceGeometry::atRest() const {
   return shape;
 }
 
+TopoDS_Shape DeviceGeometry::skinCutOut() const {
+  if (!device_.wingCutOut) return {};
+  const WingCutOut& cutOut = *device_.wingCutOut;
+  if (!cutOut.notApplied.empty()) {
+    std::string what;
+    for (const std::string& item : cutOut.notApplied) what += (what.empty() ? "" : ", ") + item;
+    configuration_.warnAboutGeometry({Problem::Severity::Warning, cutOut.xpath, "not applied: " + what});
+  }
+  if (!cutOut.skinsKnown || device_.kind == Device::Kind::Spoiler) return {};
+  const bool aft = device_.kind == Device::Kind::TrailingEdge;
+  // The outline at one end: in the cut-out border's own plane where it gives its etas, else in
+  // the device border's; the skins' xsi are component segment xsi at that plane's front.
+  auto outline = [&](const BorderDefinition& border, const std::optional<RelativeCoordinate>& etaLE,
+                     const std::optional<RelativeCoordinate>& etaTE, double upperXsi, double lowerXsi,
+                     const std::string& xpath) {
+    BorderDefinition end = border;
+    if (etaLE) end.etaLE = *etaLE;
+    if (etaLE || etaTE) end.etaTE = etaTE ? *etaTE : end.etaLE;
+    const BorderPlane plane = borderPlaneOf(end);
+    const double eta = componentSegmentEta(end.etaLE, xpath);
+    auto share = [&](double xsi) {
+      requireFraction(xsi, "xsi", xpath);
+      return gp_Vec(plane.origin,
+                    wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, eta, xsi, Surface::Chord))
+                 .Dot(plane.x) /
+             plane.chord;
+    };
+    return skinCutOutWire(plane, wing_.cleanSolid(configuration_, device_.wingUid), share(upperXsi), share(lowerXsi),
+                          aft, xpath);
+  };
+  BRepOffsetAPI_ThruSections loft(true, true);
+  loft.AddWire(outline(device_.outerBorder, cutOut.outerEtaLE, cutOut.outerEtaTE, cutOut.upperOuter, cutOut.lowerOuter,
+                       cutOut.xpath));
+  loft.AddWire(outline(device_.innerBorder, cutOut.innerEtaLE, cutOut.innerEtaTE, cutOut.upperInner, cutOut.lowerInner,
+                       cutOut.xpath));
+  loft.Build();
+  if (!loft.IsDone()) throw Error(ErrorCode::InvalidModel, "no solid joins the cut-out's borders", {}, cutOut.xpath);
+  return loft.Shape();
+}
+
 std::pair<double, double> DeviceGeometry::parameterRange() const { return parameterRangeOf(device_); }
 
 gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,

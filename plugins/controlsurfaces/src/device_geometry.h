@@ -35,6 +35,12 @@ class DeviceGeometry {
   /// "lower", an own airfoil's "skin").
   NamedShape cutter() const;
 
+  /// What the wing loses besides the device when the device moves (its `wingCutOut`): the
+  /// ruled solid between the skin cut-out outlines at the cut-out's inner and outer border;
+  /// a null shape for a device without one (or one whose skins are given by spars). Says in a
+  /// warning what of the element is not applied.
+  TopoDS_Shape skinCutOut() const;
+
   /// The device's rigid motion at a control parameter within the range of its steps
   /// (QUERY-components §3.4); outside the range, an error.
   gp_Trsf motionAt(double controlParameter) const;

@@ -8,6 +8,39 @@ namespace airshape::controlsurfaces {
 
 namespace {
 
+std::optional<RelativeCoordinate> etaOf(const schema::Child<schema::EtaIsoLineType>& eta) {
+  if (!eta) return std::nullopt;
+  return RelativeCoordinate{eta->eta, eta->referenceUID};
+}
+
+WingCutOut wingCutOutOf(const schema::ControlSurfaceWingCutOutType& node) {
+  WingCutOut cutOut;
+  cutOut.xpath = node.xpath;
+  auto skin = [&](const schema::Child<schema::ControlSurfaceSkinCutOutType>& side, const char* name, double& inner,
+                  double& outer) {
+    if (side && side->xsiInnerBorder && side->xsiOuterBorder) {
+      inner = *side->xsiInnerBorder;
+      outer = *side->xsiOuterBorder;
+    } else {
+      cutOut.skinsKnown = false;
+      cutOut.notApplied.push_back(std::string(name) + " by spar");
+    }
+  };
+  skin(node.upperSkin, "upperSkin", cutOut.upperInner, cutOut.upperOuter);
+  skin(node.lowerSkin, "lowerSkin", cutOut.lowerInner, cutOut.lowerOuter);
+  auto border = [&](const schema::Child<schema::ControlSurfaceSkinCutOutBorderType>& side, const char* name,
+                    std::optional<RelativeCoordinate>& le, std::optional<RelativeCoordinate>& te) {
+    if (!side) return;
+    le = etaOf(side->etaLE);
+    te = etaOf(side->etaTE);
+    if (!le) cutOut.notApplied.push_back(std::string(name) + " by rib");
+  };
+  border(node.innerBorder, "innerBorder", cutOut.innerEtaLE, cutOut.innerEtaTE);
+  border(node.outerBorder, "outerBorder", cutOut.outerEtaLE, cutOut.outerEtaTE);
+  if (node.cutOutProfileControlPoint || node.cutOutProfiles) cutOut.notApplied.push_back("cut-out profiles");
+  return cutOut;
+}
+
 template <class Node>
 Device deviceOf(const Node& node, Device::Kind kind, const schema::WingType& wing,
                 const schema::ComponentSegmentType& segment) {
@@ -33,6 +66,7 @@ Device deviceOf(const Node& node, Device::Kind kind, const schema::WingType& win
              airfoil.rotX,
              airfoil.rotZ});
   }
+  if (node.wingCutOut) device.wingCutOut = wingCutOutOf(*node.wingCutOut);
   return device;
 }
 

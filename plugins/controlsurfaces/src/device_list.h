@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,20 @@ struct IntermediateAirfoil {
   double rotX = 90.0, rotZ = 90.0;  ///< degrees; 90 places it in flight direction, upright
 };
 
+/// What a device's `wingCutOut` removes from the wing besides the device: the skins aft of
+/// these xsi (ahead of them for a leading-edge device), component segment coordinates at the
+/// inner and the outer border, between the cut-out's own etas where it gives them (else the
+/// device's borders), closed by a straight line across the wing.
+struct WingCutOut {
+  std::string xpath;
+  double upperInner = 1.0, upperOuter = 1.0, lowerInner = 1.0, lowerOuter = 1.0;
+  std::optional<RelativeCoordinate> innerEtaLE, innerEtaTE, outerEtaLE, outerEtaTE;
+  /// What the element gives that is not applied (spar and rib references, cut-out profiles);
+  /// with spar references the skins' xsi are unknown and only the device is cut out.
+  std::vector<std::string> notApplied;
+  bool skinsKnown = true;
+};
+
 /// A control device of a wing as the schema gives it.
 struct Device {
   enum class Kind { TrailingEdge, LeadingEdge, Spoiler };
@@ -36,6 +51,7 @@ struct Device {
   bool hasOuterShape = false;  ///< both borders given; without them it has no geometry
   BorderDefinition innerBorder, outerBorder;
   std::vector<IntermediateAirfoil> intermediateAirfoils;  ///< in document order
+  std::optional<WingCutOut> wingCutOut;
 };
 
 /// The counted devices of a wing in the order of the query protocol (QUERY-components §3.1):
