@@ -1,6 +1,7 @@
 // Control devices through the plugin, as a user meets them: every device of a wing built at
-// rest (the wing already built), and one further deflection of a built device (its motion and
-// the measure of the moved shape).
+// rest (the wing already built), the wing exported with every device deflected and its
+// cut-outs, and one further deflection of a built device (its motion and the measure of the
+// moved shape).
 // Run: build/bin/airshape_bench_controlsurfaces (needs ../shared/data/cpacs).
 #include <filesystem>
 #include <string>
@@ -9,6 +10,7 @@
 #include <benchmark/benchmark.h>
 
 #include "airshape/configuration.h"
+#include "airshape/export/export_scene.h"
 #include "airshape/query/query_service.h"
 #include "bench_support.h"
 
@@ -44,6 +46,25 @@ void everyDeviceAtRest(benchmark::State& state, const std::string& name) {
   }
 }
 
+/// What `airshape export --deflect all=max --components <main wing>` builds: every device at
+/// rest, each moved to its largest control parameter, and the wing with all cut-outs.
+void deflectedWingWithCutOuts(benchmark::State& state, const std::string& name) {
+  const std::string path = sharedCpacs(name);
+  if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
+  for (auto _ : state) {
+    state.PauseTiming();
+    airshape::Configuration configuration = openWithPlugins(path);
+    airshape::query::answer(configuration, host().queries(), R"({"op":"wing_volume","wing":1})");
+    airshape::exporting::ExportOptions options;
+    options.components = {airshape::query::answer(configuration, host().queries(), R"({"op":"wing_uid","wing":1})")
+                              .at("ok")
+                              .get<std::string>()};
+    options.poses = airshape::exporting::parsePoses("all=max");
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(airshape::exporting::buildScene(configuration, options));
+  }
+}
+
 void furtherDeflection(benchmark::State& state, const std::string& name) {
   const std::string path = sharedCpacs(name);
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
@@ -56,6 +77,8 @@ void furtherDeflection(benchmark::State& state, const std::string& name) {
 }
 
 BENCHMARK_CAPTURE(everyDeviceAtRest, aircraft_flaps, std::string("CPACS_30_aircraft_flaps.xml"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(deflectedWingWithCutOuts, aircraft_flaps, std::string("CPACS_30_aircraft_flaps.xml"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(furtherDeflection, aircraft_flaps, std::string("CPACS_30_aircraft_flaps.xml"))
     ->Unit(benchmark::kMillisecond);

@@ -115,6 +115,7 @@ NamedShape posedSolid(const Configuration& configuration, const std::string& uid
     BRepAlgoAPI_Cut cut;
     cut.SetArguments(arguments);
     cut.SetTools(tools);
+    cut.SetRunParallel(true);
     cut.Build();
     if (!cut.IsDone() || cut.HasErrors())
       throw Error(ErrorCode::InvalidModel, "the cut-outs of its moving parts could not be cut out of '" + uid + "'");
