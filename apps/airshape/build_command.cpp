@@ -70,8 +70,8 @@ std::string nameOf(const graph::Component& component) {
   return component.uid.empty() ? component.xpath : component.uid;
 }
 
-/// Builds one component's solid and checks it (BRepCheck, volume); a component no plugin
-/// builds says why.
+/// Builds one component's shape and checks it (BRepCheck; volume of a solid, area of faces);
+/// a component no plugin builds says why.
 BuildReport buildOne(const Configuration& configuration, const plugin::PluginHost& host,
                      const graph::Component& component) {
   std::ostringstream line;
@@ -87,8 +87,13 @@ BuildReport buildOne(const Configuration& configuration, const plugin::PluginHos
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const BRepCheck_Analyzer analyzer(solid);
     const bool valid = analyzer.IsValid();
-    line << (valid ? "valid solid" : "INVALID solid") << ", volume " << geometry::volumeOf(solid) << ", " << std::fixed
-         << std::setprecision(3) << seconds << " s";
+    // Structure (spar webs, ribs, ...) is surfaces: its measure is its area, not a volume.
+    const bool isSolid = TopExp_Explorer(solid, TopAbs_SOLID).More();
+    if (isSolid)
+      line << (valid ? "valid solid" : "INVALID solid") << ", volume " << geometry::enclosedVolume(solid);
+    else
+      line << (valid ? "valid faces" : "INVALID faces") << ", area " << geometry::areaOf(solid);
+    line << ", " << std::fixed << std::setprecision(3) << seconds << " s";
     if (!valid) line << " (BRepCheck: " << flawsOf(solid, analyzer) << ")";
     return {line.str(), valid};
   } catch (const Error& error) {

@@ -122,7 +122,9 @@ bool PluginHost::open(const std::string& file) {
       if (loaded.file == canonical) return true;  // the same file found twice
   std::shared_ptr<Plugin> plugin;
   try {
-    boost::dll::shared_library library(canonical, boost::dll::load_mode::rtld_lazy | boost::dll::load_mode::rtld_local);
+    // Every symbol resolved now: a plugin linked against a library it lacks is refused here
+    // with one line, instead of ending the process at its first call.
+    boost::dll::shared_library library(canonical, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
     if (!library.has("airshape_plugin_abi_version") || !library.has("airshape_create_plugin")) {
       messages_.push_back(canonical + ": not an airshape plugin (no airshape_create_plugin factory); skipped");
       return false;

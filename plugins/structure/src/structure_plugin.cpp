@@ -1,7 +1,11 @@
-// The structure plugin: spars, ribs and cells of wings; frames and stringers of fuselages.
-// It claims the node types of the component catalogue (graph/component_graph.h); no builder
-// exists yet.
+// The structure plugin: spars, ribs and cells of wings; frames, stringers, bulkheads, doors,
+// floor beams and walls of fuselages. It builds on the wing plugin's public interface
+// (airshape/wing/wing_services.h). Spar webs are built; the other node types are claimed
+// (graph/component_graph.h) and wait for their builders.
 #include "airshape/plugin/basic_plugin.h"
+#include "airshape/wing/wing_services.h"
+#include "spar_list.h"
+#include "spar_web.h"
 
 namespace airshape::structure {
 namespace {
@@ -9,9 +13,9 @@ namespace {
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
-      : BasicPlugin("structure", "0.1.0",
-                    "wing and fuselage structure: spars, ribs, cells, frames, stringers, bulkheads, doors, "
-                    "floor beams, walls (no builder yet)",
+      : BasicPlugin("structure", "0.2.0",
+                    "wing and fuselage structure: spar webs (ribs, cells, frames, stringers, bulkheads, doors, "
+                    "floor beams, walls: no builder yet)",
                     {{"sparSegment", ""},
                      {"ribsDefinition", ""},
                      {"wingCell", ""},
@@ -28,6 +32,20 @@ class StructurePlugin final : public plugin::BasicPlugin {
                      {"intercostal", ""},
                      {"structuralMember", ""}},
                     {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}}) {}
+
+  void useServices(const plugin::ServiceRegistry& services) override {
+    wing_ = services.find<wing::WingServices>(wing::kWingServices);
+  }
+
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    const std::shared_ptr<const wing::WingServices> wing = wing_;
+    shapes.add("sparSegment", [wing](const Configuration& c, const std::string& uid) {
+      return sparWeb(c, *wing, sparSegmentNamed(c, uid));
+    });
+  }
+
+ private:
+  std::shared_ptr<const wing::WingServices> wing_;
 };
 
 }  // namespace

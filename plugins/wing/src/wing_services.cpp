@@ -66,6 +66,27 @@ class WingServicesOfThisPlugin final : public WingServices {
     }
   }
 
+  gp_Pnt pointRelativeTo(const Configuration& configuration, const std::string& componentSegmentUid,
+                         const std::string& referenceUid, double eta, double xsi, Surface surface) const override {
+    if (referenceUid.empty() || referenceUid == componentSegmentUid)
+      return componentSegmentPoint(configuration, componentSegmentUid, eta, xsi, surface);
+    const auto geometry = WingGeometry::of(configuration, wingHolding(configuration, componentSegmentUid));
+    const std::vector<std::string>& uids = geometry->segmentUids();
+    for (std::size_t k = 0; k < uids.size(); ++k) {
+      if (uids[k] != referenceUid) continue;
+      switch (surface) {
+        case Surface::Upper:
+          return geometry->upperPoint(k, eta, xsi);
+        case Surface::Lower:
+          return geometry->lowerPoint(k, eta, xsi);
+        default:
+          return geometry->chordPoint(k, eta, xsi);
+      }
+    }
+    throw Error(ErrorCode::InvalidModel, "referenceUID '" + referenceUid + "' names neither component segment '" +
+                                             componentSegmentUid + "' nor a segment of its wing");
+  }
+
   TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,
                                     Surface surface) const override {
     const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);

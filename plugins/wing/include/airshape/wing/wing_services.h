@@ -32,6 +32,12 @@ class WingServices {
   virtual gp_Pnt componentSegmentPoint(const Configuration& configuration, const std::string& componentSegmentUid,
                                        double eta, double xsi, Surface surface) const = 0;
 
+  /// The point at (eta, xsi) given relative to `referenceUid`: the component segment itself
+  /// (or empty: component segment coordinates) or a wing segment of its wing (segment
+  /// coordinates), on a surface. Throws Error for any other reference.
+  virtual gp_Pnt pointRelativeTo(const Configuration& configuration, const std::string& componentSegmentUid,
+                                 const std::string& referenceUid, double eta, double xsi, Surface surface) const = 0;
+
   /// The upper or the lower skin of a component segment (Surface::Upper or Lower), as faces
   /// in the global frame. A skin shaped by guide curves that no leading-edge guide splits is
   /// one face, returned for both.
@@ -57,6 +63,6 @@ class WingServices {
 };
 
 /// The name the wing plugin offers WingServices under; the number is the interface's version.
-inline constexpr const char* kWingServices = "airshape.wing.WingServices/2";
+inline constexpr const char* kWingServices = "airshape.wing.WingServices/3";
 
 }  // namespace airshape::wing

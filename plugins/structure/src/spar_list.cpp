@@ -1,0 +1,62 @@
+#include "spar_list.h"
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/model/primary_model.h"
+
+namespace airshape::structure {
+
+namespace {
+
+SparPosition positionOf(const schema::SparPositionType& node) {
+  SparPosition position;
+  position.uid = node.uID;
+  position.xpath = node.xpath;
+  if (node.sparPositionEtaXsi) {
+    position.eta = node.sparPositionEtaXsi->eta;
+    position.xsi = node.sparPositionEtaXsi->xsi;
+    position.referenceUid = node.sparPositionEtaXsi->referenceUID;
+  } else if (node.sparPositionRib) {
+    position.kind = SparPosition::Kind::OnRib;
+    position.xsi = node.sparPositionRib->xsi;
+  } else {
+    position.kind = SparPosition::Kind::OnCurve;
+  }
+  return position;
+}
+
+SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSparType& spars,
+                      const schema::ComponentSegmentType& componentSegment, const schema::WingType& wing) {
+  SparSegment segment{node.uID, node.xpath, componentSegment.uID, wing.uID, {}};
+  if (!node.sparPositionUIDs) return segment;
+  for (const std::string& uid : node.sparPositionUIDs->sparPositionUID) {
+    const schema::SparPositionType* found = nullptr;
+    if (spars.sparPositions)
+      for (const auto& position : spars.sparPositions->sparPosition)
+        if (position.uID == uid && found == nullptr) found = &position;
+    if (found == nullptr)
+      throw Error(ErrorCode::InvalidModel, "sparPositionUID '" + uid + "' names no spar position of its spars", {},
+                  node.xpath + "/sparPositionUIDs");
+    segment.positions.push_back(positionOf(*found));
+  }
+  return segment;
+}
+
+}  // namespace
+
+SparSegment sparSegmentNamed(const Configuration& configuration, const std::string& uid) {
+  for (const model::ModelComponents& model : model::everyModel(configuration))
+    for (const schema::WingType* wing : model.wings) {
+      if (!wing->componentSegments) continue;
+      for (const auto& componentSegment : wing->componentSegments->componentSegment) {
+        if (!componentSegment.structure || !componentSegment.structure->spars) continue;
+        const schema::WingSparType& spars = *componentSegment.structure->spars;
+        if (!spars.sparSegments) continue;
+        for (const auto& segment : spars.sparSegments->sparSegment)
+          if (segment.uID == uid) return segmentOf(segment, spars, componentSegment, *wing);
+      }
+    }
+  throw Error(ErrorCode::InvalidArgument, "no spar segment with uID '" + uid + "'");
+}
+
+}  // namespace airshape::structure

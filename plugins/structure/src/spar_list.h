@@ -1,0 +1,35 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::structure {
+
+/// Where a spar runs through, as the schema gives it (`sparPosition`).
+struct SparPosition {
+  enum class Kind { EtaXsi, OnRib, OnCurve };
+  std::string uid;
+  std::string xpath;
+  Kind kind = Kind::EtaXsi;
+  double eta = 0.0, xsi = 0.0;
+  std::string referenceUid;  ///< EtaXsi: the component segment or a wing segment of its wing
+};
+
+/// One spar segment: the spar positions it runs through, in order, and where it lies.
+struct SparSegment {
+  std::string uid;
+  std::string xpath;
+  std::string componentSegmentUid;
+  std::string wingUid;
+  std::vector<SparPosition> positions;
+};
+
+/// The spar segment with this uID in any model. Throws Error when none has it, naming the
+/// CPACS path when one of its spar position uIDs names no spar position.
+SparSegment sparSegmentNamed(const Configuration& configuration, const std::string& uid);
+
+}  // namespace airshape::structure
