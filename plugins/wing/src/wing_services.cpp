@@ -87,6 +87,16 @@ class WingServicesOfThisPlugin final : public WingServices {
                                              componentSegmentUid + "' nor a segment of its wing");
   }
 
+  std::vector<std::string> componentSegmentSegmentUids(const Configuration& configuration,
+                                                       const std::string& componentSegmentUid) const override {
+    const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
+    const auto geometry = WingGeometry::of(configuration, wing);
+    const ComponentSegment segment(*geometry, componentSegmentNamed(wing, componentSegmentUid));
+    std::vector<std::string> uids;
+    for (std::size_t k : segment.segments()) uids.push_back(geometry->segmentUids()[k]);
+    return uids;
+  }
+
   TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,
                                     Surface surface) const override {
     const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
@@ -37,6 +38,10 @@ class WingServices {
   /// coordinates), on a surface. Throws Error for any other reference.
   virtual gp_Pnt pointRelativeTo(const Configuration& configuration, const std::string& componentSegmentUid,
                                  const std::string& referenceUid, double eta, double xsi, Surface surface) const = 0;
+
+  /// The wing segments a component segment runs through, from its inner to its outer end.
+  virtual std::vector<std::string> componentSegmentSegmentUids(const Configuration& configuration,
+                                                               const std::string& componentSegmentUid) const = 0;
 
   /// The upper or the lower skin of a component segment (Surface::Upper or Lower), as faces
   /// in the global frame. A skin shaped by guide curves that no leading-edge guide splits is

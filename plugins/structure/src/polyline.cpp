@@ -1,0 +1,56 @@
+#include "polyline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "airshape/error.h"
+
+namespace airshape::structure {
+
+Polyline::Polyline(std::vector<gp_Pnt> points) : points_(std::move(points)) {
+  if (points_.size() < 2) throw Error(ErrorCode::InvalidModel, "a line needs two points");
+  lengths_.push_back(0.0);
+  for (std::size_t i = 1; i < points_.size(); ++i)
+    lengths_.push_back(lengths_.back() + points_[i - 1].Distance(points_[i]));
+  length_ = lengths_.back();
+  if (length_ <= 0.0) throw Error(ErrorCode::InvalidModel, "a line has no length");
+}
+
+std::size_t Polyline::pieceAt(double share, double& along) const {
+  const double distance = share * length_;
+  std::size_t piece = 0;
+  while (piece + 2 < points_.size() && distance > lengths_[piece + 1]) ++piece;
+  const double pieceLength = lengths_[piece + 1] - lengths_[piece];
+  along = pieceLength > 0.0 ? (distance - lengths_[piece]) / pieceLength : 0.0;
+  return piece;
+}
+
+gp_Pnt Polyline::at(double share) const {
+  double along = 0.0;
+  const std::size_t piece = pieceAt(share, along);
+  return points_[piece].Translated(along * gp_Vec(points_[piece], points_[piece + 1]));
+}
+
+gp_Vec Polyline::directionAt(double share) const {
+  double along = 0.0;
+  const std::size_t piece = pieceAt(share, along);
+  return gp_Vec(points_[piece], points_[piece + 1]).Normalized();
+}
+
+std::optional<double> Polyline::crossing(const gp_Pnt& origin, const gp_Vec& normal) const {
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
+    const double a = gp_Vec(origin, points_[i]).Dot(normal), b = gp_Vec(origin, points_[i + 1]).Dot(normal);
+    if ((a > 0.0 && b > 0.0) || (a < 0.0 && b < 0.0) || a == b) continue;
+    const double t = a / (a - b);
+    return (lengths_[i] + t * (lengths_[i + 1] - lengths_[i])) / length_;
+  }
+  return std::nullopt;
+}
+
+Polyline Polyline::joined(const Polyline& next) const {
+  std::vector<gp_Pnt> points = points_;
+  points.insert(points.end(), next.points_.begin() + 1, next.points_.end());
+  return Polyline(points);
+}
+
+}  // namespace airshape::structure

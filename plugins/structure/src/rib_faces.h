@@ -1,0 +1,18 @@
+#pragma once
+
+#include "airshape/named_shape.h"
+#include "airshape/wing/wing_services.h"
+#include "rib_list.h"
+
+namespace airshape::structure {
+
+/// The ribs of a ribs definition (QUERY-components §1, `wing_rib`), each the part inside the
+/// component segment's solid of the plane the schema places it in, between its start and end
+/// (the leading or trailing edge, or a spar's web): ribs set along a reference line
+/// (`ribsPositioning`: the leading edge, the trailing edge or a spar, from a start to an end
+/// point, by number or spacing), turned by `ribRotation` about the wing's z axis from its y
+/// (or x) axis, tilted by the cross section's x rotation. Faces are named "<uID>/rib <n>".
+/// Throws Error naming the CPACS path of what cannot be built.
+NamedShape ribFaces(const Configuration& configuration, const wing::WingServices& wing, const RibsDefinition& ribs);
+
+}  // namespace airshape::structure

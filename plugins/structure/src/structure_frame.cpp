@@ -1,0 +1,119 @@
+#include "structure_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+
+namespace airshape::structure {
+
+namespace {
+
+using Surface = wing::WingServices::Surface;
+
+gp_Vec linearly(const model::Transform& transform, const gp_Vec& v) {
+  return gp_Vec(model::apply(transform, gp_Pnt(0, 0, 0)), model::apply(transform, gp_Pnt(v.XYZ())));
+}
+
+}  // namespace
+
+StructureFrame::StructureFrame(const Configuration& configuration, const wing::WingServices& wing,
+                               std::string componentSegmentUid, std::string wingUid)
+    : configuration_(configuration),
+      wing_(wing),
+      componentSegmentUid_(std::move(componentSegmentUid)),
+      toGlobal_(model::componentTransform(configuration, wingUid)),
+      toWing_(toGlobal_.inverse()) {}
+
+gp_Vec StructureFrame::toGlobal(const gp_Vec& v) const { return linearly(toGlobal_, v); }
+gp_Vec StructureFrame::toWing(const gp_Vec& v) const { return linearly(toWing_, v); }
+
+gp_Pnt StructureFrame::chordPoint(const std::string& referenceUid, double eta, double xsi) const {
+  return toWing(wing_.pointRelativeTo(configuration_, componentSegmentUid_, referenceUid, eta, xsi, Surface::Chord));
+}
+
+double StructureFrame::etaOf(const gp_Pnt& point) const {
+  // The distance to the chord line at eta is smallest at the point's eta: golden sections.
+  auto distance = [&](double eta) {
+    const gp_Pnt front = chordPoint("", eta, 0.0), back = chordPoint("", eta, 1.0);
+    const gp_Vec chord(front, back);
+    const gp_Vec toPoint(front, point);
+    return toPoint.Crossed(chord).Magnitude() / chord.Magnitude();
+  };
+  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+  double a = 0.0, b = 1.0;
+  double c = b - golden * (b - a), d = a + golden * (b - a);
+  double fc = distance(c), fd = distance(d);
+  while (b - a > 1e-12) {
+    if (fc < fd) {
+      b = d, d = c, fd = fc;
+      c = b - golden * (b - a), fc = distance(c);
+    } else {
+      a = c, c = d, fc = fd;
+      d = a + golden * (b - a), fd = distance(d);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+gp_Vec StructureFrame::midplaneNormal(double eta) const {
+  return toWing(wing_.midplaneNormal(configuration_, componentSegmentUid_, std::clamp(eta, 0.0, 1.0))).Normalized();
+}
+
+Polyline StructureFrame::edgeLine(double xsi) const {
+  const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+  std::vector<gp_Pnt> points = {chordPoint(segments.front(), 0.0, xsi)};
+  for (const std::string& segment : segments) points.push_back(chordPoint(segment, 1.0, xsi));
+  return Polyline(points);
+}
+
+Polyline StructureFrame::midplaneLine(const gp_Pnt& from, const gp_Pnt& to) const {
+  const gp_Vec along(from, to);
+  const gp_Vec normal = along.Crossed(gp_Vec(0, 0, 1));
+  std::vector<std::pair<double, gp_Pnt>> crossings;
+  const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+  for (std::size_t k = 0; k + 1 < segments.size(); ++k) {
+    const gp_Pnt front = chordPoint(segments[k], 1.0, 0.0), back = chordPoint(segments[k], 1.0, 1.0);
+    const double a = gp_Vec(from, front).Dot(normal), b = gp_Vec(from, back).Dot(normal);
+    if (a == b) continue;
+    const gp_Pnt crossing = front.Translated(a / (a - b) * gp_Vec(front, back));
+    const double share = gp_Vec(from, crossing).Dot(along) / along.SquareMagnitude();
+    if (share > 1e-9 && share < 1.0 - 1e-9) crossings.emplace_back(share, crossing);
+  }
+  std::sort(crossings.begin(), crossings.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+  std::vector<gp_Pnt> points = {from};
+  for (const auto& crossing : crossings) points.push_back(crossing.second);
+  points.push_back(to);
+  return Polyline(points);
+}
+
+Polyline StructureFrame::sparLine(const SparSegment& spar) const {
+  std::vector<gp_Pnt> points;
+  for (const SparPosition& position : spar.positions) {
+    if (position.kind != SparPosition::Kind::EtaXsi)
+      throw Error(ErrorCode::NotImplemented, "spar positions on ribs or curves are not built yet", {}, position.xpath);
+    points.push_back(chordPoint(position.referenceUid, position.eta, position.xsi));
+  }
+  if (points.size() < 2)
+    throw Error(ErrorCode::InvalidModel, "a spar segment needs at least two spar positions", {},
+                spar.xpath + "/sparPositionUIDs");
+  Polyline line = midplaneLine(points[0], points[1]);
+  for (std::size_t i = 2; i < points.size(); ++i) line = line.joined(midplaneLine(points[i - 1], points[i]));
+  return line;
+}
+
+const TopoDS_Shape& StructureFrame::solid() const {
+  return configuration_.shapes().shapeOf(configuration_, componentSegmentUid_);
+}
+
+double StructureFrame::reach() const {
+  Bnd_Box box;
+  BRepBndLib::Add(solid(), box);
+  return std::sqrt(box.SquareExtent());
+}
+
+}  // namespace airshape::structure

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <string>
+
+#include <TopoDS_Shape.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include "airshape/model/placement.h"
+#include "airshape/wing/wing_services.h"
+#include "polyline.h"
+#include "spar_list.h"
+
+namespace airshape::structure {
+
+/// A component segment as its structure is defined on it: in the wing's own frame (where the
+/// schema's "up", "global y" and the reference library's structure live), with the lines and
+/// normals rib positions refer to, and the solid structure is cut from (in the global frame).
+class StructureFrame {
+ public:
+  StructureFrame(const Configuration& configuration, const wing::WingServices& wing, std::string componentSegmentUid,
+                 std::string wingUid);
+
+  gp_Pnt toGlobal(const gp_Pnt& p) const { return model::apply(toGlobal_, p); }
+  gp_Vec toGlobal(const gp_Vec& v) const;
+  gp_Pnt toWing(const gp_Pnt& p) const { return model::apply(toWing_, p); }
+  gp_Vec toWing(const gp_Vec& v) const;
+
+  /// A point on the chord surface at (eta, xsi) relative to the component segment or one of
+  /// its wing's segments, in the wing frame.
+  gp_Pnt chordPoint(const std::string& referenceUid, double eta, double xsi) const;
+  /// The component segment eta of a point on (or near) its chord surface, in the wing frame.
+  double etaOf(const gp_Pnt& point) const;
+  /// The unit normal of the chord surface at eta (towards the upper skin), in the wing frame.
+  gp_Vec midplaneNormal(double eta) const;
+  /// The leading or trailing edge: straight from section to section, in the wing frame.
+  Polyline leadingEdge() const { return edgeLine(0.0); }
+  Polyline trailingEdge() const { return edgeLine(1.0); }
+  /// The line between two chord surface points (wing frame): straight within a wing segment,
+  /// broken where it crosses a section's chord (its vertical plane meets the chord there).
+  Polyline midplaneLine(const gp_Pnt& from, const gp_Pnt& to) const;
+  /// The midplane line through a spar segment's positions, in the wing frame.
+  Polyline sparLine(const SparSegment& spar) const;
+
+  /// The component segment's solid (global frame) and the size of its box (a length that
+  /// surely reaches across it).
+  const TopoDS_Shape& solid() const;
+  double reach() const;
+
+  const std::string& componentSegmentUid() const { return componentSegmentUid_; }
+
+ private:
+  Polyline edgeLine(double xsi) const;
+
+  const Configuration& configuration_;
+  const wing::WingServices& wing_;
+  std::string componentSegmentUid_;
+  model::Transform toGlobal_, toWing_;
+};
+
+}  // namespace airshape::structure
