@@ -24,10 +24,10 @@ def segment(uid, *positions):
             "<sparCrossSection><rotation>90</rotation></sparCrossSection></sparSegment>")
 
 
-def with_spars(tmp_path, positions, segments, ribs=""):
+def with_spars(tmp_path, positions, segments, other=""):
     with open(WITH_DEVICES) as original:
         text = original.read()
-    structure = (f"<structure>{ribs}<spars><sparPositions>{positions}</sparPositions>"
+    structure = (f"<structure>{other}<spars><sparPositions>{positions}</sparPositions>"
                  f"<sparSegments>{segments}</sparSegments></spars></structure>")
     path = tmp_path / "spars.xml"
     path.write_text(text.replace("<controlSurfaces>", structure + "<controlSurfaces>", 1))
@@ -119,8 +119,48 @@ def test_rib_errors_name_the_cpacs_path(tmp_path):
     assert "no spar segment with uID 'Missing'" in answer["error"]
 
 
+def cells(*cells_xml):
+    return f"<upperShell><skin/><cells>{''.join(cells_xml)}</cells></upperShell>"
+
+
+def cell(uid, eta_inner, eta_outer, leading_edge, trailing_edge):
+    def eta(value):
+        return f"<eta>{value}</eta><referenceUID>RectCS</referenceUID>"
+
+    return (f'<cell uID="{uid}"><positioningLeadingEdge>{leading_edge}</positioningLeadingEdge>'
+            f"<positioningTrailingEdge>{trailing_edge}</positioningTrailingEdge>"
+            f"<positioningInnerBorder><eta1>{eta(eta_inner)}</eta1><eta2>{eta(eta_inner)}</eta2></positioningInnerBorder>"
+            f"<positioningOuterBorder><eta1>{eta(eta_outer)}</eta1><eta2>{eta(eta_outer)}</eta2></positioningOuterBorder>"
+            "</cell>")
+
+
+def skin_length(xi0, xi1, steps=20000):
+    """Length of the upper skin z = 0.15·2·ξ(1−ξ), x = 1 + 2ξ between two chord shares."""
+    def slope(xi):
+        return math.hypot(2.0, 0.3 * (1 - 2 * xi))
+    h = (xi1 - xi0) / steps
+    return h / 3 * sum((1 if k in (0, steps) else 4 if k % 2 else 2) * slope(xi0 + k * h) for k in range(steps + 1))
+
+
+def test_cells_are_skin_patches_in_closed_form(tmp_path):
+    positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
+    by_xsi = cell("ByXsi", 0.2, 0.8, "<xsi1>0.2</xsi1><xsi2>0.2</xsi2>", "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")
+    by_spar = cell("BySpar", 0.2, 0.8, "<sparUID>Front</sparUID>", "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"), cells(by_xsi, by_spar))
+    area, box, spar_area, volume, kind = (a["ok"] for a in ask(
+        path, {"op": "component_surface_area", "uid": "ByXsi"}, {"op": "bounding_box", "uid": "ByXsi"},
+        {"op": "component_surface_area", "uid": "BySpar"}, {"op": "component_volume", "uid": "ByXsi"},
+        {"op": "component_type", "uid": "ByXsi"}))
+    # The upper skin between ξ 0.2 and 0.6 over 3 m of span.
+    assert area == pytest.approx(3.0 * skin_length(0.2, 0.6), rel=1e-6)
+    assert box["min"][:2] == pytest.approx([1.4, 1.0], abs=1e-6) and box["max"][:2] == pytest.approx([2.2, 4.0], abs=1e-6)
+    assert box["max"][2] == pytest.approx(height(0.5) / 2, abs=1e-6) and box["min"][2] == pytest.approx(height(0.2) / 2, abs=1e-6)
+    assert spar_area == pytest.approx(area, rel=1e-6), "a spar at ξ 0.2 bounds the cell where xsi 0.2 does"
+    assert volume == 0 and kind == "wing_cell"
+
+
 def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
-    # Spar webs and ribs are built; cells and fuselage structure wait for their builders
+    # Spar webs, ribs and cells are built; fuselage structure waits for its builders
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 312, output[-3000:]
+    assert passed >= 339, output[-3000:]

@@ -1,9 +1,11 @@
 // The structure plugin: spars, ribs and cells of wings; frames, stringers, bulkheads, doors,
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
-// (airshape/wing/wing_services.h). Spar webs and ribs are built; the other node types are
-// claimed (graph/component_graph.h) and wait for their builders.
+// (airshape/wing/wing_services.h). Spar webs, ribs and cells are built; the other node types
+// are claimed (graph/component_graph.h) and wait for their builders.
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/wing/wing_services.h"
+#include "cell_list.h"
+#include "cell_skin.h"
 #include "rib_faces.h"
 #include "rib_list.h"
 #include "spar_list.h"
@@ -15,8 +17,8 @@ namespace {
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
-      : BasicPlugin("structure", "0.3.0",
-                    "wing and fuselage structure: spar webs, ribs (cells, frames, stringers, bulkheads, doors, "
+      : BasicPlugin("structure", "0.4.0",
+                    "wing and fuselage structure: spar webs, ribs, cells (frames, stringers, bulkheads, doors, "
                     "floor beams, walls: no builder yet)",
                     {{"sparSegment", ""},
                      {"ribsDefinition", ""},
@@ -46,6 +48,9 @@ class StructurePlugin final : public plugin::BasicPlugin {
     });
     shapes.add("ribsDefinition", [wing](const Configuration& c, const std::string& uid) {
       return ribFaces(c, *wing, ribsDefinitionNamed(c, uid));
+    });
+    shapes.add("wingCell", [wing](const Configuration& c, const std::string& uid) {
+      return cellSkin(c, *wing, wingCellNamed(c, uid));
     });
   }
 

@@ -1,0 +1,125 @@
+#include "cell_skin.h"
+
+#include <algorithm>
+
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "spar_list.h"
+#include "structure_frame.h"
+
+namespace airshape::structure {
+
+namespace {
+
+using Surface = wing::WingServices::Surface;
+
+class CellCorners {
+ public:
+  CellCorners(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell,
+              const StructureFrame& frame)
+      : configuration_(configuration), wing_(wing), cell_(cell), frame_(frame) {}
+
+  /// A corner on the chord surface (wing frame): at the inner or outer border, at the leading
+  /// or trailing edge.
+  gp_Pnt at(bool inner, bool leadingEdge) const {
+    const auto& spanwise = inner ? cell_.node->positioningInnerBorder : cell_.node->positioningOuterBorder;
+    const auto& chordwise = leadingEdge ? cell_.node->positioningLeadingEdge : cell_.node->positioningTrailingEdge;
+    const std::string spanwisePath = cell_.xpath + (inner ? "/positioningInnerBorder" : "/positioningOuterBorder");
+    const std::string chordwisePath =
+        cell_.xpath + (leadingEdge ? "/positioningLeadingEdge" : "/positioningTrailingEdge");
+    if (!spanwise || !chordwise)
+      throw Error(ErrorCode::InvalidModel, "the cell has no border positioning", {},
+                  !spanwise ? spanwisePath : chordwisePath);
+    const double csEta = etaAt(*spanwise, leadingEdge, spanwisePath);
+    if (chordwise->contourCoordinate)
+      throw Error(ErrorCode::NotImplemented, "cells bounded by contour coordinates are not built yet", {},
+                  chordwisePath);
+    return frame_.chordPoint("", csEta, xsiAt(*chordwise, inner, csEta, chordwisePath));
+  }
+
+ private:
+  /// The component segment eta of a border at the leading edge (eta1) or trailing edge (eta2).
+  double etaAt(const schema::CellPositioningSpanwiseType& spanwise, bool leadingEdge, const std::string& where) const {
+    const auto& eta = leadingEdge ? spanwise.eta1 : spanwise.eta2;
+    if (!eta)
+      throw Error(ErrorCode::NotImplemented, "cells bounded by ribs or contour coordinates are not built yet", {},
+                  where);
+    try {
+      return wing_.componentSegmentEta(configuration_, cell_.componentSegmentUid, eta->referenceUID, eta->eta);
+    } catch (const Error& error) {
+      throw Error(error.code(), error.message(), {}, where);
+    }
+  }
+
+  double xsiAt(const schema::CellPositioningChordwiseType& chordwise, bool inner, double eta,
+               const std::string& where) const {
+    if (chordwise.xsi1 && chordwise.xsi2) return inner ? *chordwise.xsi1 : *chordwise.xsi2;
+    if (!chordwise.sparUID)
+      throw Error(ErrorCode::InvalidModel, "the border gives neither xsi1 and xsi2 nor a spar", {}, where);
+    // Where the spar's midplane line crosses the chord at eta.
+    const gp_Pnt front = frame_.chordPoint("", eta, 0.0), back = frame_.chordPoint("", eta, 1.0);
+    const gp_Vec chord(front, back);
+    const Polyline spar = frame_.sparLine(sparSegmentNamed(configuration_, *chordwise.sparUID));
+    const auto share = spar.crossing(front, chord.Crossed(gp_Vec(0, 0, 1)));
+    if (!share)
+      throw Error(ErrorCode::InvalidModel, "spar '" + *chordwise.sparUID + "' does not reach the cell's border", {},
+                  where);
+    return gp_Vec(front, spar.at(*share)).Dot(chord) / chord.SquareMagnitude();
+  }
+
+  const Configuration& configuration_;
+  const wing::WingServices& wing_;
+  const WingCell& cell_;
+  const StructureFrame& frame_;
+};
+
+}  // namespace
+
+NamedShape cellSkin(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell) {
+  const StructureFrame frame(configuration, wing, cell.componentSegmentUid, cell.wingUid);
+  const CellCorners corners(configuration, wing, cell, frame);
+  const std::vector<gp_Pnt> loop = {corners.at(true, true), corners.at(false, true), corners.at(false, false),
+                                    corners.at(true, false)};
+  // The four vertical planes through the corners bound a prism reaching across the wing.
+  const double reach = frame.reach();
+  auto level = [&](double height) {
+    BRepBuilderAPI_MakePolygon polygon;
+    for (const gp_Pnt& corner : loop) polygon.Add(frame.toGlobal(gp_Pnt(corner.X(), corner.Y(), height)));
+    polygon.Close();
+    return polygon.Wire();
+  };
+  double low = loop.front().Z(), high = low;
+  for (const gp_Pnt& corner : loop) low = std::min(low, corner.Z()), high = std::max(high, corner.Z());
+  BRepOffsetAPI_ThruSections prism(true, true);
+  prism.AddWire(level(low - reach));
+  prism.AddWire(level(high + reach));
+  prism.Build();
+  if (!prism.IsDone()) throw Error(ErrorCode::InvalidModel, "the cell's corners enclose nothing", {}, cell.xpath);
+
+  const TopoDS_Shape skin =
+      wing.componentSegmentSkin(configuration, cell.componentSegmentUid, cell.upper ? Surface::Upper : Surface::Lower);
+  BRepAlgoAPI_Common common(skin, prism.Shape());
+  if (!common.IsDone() || common.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, cell.xpath);
+  NamedShape patch;
+  BRep_Builder builder;
+  TopoDS_Compound faces;
+  builder.MakeCompound(faces);
+  for (TopExp_Explorer face(common.Shape(), TopAbs_FACE); face.More(); face.Next()) {
+    builder.Add(faces, face.Current());
+    patch.faces.emplace_back(cell.uid + "/skin", TopoDS::Face(face.Current()));
+  }
+  if (patch.faces.empty()) throw Error(ErrorCode::InvalidModel, "the cell covers no skin", {}, cell.xpath);
+  patch.shape = faces;
+  return patch;
+}
+
+}  // namespace airshape::structure
