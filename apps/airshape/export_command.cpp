@@ -63,6 +63,8 @@ ExportCommandOptions parseExportOptions(const Arguments& arguments) {
     } else if (argument == "--deflect" && hasValue) {
       const std::vector<exporting::Pose> poses = exporting::parsePoses(arguments[++i]);
       options.exportOptions.poses.insert(options.exportOptions.poses.end(), poses.begin(), poses.end());
+    } else if (argument == "--structure") {
+      options.exportOptions.structure = true;
     } else if (argument == "--mirror") {
       options.exportOptions.mirror = true;
     } else if (argument == "--fused") {
@@ -109,7 +111,7 @@ void printSummary(const exporting::ExportScene& scene) {
             << std::setw(14) << "area [m2]" << '\n';
   for (const exporting::SceneComponent& component : scene.components)
     std::cout << std::left << std::setw(36) << component.name << std::right << std::fixed << std::setprecision(4)
-              << std::setw(14) << geometry::volumeOf(component.shape.shape) << std::setw(14)
+              << std::setw(14) << geometry::enclosedVolume(component.shape.shape) << std::setw(14)
               << geometry::areaOf(component.shape.shape) << '\n';
 }
 

@@ -28,6 +28,27 @@ print(json.dumps([[gmsh.model.getEntityName(3, tag), gmsh.model.occ.getMass(3, t
 gmsh.finalize()
 """
 
+GMSH_CONFORMITY = """
+import json, sys, gmsh
+gmsh.initialize(["-noenv"])
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.option.setString("Geometry.OCCTargetUnit", "M")
+gmsh.merge(sys.argv[1])
+gmsh.option.setNumber("Mesh.MeshSizeMax", float(sys.argv[2]))
+gmsh.model.mesh.generate(2)
+tags, coords, _ = gmsh.model.mesh.getNodes()
+seen, duplicates = set(), 0
+for i in range(len(tags)):
+    key = tuple(round(c, 7) for c in coords[3 * i:3 * i + 3])
+    duplicates += key in seen
+    seen.add(key)
+names = sorted({gmsh.model.getEntityName(2, tag) for _, tag in gmsh.model.getEntities(2)})
+junctions = sum(len(gmsh.model.getAdjacencies(1, tag)[0]) >= 3 for _, tag in gmsh.model.getEntities(1))
+print(json.dumps({"surfaces": len(gmsh.model.getEntities(2)), "nodes": len(tags), "duplicates": duplicates,
+                  "junctions": junctions, "names": names}))
+gmsh.finalize()
+"""
+
 VTK_ARRAYS = """
 import json, sys, vtk
 reader = vtk.vtkXMLPolyDataReader()
@@ -66,6 +87,17 @@ def gmsh_solids(path):
     BREP file, in metres."""
     _require_module("gmsh")
     return [tuple(v) for v in _run_python(GMSH_VOLUMES, path)]
+
+
+def gmsh_mesh_conformity(path, size):
+    """gmsh's surface mesh of a STEP file with elements of at most `size` metres: numbers of
+    surfaces and nodes, nodes that coincide with another (none when faces share their edges),
+    curves where three or more surfaces meet (a web on a skin), and the surface names."""
+    _require_module("gmsh")
+    result = subprocess.run(["/usr/bin/python3", "-c", GMSH_CONFORMITY, str(path), str(size)], capture_output=True,
+                            text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout.strip().splitlines()[-1])
 
 
 def vtk_polydata(path):

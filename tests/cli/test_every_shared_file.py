@@ -1,5 +1,5 @@
 """`airshape build` on every shared CPACS file: every component a plugin builds becomes a valid
-solid (BRepCheck) or fails with a line naming it; nothing crashes."""
+solid or set of faces (BRepCheck) or fails with a line naming it; nothing crashes."""
 import glob
 import os
 
@@ -15,6 +15,12 @@ KNOWN = [
     "the wing has no segments",                                      # multiple_wings.xml: W13_EmptyWing
     "fromParameter and toParameter are not defined for wings",  # simple_test_guide_curves_wrong_gc_Def
     "the faces enclose no volume",  # simpletest-engine-no-nacelle, -pylon-no-segments: root and tip coincide
+    # Structure not built yet, or defined so that it cannot be (docs/structure.md).
+    "not built yet",
+    "a rib does not meet spar",
+    "the cell covers no skin",
+    "no run of segments joins elements",
+    "is not one given by eta and xsi",
 ]
 
 
@@ -29,7 +35,7 @@ def test_every_component_builds_or_fails_clearly(path):
     for line in result.stdout.splitlines()[1:]:
         if line.startswith(path + ": nothing to build: "):
             continue
-        assert "solid" in line or "no builder yet for" in line or "not supported: " in line or "FAILED" in line, line
+        assert "solid" in line or "faces" in line or "no builder yet for" in line or "not supported: " in line or "FAILED" in line, line
         if "FAILED" in line:
             assert any(known in line for known in KNOWN), line
         assert "INVALID" not in line, line  # every solid that builds is valid

@@ -17,6 +17,7 @@
 #include "airshape/graph/parallel_build.h"
 #include "airshape/model/symmetry.h"
 #include "posed_components.h"
+#include "structural_model.h"
 
 namespace airshape::exporting {
 
@@ -145,6 +146,12 @@ std::vector<std::pair<std::string, NamedShape>> sceneSolids(const Configuration&
 }  // namespace
 
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options) {
+  if (options.structure) {
+    ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}};
+    for (const SceneComponent& model : structuralModels(configuration, options, scene.leftOut))
+      scene.components.push_back(copied(model.name, model.shape));
+    return scene;
+  }
   const Clock::time_point start = Clock::now();
   const std::map<std::string, PosedComponent> posed = resolvePoses(configuration, options.poses);
   const std::vector<std::size_t> selected = selectedComponents(configuration, options, posed);

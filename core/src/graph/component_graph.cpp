@@ -64,10 +64,12 @@ void addWingContents(const std::string& wing, std::vector<ComponentLocation>& lo
   const std::string segment = wing + "/componentSegments/componentSegment";
   locations.push_back({"wingComponentSegment", segment, "wing_component_segment", true});
   const auto addStructure = [&](const std::string& structure) {
-    locations.push_back({"sparSegment", structure + "/spars/sparSegments/sparSegment", "wing_spar"});
-    locations.push_back({"ribsDefinition", structure + "/ribsDefinitions/ribsDefinition", "wing_rib"});
-    locations.push_back({"wingCell", structure + "/upperShell/cells/cell", "wing_cell"});
-    locations.push_back({"wingCell", structure + "/lowerShell/cells/cell", "wing_cell"});
+    // Structure lies inside its wing: exported when named, not part of the configuration box.
+    locations.push_back({"sparSegment", structure + "/spars/sparSegments/sparSegment", "wing_spar", false, true, true});
+    locations.push_back(
+        {"ribsDefinition", structure + "/ribsDefinitions/ribsDefinition", "wing_rib", false, true, true});
+    locations.push_back({"wingCell", structure + "/upperShell/cells/cell", "wing_cell", false, true});
+    locations.push_back({"wingCell", structure + "/lowerShell/cells/cell", "wing_cell", false, true});
   };
   addStructure(segment + "/structure");
   locations.push_back({"wingFuelTank", segment + "/wingFuelTanks/wingFuelTank", "tank"});
@@ -82,9 +84,10 @@ void addWingContents(const std::string& wing, std::vector<ComponentLocation>& lo
 
 /// The stiffening of a body's skin (a fuselage's, a tank vessel's): frames, stringers, walls.
 void addBodyStructure(const std::string& structure, std::vector<ComponentLocation>& locations) {
-  locations.push_back({"frame", structure + "/frames/frame", "frame"});
-  locations.push_back({"stringer", structure + "/stringers/stringer", "stringer"});
-  locations.push_back({"wallSegment", structure + "/walls/wallSegments/wallSegment", "fuselage_wall"});
+  locations.push_back({"frame", structure + "/frames/frame", "frame", false, true, true});
+  locations.push_back({"stringer", structure + "/stringers/stringer", "stringer", false, true, true});
+  locations.push_back(
+      {"wallSegment", structure + "/walls/wallSegments/wallSegment", "fuselage_wall", false, true, true});
 }
 
 /// The elements inside a fuselage that are geometry of their own: structure, decks, tanks.
@@ -107,7 +110,8 @@ void addFuselageContents(const std::string& fuselage, std::vector<ComponentLocat
       {"structuralMember", "generalStructuralMembers/generalStructuralMember", "structural_member"},
   };
   for (const ComponentLocation& location : inStructure)
-    locations.push_back({location.nodeType, structure + "/" + location.pathInModel, location.typeName});
+    locations.push_back(
+        {location.nodeType, structure + "/" + location.pathInModel, location.typeName, false, true, true});
   const std::string deck = fuselage + "/decks/deck";
   locations.push_back({"deck", deck, "deck"});
   for (const char* kind :
@@ -178,6 +182,7 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
   component.typeName = location.typeName;
   component.part = location.part;
   component.insideParent = location.insideParent;
+  component.structure = location.structure;
   if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
   component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
   component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);

@@ -11,7 +11,8 @@ namespace airshape::structure {
 /// (the leading or trailing edge, or a spar's web): ribs set along a reference line
 /// (`ribsPositioning`: the leading edge, the trailing edge or a spar, from a start to an end
 /// point, by number or spacing), turned by `ribRotation` about the wing's z axis from its y
-/// (or x) axis, tilted by the cross section's x rotation. Faces are named "<uID>/rib <n>".
+/// (or x) axis, tilted by the cross section's x rotation; or one rib from a start to an end
+/// point (`ribExplicitPositioning`). Faces are named "<uID>/rib <n>".
 /// Throws Error naming the CPACS path of what cannot be built.
 NamedShape ribFaces(const Configuration& configuration, const wing::WingServices& wing, const RibsDefinition& ribs);
 

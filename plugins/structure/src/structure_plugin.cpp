@@ -2,6 +2,8 @@
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
 // (airshape/wing/wing_services.h). Spar webs, ribs and cells are built; the other node types
 // are claimed (graph/component_graph.h) and wait for their builders.
+#include "airshape/configuration.h"
+#include "airshape/error.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/wing/wing_services.h"
 #include "cell_list.h"
@@ -13,6 +15,15 @@
 
 namespace airshape::structure {
 namespace {
+
+/// Structure is built in component segments; a control device's own structure is not yet.
+void requireComponentSegmentStructure(const Configuration& configuration, const std::string& uid) {
+  const long index = configuration.components().find(uid);
+  if (index < 0) return;  // the builder says that the uID names nothing
+  const std::string& xpath = configuration.components().components()[static_cast<std::size_t>(index)].xpath;
+  if (xpath.find("/controlSurfaces/") != std::string::npos)
+    throw Error(ErrorCode::NotImplemented, "the structure of control devices is not built yet", {}, xpath);
+}
 
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
@@ -44,12 +55,15 @@ class StructurePlugin final : public plugin::BasicPlugin {
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     const std::shared_ptr<const wing::WingServices> wing = wing_;
     shapes.add("sparSegment", [wing](const Configuration& c, const std::string& uid) {
+      requireComponentSegmentStructure(c, uid);
       return sparWeb(c, *wing, sparSegmentNamed(c, uid));
     });
     shapes.add("ribsDefinition", [wing](const Configuration& c, const std::string& uid) {
+      requireComponentSegmentStructure(c, uid);
       return ribFaces(c, *wing, ribsDefinitionNamed(c, uid));
     });
     shapes.add("wingCell", [wing](const Configuration& c, const std::string& uid) {
+      requireComponentSegmentStructure(c, uid);
       return cellSkin(c, *wing, wingCellNamed(c, uid));
     });
   }

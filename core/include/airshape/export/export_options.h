@@ -37,6 +37,12 @@ struct ExportOptions {
   /// parameter, and the component it lies in (its host) with the cut-outs of those posed in
   /// it, in one Boolean operation. Empty: every component as built, at rest.
   std::vector<Pose> poses;
+  /// Write the structural model instead of the components: for each component with structure
+  /// inside (a wing's component segments with their spars and ribs), one connected shell of
+  /// its faces split where the structure meets them and the structure's faces, sharing their
+  /// edges (a FEM mesher meshes it conformally). `components` then names the hosts (or their
+  /// parents) whose structure to write.
+  bool structure = false;
   /// Leave out components that fail to build (ExportScene::leftOut says which and why)
   /// instead of failing the export.
   bool skipFailed = false;

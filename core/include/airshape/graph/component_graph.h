@@ -19,10 +19,13 @@ struct ComponentLocation {
   /// segments) or the model itself: a component that queries measure, but that `build` and
   /// `export` do not build on their own.
   bool part = false;
-  /// Lies inside its parent's solid, which it was cut from (control devices): built and
-  /// measured on its own, but exported only when named, and not part of the configuration's
-  /// box (its parent covers it).
+  /// Lies inside its parent's solid (control devices cut from it, structure within it):
+  /// built and measured on its own, but exported only when named, and not part of the
+  /// configuration's box (its parent covers it).
   bool insideParent = false;
+  /// Structure of its parent (spars, ribs, cells, frames, ...): surfaces that `export
+  /// --structure` joins with its parent's faces into one connected shell.
+  bool structure = false;
 };
 
 /// The node type of the model element itself (type `plane`), which has no shape.
@@ -41,6 +44,7 @@ struct Component {
   std::string typeName;       ///< ComponentLocation::typeName
   bool part = false;          ///< ComponentLocation::part
   bool insideParent = false;  ///< ComponentLocation::insideParent
+  bool structure = false;     ///< ComponentLocation::structure
   std::string parentUid;      ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)

@@ -1,0 +1,93 @@
+#include "structural_model.h"
+
+#include <map>
+
+#include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BRep_Builder.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+
+namespace airshape::exporting {
+
+namespace {
+
+/// The structure components by the component they lie in, in build order.
+std::map<std::string, std::vector<std::string>> structureByHost(const Configuration& configuration) {
+  std::map<std::string, std::vector<std::string>> byHost;
+  const graph::ComponentGraph& graph = configuration.components();
+  for (std::size_t index : graph.buildOrder()) {
+    const graph::Component& component = graph.components()[index];
+    if (component.structure && !component.parentUid.empty() &&
+        configuration.shapes().find(component.nodeType) != nullptr)
+      byHost[component.parentUid].push_back(component.uid);
+  }
+  return byHost;
+}
+
+/// Whether a host was asked for: by its uID or its parent's (a wing names its component
+/// segments), or every host when none is named.
+bool wanted(const Configuration& configuration, const std::string& host, const ExportOptions& options) {
+  if (options.components.empty()) return true;
+  const long index = configuration.components().find(host);
+  const std::string parent =
+      index < 0 ? std::string() : configuration.components().components()[static_cast<std::size_t>(index)].parentUid;
+  for (const std::string& uid : options.components)
+    if (uid == host || uid == parent) return true;
+  return false;
+}
+
+/// The host's faces and its structure's joined by one general fuse: every face split where
+/// another meets it, all sharing the edges they meet along, in one shell.
+NamedShape joined(const std::vector<const NamedShape*>& parts, const std::string& host) {
+  BRep_Builder builder;
+  TopTools_ListOfShape arguments;
+  for (const NamedShape* part : parts) {
+    TopoDS_Compound faces;  // faces only: a solid would be split into solids
+    builder.MakeCompound(faces);
+    for (TopExp_Explorer face(part->shape, TopAbs_FACE); face.More(); face.Next()) builder.Add(faces, face.Current());
+    arguments.Append(faces);
+  }
+  BRepAlgoAPI_BuilderAlgo fuse;
+  fuse.SetArguments(arguments);
+  fuse.SetRunParallel(true);
+  fuse.Build();
+  if (!fuse.IsDone() || fuse.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the structure of '" + host + "' cannot be joined with its faces");
+  NamedShape model = namedBooleanResult(fuse, parts);
+  TopoDS_Shell shell;
+  builder.MakeShell(shell);
+  for (TopExp_Explorer face(model.shape, TopAbs_FACE); face.More(); face.Next()) builder.Add(shell, face.Current());
+  model.shape = shell;
+  return model;
+}
+
+}  // namespace
+
+std::vector<SceneComponent> structuralModels(const Configuration& configuration, const ExportOptions& options,
+                                             std::vector<std::string>& leftOut) {
+  std::vector<SceneComponent> models;
+  for (const auto& [host, structure] : structureByHost(configuration)) {
+    if (!wanted(configuration, host, options)) continue;
+    std::vector<const NamedShape*> parts = {&configuration.shapes().namedShapeOf(configuration, host)};
+    for (const std::string& uid : structure) {
+      try {
+        parts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
+      } catch (const Error& error) {
+        leftOut.push_back(uid + ": " + error.message());
+      } catch (const Standard_Failure& failure) {
+        leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
+      }
+    }
+    if (parts.size() > 1) models.push_back({host + " structure", joined(parts, host)});
+  }
+  return models;
+}
+
+}  // namespace airshape::exporting

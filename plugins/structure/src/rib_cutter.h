@@ -1,0 +1,59 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Face.hxx>
+#include <gp_Pln.hxx>
+
+#include "airshape/schema/generated/cpacs_model.h"
+#include "polyline.h"
+#include "structure_frame.h"
+
+namespace airshape::structure {
+
+/// Whether a rib's start, end or reference is the wing's leading or trailing edge (not a spar).
+bool isWingEdge(const std::string& name);
+/// CPACS names compared as the reference library compares them: ignoring case.
+bool sameName(const std::string& a, const char* b);
+
+/// What rib definitions of one component segment share: their reference lines, their start
+/// and end points, and cutting a rib out of the component segment between its borders.
+class RibCutter {
+ public:
+  RibCutter(const Configuration& configuration, const StructureFrame& frame,
+            const schema::WingComponentSegmentStructureType& structure);
+
+  /// The leading edge, the trailing edge or a spar's midplane line (wing frame); an error
+  /// names `where` when the name is none of them.
+  Polyline lineNamed(const std::string& name, const std::string& where) const;
+
+  /// A rib's start or end point (wing frame) given by eta and xsi, on a line, or at a spar position.
+  gp_Pnt pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
+                 const schema::Child<schema::CurvePointType>& curve, const std::optional<std::string>& sparPosition,
+                 const std::string& where) const;
+
+  /// Where the plane (global frame) meets a spar's web: its points, global frame. Throws
+  /// Error naming `where` when it does not.
+  std::vector<gp_Pnt> sparSection(const std::string& spar, const gp_Pln& plane, const std::string& where) const;
+
+  /// The faces of the rib in the plane through `point` along `direction` (from its start to
+  /// its end) and `up` (all wing frame): the part inside the component segment's solid
+  /// between its start and end border (the wing's edges, or spar webs, carried along `up`).
+  std::vector<TopoDS_Face> cut(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,
+                               const std::string& ribStart, const std::string& ribEnd, const std::string& name,
+                               const std::string& where) const;
+
+  const StructureFrame& frame() const { return frame_; }
+
+ private:
+  std::vector<gp_Pnt> side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards, const gp_Vec& up,
+                           const gp_Pln& plane, const std::string& where) const;
+
+  const Configuration& configuration_;
+  const StructureFrame& frame_;
+  const schema::WingComponentSegmentStructureType& structure_;
+  double reach_;
+};
+
+}  // namespace airshape::structure
