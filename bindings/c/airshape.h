@@ -67,11 +67,26 @@ airshape_status airshape_cache_statistics(airshape_configuration* configuration,
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
                                 int mirror, int fused, double linear_deflection, double angular_deflection);
 
+/* Any component by uID (QUERY-components): its type name, the volume of its solids (0 for
+ * surfaces such as spars and ribs), the area of its faces, and the components inside it as a
+ * JSON list of {"uid", "type"}. */
+airshape_status airshape_component_type(airshape_configuration* configuration, const char* uid, char** type);
+airshape_status airshape_component_volume(airshape_configuration* configuration, const char* uid, double* volume);
+airshape_status airshape_component_surface_area(airshape_configuration* configuration, const char* uid, double* area);
+airshape_status airshape_component_children(airshape_configuration* configuration, const char* uid,
+                                            char** children_json);
+
 /* Exports with control devices deflected: deflect is "UID=P,UID=P,..." with P a number, min
  * or max, UID a device or "all" (docs/controlsurfaces.md); NULL or "" exports as above. */
 airshape_status airshape_export_deflected(airshape_configuration* configuration, const char* path,
                                           const char* components, const char* deflect, int mirror, int fused,
                                           double linear_deflection, double angular_deflection);
+
+/* Writes the structural model (docs/structure.md) of the component segments (or wings) named
+ * in components (comma-separated, NULL for all): skins split at spars and ribs, webs and ribs,
+ * one shell sharing edges. */
+airshape_status airshape_export_structure(airshape_configuration* configuration, const char* path,
+                                          const char* components);
 
 /* Control devices of a wing (1-based index, spoilers apart) and, by uID, their control
  * parameter range and rigid motion at p: matrix is [R | t] by rows (12 numbers), rotation the

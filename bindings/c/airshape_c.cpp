@@ -248,10 +248,52 @@ airshape_status airshape_export_deflected(airshape_configuration* configuration,
   });
 }
 
+airshape_status airshape_export_structure(airshape_configuration* configuration, const char* path,
+                                          const char* components) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(path, "path");
+    airshape::exporting::ExportOptions options;
+    if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
+    options.structure = true;
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    airshape::exporting::exportConfiguration(configuration->configuration, path, options);
+  });
+}
+
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
                                 int mirror, int fused, double linear_deflection, double angular_deflection) {
   return airshape_export_deflected(configuration, path, components, nullptr, mirror, fused, linear_deflection,
                                    angular_deflection);
+}
+
+airshape_status airshape_component_type(airshape_configuration* c, const char* uid, char** type) {
+  return guarded([&] {
+    require(uid, "uid");
+    require(type, "type");
+    *type = copied(run(c, "component_type", {{"uid", uid}}).get<std::string>());
+  });
+}
+airshape_status airshape_component_volume(airshape_configuration* c, const char* uid, double* volume) {
+  return guarded([&] {
+    require(uid, "uid");
+    require(volume, "volume");
+    *volume = run(c, "component_volume", {{"uid", uid}}).get<double>();
+  });
+}
+airshape_status airshape_component_surface_area(airshape_configuration* c, const char* uid, double* area) {
+  return guarded([&] {
+    require(uid, "uid");
+    require(area, "area");
+    *area = run(c, "component_surface_area", {{"uid", uid}}).get<double>();
+  });
+}
+airshape_status airshape_component_children(airshape_configuration* c, const char* uid, char** children) {
+  return guarded([&] {
+    require(uid, "uid");
+    require(children, "children");
+    *children = copied(run(c, "component_children", {{"uid", uid}}).dump());
+  });
 }
 
 airshape_status airshape_control_surface_count(airshape_configuration* c, int wing, int* result) {

@@ -92,9 +92,10 @@ py::dict cacheStatistics(PyConfiguration& self) {
 }
 
 void exportTo(PyConfiguration& self, const std::string& path, const std::vector<std::string>& components, bool mirror,
-              bool fused, double linearDeflection, double angularDeflection, const std::string& poses) {
+              bool fused, double linearDeflection, double angularDeflection, const std::string& poses, bool structure) {
   airshape::exporting::ExportOptions options;
   options.poses = airshape::exporting::parsePoses(poses);
+  options.structure = structure;
   options.components = components;
   options.mirror = mirror;
   options.fused = fused;
@@ -203,7 +204,7 @@ PYBIND11_MODULE(_airshape, m) {
           py::arg("path"), "Writes the document (edits included), safely.")
       .def("export", &exportTo, py::arg("path"), py::arg("components") = std::vector<std::string>(),
            py::arg("mirror") = false, py::arg("fused") = false, py::arg("linear_deflection") = 0.0,
-           py::arg("angular_deflection") = 0.0, py::arg("poses") = std::string(),
+           py::arg("angular_deflection") = 0.0, py::arg("poses") = std::string(), py::arg("structure") = false,
            "Writes STEP, IGES, BREP, STL, VTP, glTF/GLB or OBJ by extension; poses: UID=P,... devices deflected.")
       .def("cache_statistics", &cacheStatistics, "Objects built, reused and invalidated, and builds per key.");
 }

@@ -21,6 +21,7 @@ static int failures = 0;
 
 static const char* airliner;
 static const char* with_devices;
+static const char* with_structure;
 
 /* The number a generic query answers. */
 static double queried(airshape_configuration* c, const char* query) {
@@ -220,11 +221,37 @@ static void control_devices(const char* folder) {
   airshape_close(c);
 }
 
+/* Structure by uID: a spar web's type, volume (none: it is a surface) and area in closed form,
+ * the components inside a component segment, and the structural model written. */
+static void structure_components(const char* folder) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(with_structure, &c) == AIRSHAPE_OK);
+  char* text = NULL;
+  double volume = NAN, area = NAN;
+  CHECK(airshape_component_type(c, "Front", &text) == AIRSHAPE_OK && strcmp(text, "wing_spar") == 0);
+  airshape_free(text);
+  CHECK(airshape_component_volume(c, "Front", &volume) == AIRSHAPE_OK && volume == 0);
+  CHECK(airshape_component_surface_area(c, "Front", &area) == AIRSHAPE_OK && fabs(area - 0.48) < 1e-7);
+  CHECK(airshape_component_children(c, "RectCS", &text) == AIRSHAPE_OK);
+  CHECK(text != NULL && strstr(text, "\"Rear\"") != NULL && strstr(text, "\"wing_rib\"") != NULL);
+  airshape_free(text);
+  CHECK(airshape_component_type(c, "Nowhere", &text) == AIRSHAPE_INVALID_ARGUMENT);
+  char path[4096];
+  snprintf(path, sizeof path, "%s/c_api_wing_box.brep", folder);
+  remove(path);
+  CHECK(airshape_export_structure(c, path, "Rect") == AIRSHAPE_OK);
+  FILE* written = fopen(path, "r");
+  CHECK(written != NULL);
+  if (written) fclose(written);
+  airshape_close(c);
+}
+
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    fprintf(stderr, "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER WING_WITH_DEVICES.xml\n");
+  if (argc != 5) {
+    fprintf(stderr, "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER WING_WITH_DEVICES.xml WING_WITH_STRUCTURE.xml\n");
     return 2;
   }
+  with_structure = argv[4];
   airliner = argv[1];
   with_devices = argv[3];
   bad_input_gives_statuses();
@@ -232,6 +259,7 @@ int main(int argc, char** argv) {
   editing_and_exporting(argv[2]);
   handles_work_from_several_threads();
   control_devices(argv[2]);
+  structure_components(argv[2]);
   if (failures == 0) printf("c_api_test: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

@@ -203,3 +203,28 @@ def test_control_surfaces_of_a_wing(tmp_path):
     assert deflected.stat().st_size > 0
     with pytest.raises(airshape.ArgumentError, match="names no moving component"):
         config.export(str(tmp_path / "bad.brep"), deflect={"Rect": 1})
+
+
+WITH_STRUCTURE = os.path.join(SOURCE, "tests", "data", "wing-cst-structure.xml")
+
+
+def test_structure_of_a_component_segment(tmp_path):
+    config = airshape.Configuration.open(WITH_STRUCTURE)
+    segment, = config.wings["Rect"].component_segments
+    assert segment.uid == "RectCS" and segment.type == "wing_component_segment"
+    assert [spar.uid for spar in segment.spars] == ["Front", "Rear"]
+    assert [ribs.uid for ribs in segment.ribs] == ["Ribs"] and [c.uid for c in segment.cells] == ["UpperCell"]
+    front = segment.spars[0]
+    # A plane web at ξ 0.2 over the 5 m span, 0.6·ξ(1−ξ) high.
+    assert front.type == "wing_spar" and front.volume == 0
+    assert front.surface_area == pytest.approx(5 * 0.6 * 0.2 * 0.8, rel=1e-7)
+    assert front.bounding_box["min"][0] == pytest.approx(1.4, abs=1e-6)
+    assert config.component("Ribs").type == "wing_rib"
+    web = tmp_path / "front.brep"
+    front.export(str(web))
+    assert web.stat().st_size > 0
+    with pytest.raises(airshape.ArgumentError, match="no component with uID 'Nowhere'"):
+        config.component("Nowhere")
+    model = tmp_path / "wing_box.brep"
+    config.export(str(model), structure=True)
+    assert model.stat().st_size > web.stat().st_size

@@ -21,7 +21,7 @@ from . import _airshape
 from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetError, PluginError,
                      WriteError)
 
-__all__ = ["Configuration", "Wing", "Fuselage", "ControlSurface", "Node", "NodeList", "Error", "FileError", "ModelError",
+__all__ = ["Configuration", "Wing", "Fuselage", "ControlSurface", "Component", "ComponentSegment", "Node", "NodeList", "Error", "FileError", "ModelError",
            "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError"]
 
 Number = Union[int, float]
@@ -242,6 +242,13 @@ class Wing(_Component):
         return self._op("mac")
 
     @property
+    def component_segments(self) -> List[ComponentSegment]:
+        """Its component segments, with their spars, ribs and cells."""
+        return [ComponentSegment(self._config, child["uid"])
+                for child in self._config.query("component_children", uid=self.uid)
+                if child["type"] == "wing_component_segment"]
+
+    @property
     def control_surfaces(self) -> "_Devices":
         """Its trailing- and leading-edge devices (no spoilers), by index or uID."""
         return _Devices(self, "control_surface")
@@ -250,6 +257,70 @@ class Wing(_Component):
     def spoilers(self) -> "_Devices":
         """Its spoilers, by index or uID."""
         return _Devices(self, "spoiler")
+
+
+class Component:
+    """Any component by uID (QUERY-components §1): a spar, a rib set, a cell, a component
+    segment, a device, ...: its type, its measures, the components inside it, its shape."""
+
+    def __init__(self, config: "Configuration", uid: str) -> None:
+        self._config = config
+        self.uid = uid
+
+    @property
+    def type(self) -> str:
+        return self._config.query("component_type", uid=self.uid)
+
+    @property
+    def volume(self) -> float:
+        """The volume of its solids (0 for surfaces such as spars, ribs and cells)."""
+        return self._config.query("component_volume", uid=self.uid)
+
+    @property
+    def surface_area(self) -> float:
+        return self._config.query("component_surface_area", uid=self.uid)
+
+    @property
+    def bounding_box(self) -> dict:
+        """{"min": [x, y, z], "max": [x, y, z]}"""
+        return self._config.query("bounding_box", uid=self.uid)
+
+    @property
+    def children(self) -> List["Component"]:
+        """The components directly inside it."""
+        return [_component(self._config, child["uid"], child["type"])
+                for child in self._config.query("component_children", uid=self.uid)]
+
+    def _children_of_type(self, kind: str) -> List["Component"]:
+        return [child for child in self.children if child.type == kind]
+
+    def export(self, path: str) -> None:
+        """Writes its shape in the format the extension names (docs/export.md)."""
+        self._config.export(path, components=[self.uid])
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.uid!r})"
+
+
+class ComponentSegment(Component):
+    """A wing's component segment with its structure (docs/structure.md)."""
+
+    @property
+    def spars(self) -> List[Component]:
+        return self._children_of_type("wing_spar")
+
+    @property
+    def ribs(self) -> List[Component]:
+        """Its ribs definitions (each one component with all its ribs)."""
+        return self._children_of_type("wing_rib")
+
+    @property
+    def cells(self) -> List[Component]:
+        return self._children_of_type("wing_cell")
+
+
+def _component(config: "Configuration", uid: str, kind: str) -> Component:
+    return ComponentSegment(config, uid) if kind == "wing_component_segment" else Component(config, uid)
 
 
 class ControlSurface:
@@ -400,6 +471,10 @@ class Configuration:
     def fuselages(self) -> _Components:
         return _Components(self, "fuselage", Fuselage)
 
+    def component(self, uid: str) -> Component:
+        """Any component by uID (spars, ribs, cells, devices, segments, ...)."""
+        return _component(self, uid, self.query("component_type", uid=uid))
+
     def query(self, op: str, **arguments: Any) -> Any:
         """Runs any op of the query protocol (docs/query.md): query("wing_span", wing=1)."""
         return self._core.query(op, arguments)
@@ -433,12 +508,14 @@ class Configuration:
 
     def export(self, path: str, components: Optional[List[str]] = None, mirror: bool = False, fused: bool = False,
                linear_deflection: float = 0.0, angular_deflection: float = 0.0,
-               deflect: Optional[Dict[str, Union[float, str]]] = None) -> None:
+               deflect: Optional[Dict[str, Union[float, str]]] = None, structure: bool = False) -> None:
         """Writes the geometry in the format the extension names (docs/export.md). `deflect`
         maps device uIDs (or "all") to control parameters (a number, "min" or "max"): those
-        devices are written deflected, their wings with the cut-outs (docs/controlsurfaces.md)."""
+        devices are written deflected, their wings with the cut-outs (docs/controlsurfaces.md).
+        `structure` writes the structural model instead (docs/structure.md)."""
         poses = ",".join(f"{uid}={_text(p)}" for uid, p in (deflect or {}).items())
-        self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection, poses)
+        self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection, poses,
+                          structure)
 
     def cache_statistics(self) -> dict:
         """{"built", "reused", "invalidated", "builds_by_key"}: what the geometry cache did."""

@@ -1,5 +1,7 @@
 #include "component_queries.h"
 
+#include <algorithm>
+
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -33,6 +35,30 @@ const TopoDS_Shape& measuredShape(const Configuration& configuration, const grap
   if (!shape.IsNull()) BRepBndLib::Add(shape, box);
   if (box.IsVoid()) throw Error(ErrorCode::InvalidModel, "component '" + component.uid + "' has no geometry");
   return shape;
+}
+
+Json componentEntry(const graph::Component& component) {
+  return {{"uid", component.uid}, {"type", component.typeName}};
+}
+
+/// Every component of the model queries address (the first model), sorted by uID.
+Json componentList(Configuration& configuration, const Json&) {
+  std::vector<const graph::Component*> listed;
+  for (const graph::Component& component : configuration.components().components())
+    if (component.model == 0 && !component.uid.empty()) listed.push_back(&component);
+  std::sort(listed.begin(), listed.end(), [](const auto* a, const auto* b) { return a->uid < b->uid; });
+  Json list = Json::array();
+  for (const graph::Component* component : listed) list.push_back(componentEntry(*component));
+  return list;
+}
+
+/// The components directly inside one (its segments, component segments, devices, spars, ...).
+Json componentChildren(Configuration& configuration, const Json& query) {
+  const std::string& parent = componentArgument(configuration, query, "uid").uid;
+  Json children = Json::array();
+  for (const graph::Component& component : configuration.components().components())
+    if (component.parentUid == parent && !component.uid.empty()) children.push_back(componentEntry(component));
+  return children;
 }
 
 Json componentType(Configuration& configuration, const Json& query) {
@@ -83,6 +109,11 @@ Json intersectionLength(Configuration& configuration, const Json& query) {
 }  // namespace
 
 void registerComponentQueries(QueryRegistry& registry) {
+  registry.add({"component_list", "core", "-> [{uid, type}] of every component of the first model, sorted by uID",
+                componentList});
+  registry.add({"component_children", "core",
+                "uid -> [{uid, type}] of the components directly inside it (segments, devices, spars, ...)",
+                componentChildren});
   registry.add(
       {"component_type", "core", "uid -> the component's type (wing, wing_segment, plane, ...)", componentType});
   registry.add(
