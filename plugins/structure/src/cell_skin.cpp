@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRep_Builder.hxx>
@@ -12,6 +11,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "faces_inside.h"
 #include "spar_list.h"
 #include "structure_frame.h"
 
@@ -106,16 +106,19 @@ NamedShape cellSkin(const Configuration& configuration, const wing::WingServices
 
   const TopoDS_Shape skin =
       wing.componentSegmentSkin(configuration, cell.componentSegmentUid, cell.upper ? Surface::Upper : Surface::Lower);
-  BRepAlgoAPI_Common common(skin, prism.Shape());
-  if (!common.IsDone() || common.HasErrors())
+  std::vector<TopoDS_Face> inside;
+  try {
+    inside = facesInside(skin, prism.Shape());
+  } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, cell.xpath);
+  }
   NamedShape patch;
   BRep_Builder builder;
   TopoDS_Compound faces;
   builder.MakeCompound(faces);
-  for (TopExp_Explorer face(common.Shape(), TopAbs_FACE); face.More(); face.Next()) {
-    builder.Add(faces, face.Current());
-    patch.faces.emplace_back(cell.uid + "/skin", TopoDS::Face(face.Current()));
+  for (const TopoDS_Face& face : inside) {
+    builder.Add(faces, face);
+    patch.faces.emplace_back(cell.uid + "/skin", face);
   }
   if (patch.faces.empty()) throw Error(ErrorCode::InvalidModel, "the cell covers no skin", {}, cell.xpath);
   patch.shape = faces;

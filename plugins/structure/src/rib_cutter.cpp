@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 
-#include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -14,6 +13,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "faces_inside.h"
 #include "spar_list.h"
 
 namespace airshape::structure {
@@ -108,12 +108,12 @@ std::vector<TopoDS_Face> RibCutter::cut(const gp_Pnt& point, const gp_Vec& direc
   outline.Close();
   BRepBuilderAPI_MakeFace cutFace(plane, outline.Wire(), true);
   if (!cutFace.IsDone()) throw Error(ErrorCode::InvalidModel, "the outline of " + name + " is not plane", {}, where);
-  BRepAlgoAPI_Common common(cutFace.Face(), frame_.solid());
-  if (!common.IsDone() || common.HasErrors())
-    throw Error(ErrorCode::InvalidModel, name + " cannot be cut out of its component segment", {}, where);
   std::vector<TopoDS_Face> faces;
-  for (TopExp_Explorer face(common.Shape(), TopAbs_FACE); face.More(); face.Next())
-    faces.push_back(TopoDS::Face(face.Current()));
+  try {
+    faces = facesInside(cutFace.Face(), frame_.solid());
+  } catch (const Error&) {
+    throw Error(ErrorCode::InvalidModel, name + " cannot be cut out of its component segment", {}, where);
+  }
   if (faces.empty()) throw Error(ErrorCode::InvalidModel, name + " does not cross its component segment", {}, where);
   return faces;
 }

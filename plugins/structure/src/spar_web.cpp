@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepFill.hxx>
@@ -17,6 +16,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/placement.h"
+#include "faces_inside.h"
 
 namespace airshape::structure {
 
@@ -87,12 +87,15 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
       throw Error(ErrorCode::InvalidModel,
                   "spar positions '" + spar.positions[i - 1].uid + "' and '" + spar.positions[i].uid + "' coincide", {},
                   spar.xpath);
-    BRepAlgoAPI_Common common(cutFace(inner, outer, up, reach), solid);
-    if (!common.IsDone() || common.HasErrors())
-      throw Error(ErrorCode::InvalidModel, "the spar cannot be cut out of its component segment", {}, spar.xpath);
-    for (TopExp_Explorer face(common.Shape(), TopAbs_FACE); face.More(); face.Next()) {
-      builder.Add(faces, face.Current());
-      web.faces.emplace_back(spar.uid + "/web", TopoDS::Face(face.Current()));
+    std::vector<TopoDS_Face> inside;
+    try {
+      inside = facesInside(cutFace(inner, outer, up, reach), solid);
+    } catch (const Error& error) {
+      throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
+    }
+    for (const TopoDS_Face& face : inside) {
+      builder.Add(faces, face);
+      web.faces.emplace_back(spar.uid + "/web", face);
     }
     inner = outer;
   }
