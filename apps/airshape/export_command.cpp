@@ -123,9 +123,14 @@ std::size_t withoutBuilder(const Configuration& configuration) {
   return count;
 }
 
-/// Why nothing is written, if nothing is: no plugin builds any component, every component
-/// failed, or a component named with --components failed (an export of what was asked for).
+/// Why nothing is written, if nothing is: no plugin builds any component (or, for the
+/// structural model, no component holds structure), every component failed, or a component
+/// named with --components failed (an export of what was asked for).
 std::optional<std::string> nothingToWrite(const exporting::ExportScene& scene, const ExportCommandOptions& options) {
+  if (scene.components.empty() && options.exportOptions.structure)
+    return "no component of " + options.input +
+           (options.exportOptions.components.empty() ? "" : " named with --components") +
+           " holds spars or ribs that could be built";
   if (scene.components.empty() && scene.leftOut.empty())
     return "nothing to build: no loaded plugin builds any component of " + options.input +
            (options.exportOptions.components.empty() ? "" : " named with --components");

@@ -150,6 +150,10 @@ def test_the_structural_model_meshes_conformally(tmp_path):
     assert result.returncode == 0, result.stderr
     separate = gmsh_mesh_conformity(loose, 0.1)
     assert separate["junctions"] == 0, separate
+    # A file without structure has no structural model: said, nothing written.
+    nothing = tmp_path / "nothing.step"
+    result = airshape("export", WITH_DEVICES, "--structure", "-o", str(nothing))
+    assert result.returncode == 0 and "holds spars or ribs" in result.stderr and not nothing.exists()
 
 
 def test_rib_errors_name_the_cpacs_path(tmp_path):
