@@ -109,6 +109,11 @@ def test_ribs_between_two_spars_in_closed_form(tmp_path):
     assert area == pytest.approx(3 * one, rel=1e-7) and kind == "wing_rib"
     assert box["min"][:2] == pytest.approx([1.4, 0.5], abs=1e-6) and box["max"][:2] == pytest.approx([2.2, 4.5], abs=1e-6)
     assert box["max"][2] == pytest.approx(height(0.5) / 2, abs=1e-6), "the wing's thickest point lies between"
+    # Without a rotation reference the ribs turn from the direction in which eta grows (here y).
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Ribs", 0.1, 0.9, 3, rotation="<z>90</z>"))
+    midplane, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"}))
+    assert midplane == pytest.approx(area, rel=1e-9)
 
 
 def test_an_explicitly_positioned_rib_between_two_spars(tmp_path):
@@ -209,4 +214,4 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs and cells are built; fuselage structure waits for its builders
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 350, output[-3000:]
+    assert passed >= 353, output[-3000:]

@@ -82,21 +82,29 @@ class RibSet {
 
   /// The rib's direction from its start to its end: the wing's y (or x) axis turned by
   /// `ribRotation/z` about the wing's z axis.
-  gp_Vec ribDirection() const {
+  /// Without a rotation reference the rib turns about `up` from the direction in which eta
+  /// grows at its point.
+  gp_Vec ribDirection(const gp_Pnt& point, const gp_Vec& up) const {
     const double z = (positioning_.ribRotation ? positioning_.ribRotation->z : 90.0) * kDegrees;
     const std::string reference =
         positioning_.ribRotation ? positioning_.ribRotation->ribRotationReference.value_or("") : "";
     gp_Vec direction;
-    if (sameName(reference, "globalY"))
+    gp_Dir axis(0, 0, 1);
+    if (sameName(reference, "globalY")) {
       direction = gp_Vec(0, 1, 0);
-    else if (sameName(reference, "globalX"))
+    } else if (sameName(reference, "globalX")) {
       direction = gp_Vec(-1, 0, 0);
-    else
+    } else if (reference.empty()) {
+      direction = frame_.etaDirection(frame_.etaOf(point));
+      axis = gp_Dir(up);
+    } else {
       throw Error(ErrorCode::NotImplemented,
-                  "ribs turned relative to '" + (reference.empty() ? std::string("the midplane") : reference) +
-                      "' are not built yet (globalY and globalX are)",
+                  "ribs turned relative to '" + reference +
+                      "' are not built yet (globalY, globalX and the "
+                      "mid-plane are)",
                   {}, xpath() + "/ribRotation");
-    direction.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), z);
+    }
+    direction.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), axis), z);
     return -direction.Normalized();
   }
 
@@ -106,7 +114,7 @@ class RibSet {
   std::pair<gp_Vec, gp_Vec> ribAxes(const gp_Pnt& point, double eta, bool onSpar) const {
     const bool sparEnd = !isWingEdge(positioning_.ribReference) && (eta < 1e-7 || eta > 1.0 - 1e-7);
     gp_Vec up = onSpar || sparEnd ? gp_Vec(0, 0, 1) : frame_.midplaneNormal(frame_.etaOf(point));
-    const gp_Vec direction = ribDirection();
+    const gp_Vec direction = ribDirection(point, up);
     up.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(direction)), (xRotationOf(ribs_) - 90.0) * kDegrees);
     return {direction, up};
   }

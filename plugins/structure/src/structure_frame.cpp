@@ -64,6 +64,13 @@ gp_Vec StructureFrame::midplaneNormal(double eta) const {
   return toWing(wing_.midplaneNormal(configuration_, componentSegmentUid_, std::clamp(eta, 0.0, 1.0))).Normalized();
 }
 
+gp_Vec StructureFrame::etaDirection(double eta) const {
+  const Polyline edge = leadingEdge();
+  std::vector<gp_Pnt> seenFromFront;
+  for (const gp_Pnt& p : edge.points()) seenFromFront.emplace_back(0.0, p.Y(), p.Z());
+  return Polyline(seenFromFront).directionAt(std::clamp(eta, 0.0, 1.0));
+}
+
 Polyline StructureFrame::edgeLine(double xsi) const {
   const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
   std::vector<gp_Pnt> points = {chordPoint(segments.front(), 0.0, xsi)};

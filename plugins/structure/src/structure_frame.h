@@ -33,6 +33,9 @@ class StructureFrame {
   double etaOf(const gp_Pnt& point) const;
   /// The unit normal of the chord surface at eta (towards the upper skin), in the wing frame.
   gp_Vec midplaneNormal(double eta) const;
+  /// The direction in which eta grows at eta (wing frame, unit): the leading edge seen from
+  /// the front (x dropped), along which the component segment's eta is measured.
+  gp_Vec etaDirection(double eta) const;
   /// The leading or trailing edge: straight from section to section, in the wing frame.
   Polyline leadingEdge() const { return edgeLine(0.0); }
   Polyline trailingEdge() const { return edgeLine(1.0); }
