@@ -114,6 +114,11 @@ def test_ribs_between_two_spars_in_closed_form(tmp_path):
                       ribs("Ribs", 0.1, 0.9, 3, rotation="<z>90</z>"))
     midplane, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"}))
     assert midplane == pytest.approx(area, rel=1e-9)
+    # Turned 90° from the rear spar where the rib meets it: chordwise too.
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Ribs", 0.1, 0.9, 3, rotation="<ribRotationReference>Rear</ribRotationReference><z>90</z>"))
+    by_spar, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"}))
+    assert by_spar == pytest.approx(area, rel=1e-9)
 
 
 def test_an_explicitly_positioned_rib_between_two_spars(tmp_path):
@@ -214,4 +219,4 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs and cells are built; fuselage structure waits for its builders
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 353, output[-3000:]
+    assert passed >= 355, output[-3000:]

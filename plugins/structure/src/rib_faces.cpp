@@ -23,6 +23,32 @@ double xRotationOf(const RibsDefinition& ribs) {
   return section && section->ribRotation ? section->ribRotation->x : 90.0;
 }
 
+/// The direction of `line` where a rib through `point`, turned by `angle` about `up` from the
+/// line's direction there, meets it: the share of the line where the rib's line through
+/// `point` passes through the line's point is found by bisection of the side it passes on.
+gp_Vec directionOfLineAtAngle(const Polyline& line, const gp_Pnt& point, const gp_Vec& up, double angle) {
+  auto side = [&](double share) {
+    gp_Vec rib = line.directionAt(share);
+    rib.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(up)), angle);
+    return gp_Vec(point, line.at(share)).Dot(up.Crossed(rib));
+  };
+  constexpr int kSamples = 400;
+  double low = 0.0, sideLow = side(0.0);
+  for (int i = 1; i <= kSamples; ++i) {
+    const double high = static_cast<double>(i) / kSamples, sideHigh = side(high);
+    if ((sideLow <= 0.0) != (sideHigh <= 0.0)) {
+      double a = low, b = high;
+      for (int step = 0; step < 60; ++step) {
+        const double middle = 0.5 * (a + b);
+        ((side(a) <= 0.0) != (side(middle) <= 0.0) ? b : a) = middle;
+      }
+      return line.directionAt(0.5 * (a + b));
+    }
+    low = high, sideLow = sideHigh;
+  }
+  throw Error(ErrorCode::InvalidModel, "no rib at that angle to its rotation reference passes through its point");
+}
+
 /// Collects named rib faces into one shape.
 class RibCollection {
  public:
@@ -83,7 +109,8 @@ class RibSet {
   /// The rib's direction from its start to its end: the wing's y (or x) axis turned by
   /// `ribRotation/z` about the wing's z axis.
   /// Without a rotation reference the rib turns about `up` from the direction in which eta
-  /// grows at its point.
+  /// grows at its point; relative to a line (an edge or a spar), from that line's direction
+  /// where the rib meets it.
   gp_Vec ribDirection(const gp_Pnt& point, const gp_Vec& up) const {
     const double z = (positioning_.ribRotation ? positioning_.ribRotation->z : 90.0) * kDegrees;
     const std::string reference =
@@ -98,11 +125,13 @@ class RibSet {
       direction = frame_.etaDirection(frame_.etaOf(point));
       axis = gp_Dir(up);
     } else {
-      throw Error(ErrorCode::NotImplemented,
-                  "ribs turned relative to '" + reference +
-                      "' are not built yet (globalY, globalX and the "
-                      "mid-plane are)",
-                  {}, xpath() + "/ribRotation");
+      try {
+        direction = directionOfLineAtAngle(cutter_.lineNamed(reference, xpath() + "/ribRotation"), point, up, z);
+      } catch (const Error& error) {
+        if (!error.cpacsPath().empty()) throw;
+        throw Error(error.code(), error.message(), {}, xpath() + "/ribRotation");
+      }
+      axis = gp_Dir(up);
     }
     direction.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), axis), z);
     return -direction.Normalized();
