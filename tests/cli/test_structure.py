@@ -213,6 +213,13 @@ def test_cells_are_skin_patches_in_closed_form(tmp_path):
     assert box["max"][2] == pytest.approx(height(0.5) / 2, abs=1e-6) and box["min"][2] == pytest.approx(height(0.2) / 2, abs=1e-6)
     assert spar_area == pytest.approx(area, rel=1e-6), "a spar at ξ 0.2 bounds the cell where xsi 0.2 does"
     assert volume == 0 and kind == "wing_cell"
+    # Older files write eta1 and eta2 as bare numbers: read as component segment etas, said.
+    bare = (by_xsi.replace('uID="ByXsi"', 'uID="Bare"').replace("<eta>0.2</eta><referenceUID>RectCS</referenceUID>", "0.2")
+            .replace("<eta>0.8</eta><referenceUID>RectCS</referenceUID>", "0.8"))
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"), cells(bare))
+    result = airshape("query", str(path), stdin=json.dumps({"op": "component_surface_area", "uid": "Bare"}) + "\n")
+    assert json.loads(result.stdout)["ok"] == pytest.approx(area, rel=1e-9)
+    assert "eta given as a bare number" in result.stderr
 
 
 def test_structure_conformance_does_not_regress():

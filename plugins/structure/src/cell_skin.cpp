@@ -1,6 +1,8 @@
 #include "cell_skin.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
@@ -52,10 +54,33 @@ class CellCorners {
     if (!eta)
       throw Error(ErrorCode::NotImplemented, "cells bounded by ribs or contour coordinates are not built yet", {},
                   where);
+    const std::string element = where + (leadingEdge ? "/eta1" : "/eta2");
+    if (const auto bare = bareNumber(element)) return *bare;
     try {
       return wing_.componentSegmentEta(configuration_, cell_.componentSegmentUid, eta->referenceUID, eta->eta);
     } catch (const Error& error) {
       throw Error(error.code(), error.message(), {}, where);
+    }
+  }
+
+  /// An eta written as a bare number (`<eta1>0.5</eta1>`, as older files do) instead of an
+  /// `eta` with its `referenceUID`: read as a component segment eta, with a warning.
+  std::optional<double> bareNumber(const std::string& element) const {
+    try {
+      configuration_.value(element + "/eta");
+      return std::nullopt;  // the schema's form
+    } catch (const Error&) {
+    }
+    try {
+      const std::string text = configuration_.value(element);
+      std::size_t used = 0;
+      const double value = std::stod(text, &used);
+      if (text.find_first_not_of(" \t\r\n", used) != std::string::npos) return std::nullopt;
+      configuration_.warnAboutGeometry(
+          {Problem::Severity::Warning, element, "eta given as a bare number; read as a component segment eta"});
+      return value;
+    } catch (const std::exception&) {
+      return std::nullopt;
     }
   }
 
