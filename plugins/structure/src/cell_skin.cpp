@@ -6,14 +6,12 @@
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
-#include <BRep_Builder.hxx>
-#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "faces_inside.h"
+#include "named_faces.h"
 #include "spar_list.h"
 #include "structure_frame.h"
 
@@ -137,17 +135,10 @@ NamedShape cellSkin(const Configuration& configuration, const wing::WingServices
   } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, cell.xpath);
   }
-  NamedShape patch;
-  BRep_Builder builder;
-  TopoDS_Compound faces;
-  builder.MakeCompound(faces);
-  for (const TopoDS_Face& face : inside) {
-    builder.Add(faces, face);
-    patch.faces.emplace_back(cell.uid + "/skin", face);
-  }
-  if (patch.faces.empty()) throw Error(ErrorCode::InvalidModel, "the cell covers no skin", {}, cell.xpath);
-  patch.shape = faces;
-  return patch;
+  NamedFaces patch;
+  patch.add(cell.uid + "/skin", inside);
+  if (patch.empty()) throw Error(ErrorCode::InvalidModel, "the cell covers no skin", {}, cell.xpath);
+  return patch.shape();
 }
 
 }  // namespace airshape::structure

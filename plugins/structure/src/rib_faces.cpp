@@ -2,12 +2,11 @@
 
 #include <cmath>
 
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "named_faces.h"
 #include "rib_cutter.h"
 #include "structure_frame.h"
 
@@ -49,27 +48,6 @@ gp_Vec directionOfLineAtAngle(const Polyline& line, const gp_Pnt& point, const g
   throw Error(ErrorCode::InvalidModel, "no rib at that angle to its rotation reference passes through its point");
 }
 
-/// Collects named rib faces into one shape.
-class RibCollection {
- public:
-  RibCollection() { builder_.MakeCompound(faces_); }
-  void add(const std::string& name, const std::vector<TopoDS_Face>& faces) {
-    for (const TopoDS_Face& face : faces) {
-      builder_.Add(faces_, face);
-      shape_.faces.emplace_back(name, face);
-    }
-  }
-  NamedShape shape() {
-    shape_.shape = faces_;
-    return shape_;
-  }
-
- private:
-  BRep_Builder builder_;
-  TopoDS_Compound faces_;
-  NamedShape shape_;
-};
-
 /// The ribs of one `ribsPositioning`: set along a reference line, worked out in the wing frame.
 class RibSet {
  public:
@@ -91,7 +69,7 @@ class RibSet {
                                       endsOnSpar);
     const int count = numberOfRibs(start, end);
     const double offset = etaOffset(start, end, count);
-    RibCollection ribs;
+    NamedFaces ribs;
     for (int i = 0; i < count; ++i) {
       const double eta = start + offset * i;
       const bool onSpar = (i == 0 && startsOnSpar) || (std::abs(end - eta) <= 1e-7 && endsOnSpar);
@@ -210,7 +188,7 @@ class ExplicitRib {
     // The tilt turns about the wing's x axis, so that neighbouring ribs stay connected.
     upStart.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), -(xRotationOf(ribs_) - 90.0) * kDegrees);
     const std::string name = ribs_.uid + "/rib 1";
-    RibCollection ribs;
+    NamedFaces ribs;
     ribs.add(name, cutter_.cut(start, gp_Vec(start, end).Normalized(), upStart, positioning_.ribStart,
                                positioning_.ribEnd, name, xpath()));
     return ribs.shape();

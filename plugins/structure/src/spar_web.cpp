@@ -1,35 +1,21 @@
 #include "spar_web.h"
 
-#include <cmath>
-
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepFill.hxx>
-#include <BRep_Builder.hxx>
-#include <Bnd_Box.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/model/placement.h"
 #include "faces_inside.h"
+#include "named_faces.h"
+#include "structure_frame.h"
 
 namespace airshape::structure {
 
 namespace {
 
 using Surface = wing::WingServices::Surface;
-
-/// The wing's up direction in the global frame: the z axis of its own frame.
-gp_Vec upDirectionOf(const Configuration& configuration, const std::string& wingUid) {
-  const model::Transform toGlobal = model::componentTransform(configuration, wingUid);
-  const gp_Vec up(model::apply(toGlobal, gp_Pnt(0, 0, 0)), model::apply(toGlobal, gp_Pnt(0, 0, 1)));
-  return up.Normalized();
-}
 
 /// A spar position's point on the chord surface and its component segment eta.
 struct PlacedPosition {
@@ -70,16 +56,10 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
   if (spar.positions.size() < 2)
     throw Error(ErrorCode::InvalidModel, "a spar segment needs at least two spar positions", {},
                 spar.xpath + "/sparPositionUIDs");
-  const TopoDS_Shape& solid = configuration.shapes().shapeOf(configuration, spar.componentSegmentUid);
-  Bnd_Box box;
-  BRepBndLib::Add(solid, box);
-  const double reach = std::sqrt(box.SquareExtent());
-  const gp_Vec up = upDirectionOf(configuration, spar.wingUid);
-
-  NamedShape web;
-  BRep_Builder builder;
-  TopoDS_Compound faces;
-  builder.MakeCompound(faces);
+  const StructureFrame frame(configuration, wing, spar.componentSegmentUid, spar.wingUid);
+  const double reach = frame.reach();
+  const gp_Vec up = frame.toGlobal(gp_Vec(0, 0, 1)).Normalized();  // the wing's own z axis
+  NamedFaces web;
   PlacedPosition inner = placed(configuration, wing, spar, spar.positions.front());
   for (std::size_t i = 1; i < spar.positions.size(); ++i) {
     const PlacedPosition outer = placed(configuration, wing, spar, spar.positions[i]);
@@ -89,20 +69,16 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
                   spar.xpath);
     std::vector<TopoDS_Face> inside;
     try {
-      inside = facesInside(cutFace(inner, outer, up, reach), solid);
+      inside = facesInside(cutFace(inner, outer, up, reach), frame.solid());
     } catch (const Error& error) {
       throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
     }
-    for (const TopoDS_Face& face : inside) {
-      builder.Add(faces, face);
-      web.faces.emplace_back(spar.uid + "/web", face);
-    }
+    web.add(spar.uid + "/web", inside);
     inner = outer;
   }
-  if (web.faces.empty())
+  if (web.empty())
     throw Error(ErrorCode::InvalidModel, "the spar does not cross its component segment", {}, spar.xpath);
-  web.shape = faces;
-  return web;
+  return web.shape();
 }
 
 }  // namespace airshape::structure
