@@ -226,4 +226,71 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs and cells are built; fuselage structure waits for its builders
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 355, output[-3000:]
+    assert passed >= 434, output[-3000:]
+
+
+def two_segment_wing(tmp_path, shells):
+    """The rectangular wing with a third section at y = 1, so that its segments are 1 m and 4 m
+    long, and the given shells (upper and lower, with cells) in its component segment."""
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    middle = ('<section uID="RM"><name>middle</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
+              '</transformation><elements><element uID="RME"><name>e</name><airfoilUID>Parabolic</airfoilUID>'
+              "<transformation/></element></elements></section>")
+    text = text.replace('<section uID="R2">', middle + '<section uID="R2">', 1)
+    text = text.replace('<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>0</dihedralAngle>'
+                        "<fromSectionUID>R1</fromSectionUID><toSectionUID>R2</toSectionUID>",
+                        "<length>1</length><sweepAngle>0</sweepAngle><dihedralAngle>0</dihedralAngle>"
+                        "<fromSectionUID>R1</fromSectionUID><toSectionUID>RM</toSectionUID></positioning>"
+                        '<positioning uID="RP3"><name>p</name><length>4</length><sweepAngle>0</sweepAngle>'
+                        "<dihedralAngle>0</dihedralAngle><fromSectionUID>RM</fromSectionUID>"
+                        "<toSectionUID>R2</toSectionUID>", 1)
+    text = text.replace('<segment uID="RS"><name>s</name><fromElementUID>R1E</fromElementUID>'
+                        "<toElementUID>R2E</toElementUID></segment>",
+                        '<segment uID="RS"><name>s</name><fromElementUID>R1E</fromElementUID>'
+                        '<toElementUID>RME</toElementUID></segment><segment uID="RS2"><name>s</name>'
+                        "<fromElementUID>RME</fromElementUID><toElementUID>R2E</toElementUID></segment>", 1)
+    path = tmp_path / "two-segments.xml"
+    path.write_text(text.replace("<controlSurfaces>", f"<structure>{shells}</structure><controlSurfaces>", 1))
+    return path
+
+
+def contour_cell(uid, inner, outer, leading_edge, trailing_edge):
+    def border(name, value):
+        return f"<{name}><contourCoordinate>{value}</contourCoordinate></{name}>"
+
+    return (f'<cell uID="{uid}">{border("positioningInnerBorder", inner)}'
+            f'{border("positioningLeadingEdge", leading_edge)}{border("positioningOuterBorder", outer)}'
+            f'{border("positioningTrailingEdge", trailing_edge)}</cell>')
+
+
+def test_cells_bounded_by_contour_coordinates(tmp_path):
+    # Both segments carry the same airfoil, so every pole moves straight along y: the skin's
+    # centripetal parameters at the sections are √1 : √4, i.e. 0, 1/3 and 1 (docs/structure.md).
+    # Spanwise 0.5 therefore lies a quarter into the 4 m segment, at y = 2; chordwise is ξ.
+    upper = contour_cell("Aft", 0.5, 1.0, 0.2, 0.6) + contour_cell("Across", 1 / 6, 0.5, 0.2, 0.6)
+    upper += contour_cell("Sliver", 1 / 3 + 0.0025 * 2 / 3, 1.0, 0.2, 0.6)
+    mixed = contour_cell("Mixed", 0.2, 0.8, 0.2, 0.6).replace(
+        "<positioningLeadingEdge><contourCoordinate>0.2</contourCoordinate>",
+        "<positioningLeadingEdge><xsi1>0.2</xsi1><xsi2>0.2</xsi2>")
+    lower = contour_cell("Below", 0.5, 1.0, 0.2, 0.6)
+    shells = (f"<upperShell><skin/><cells>{upper}{mixed}</cells></upperShell>"
+              f"<lowerShell><skin/><cells>{lower}</cells></lowerShell>")
+    path = two_segment_wing(tmp_path, shells)
+    answers = ask(path, {"op": "component_surface_area", "uid": "Aft"}, {"op": "bounding_box", "uid": "Aft"},
+                  {"op": "component_surface_area", "uid": "Across"}, {"op": "bounding_box", "uid": "Across"},
+                  {"op": "bounding_box", "uid": "Sliver"}, {"op": "bounding_box", "uid": "Below"},
+                  {"op": "component_surface_area", "uid": "Below"}, {"op": "component_volume", "uid": "Aft"},
+                  {"op": "component_surface_area", "uid": "Mixed"})
+    area, box, across, across_box, sliver_box, below_box, below, volume = (a["ok"] for a in answers[:-1])
+    assert area == pytest.approx(3.0 * skin_length(0.2, 0.6), rel=1e-6)
+    assert box["min"][:2] == pytest.approx([1.4, 2.0], abs=1e-6) and box["max"][:2] == pytest.approx([2.2, 5.0], abs=1e-6)
+    # From y = 0.5 in the first segment over the section at y = 1 to y = 2 in the second.
+    assert across == pytest.approx(1.5 * skin_length(0.2, 0.6), rel=1e-6)
+    assert across_box["min"][1] == pytest.approx(0.5, abs=1e-6) and across_box["max"][1] == pytest.approx(2.0, abs=1e-6)
+    # A border within 1 % of a segment's span of its end is taken at that end: no sliver faces.
+    assert sliver_box["min"][1] == pytest.approx(1.0, abs=1e-6)
+    # The lower shell's cell mirrors the upper one's (the airfoil is symmetric).
+    assert below == pytest.approx(area, rel=1e-6) and below_box["max"][2] == pytest.approx(-box["min"][2], abs=1e-6)
+    assert volume == 0
+    assert "cell[4]" in answers[-1]["error"] and "needs them on all four borders" in answers[-1]["error"]

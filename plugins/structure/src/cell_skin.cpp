@@ -10,6 +10,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "contour_cell.h"
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "spar_list.h"
@@ -39,9 +40,6 @@ class CellCorners {
       throw Error(ErrorCode::InvalidModel, "the cell has no border positioning", {},
                   !spanwise ? spanwisePath : chordwisePath);
     const double csEta = etaAt(*spanwise, leadingEdge, spanwisePath);
-    if (chordwise->contourCoordinate)
-      throw Error(ErrorCode::NotImplemented, "cells bounded by contour coordinates are not built yet", {},
-                  chordwisePath);
     return frame_.chordPoint("", csEta, xsiAt(*chordwise, inner, csEta, chordwisePath));
   }
 
@@ -49,9 +47,7 @@ class CellCorners {
   /// The component segment eta of a border at the leading edge (eta1) or trailing edge (eta2).
   double etaAt(const schema::CellPositioningSpanwiseType& spanwise, bool leadingEdge, const std::string& where) const {
     const auto& eta = leadingEdge ? spanwise.eta1 : spanwise.eta2;
-    if (!eta)
-      throw Error(ErrorCode::NotImplemented, "cells bounded by ribs or contour coordinates are not built yet", {},
-                  where);
+    if (!eta) throw Error(ErrorCode::NotImplemented, "cells bounded by ribs are not built yet", {}, where);
     const std::string element = where + (leadingEdge ? "/eta1" : "/eta2");
     if (const auto bare = bareNumber(element)) return *bare;
     try {
@@ -107,6 +103,7 @@ class CellCorners {
 }  // namespace
 
 NamedShape cellSkin(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell) {
+  if (boundedByContourCoordinates(cell)) return contourCellSkin(configuration, wing, cell);
   const StructureFrame frame(configuration, wing, cell.componentSegmentUid, cell.wingUid);
   const CellCorners corners(configuration, wing, cell, frame);
   const std::vector<gp_Pnt> loop = {corners.at(true, true), corners.at(false, true), corners.at(false, false),

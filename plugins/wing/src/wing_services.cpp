@@ -19,6 +19,14 @@ namespace airshape::wing {
 
 namespace {
 
+/// An airfoil side (profile coordinates) placed by a segment end's transformation.
+Handle(Geom_BSplineCurve) placedSide(const SegmentEnd& end, bool upper) {
+  const Handle(Geom_BSplineCurve)& side = upper ? end.profile->upperCurve() : end.profile->lowerCurve();
+  Handle(Geom_BSplineCurve) placed = Handle(Geom_BSplineCurve)::DownCast(side->Copy());
+  for (int i = 1; i <= placed->NbPoles(); ++i) placed->SetPole(i, model::apply(end.transform, placed->Pole(i)));
+  return placed;
+}
+
 gp_Vec applyLinear(const model::Transform& transform, const gp_Vec& v) {
   const Eigen::Vector3d q = transform.linear() * Eigen::Vector3d(v.X(), v.Y(), v.Z());
   return {q.x(), q.y(), q.z()};
@@ -95,6 +103,18 @@ class WingServicesOfThisPlugin final : public WingServices {
     std::vector<std::string> uids;
     for (std::size_t k : segment.segments()) uids.push_back(geometry->segmentUids()[k]);
     return uids;
+  }
+
+  AirfoilSides airfoilSides(const Configuration& configuration, const std::string& componentSegmentUid,
+                            Surface surface) const override {
+    const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
+    const auto geometry = WingGeometry::of(configuration, wing);
+    const bool upper = surface != Surface::Lower;
+    AirfoilSides sides;
+    sides.segmentUids = geometry->segmentUids();
+    for (const WingSegment& segment : geometry->segments()) sides.sides.push_back(placedSide(segment.inner, upper));
+    if (!geometry->segments().empty()) sides.sides.push_back(placedSide(geometry->segments().back().outer, upper));
+    return sides;
   }
 
   TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include <Geom_BSplineCurve.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Pnt.hxx>
@@ -62,12 +63,24 @@ class WingServices {
   virtual gp_Vec midplaneNormal(const Configuration& configuration, const std::string& componentSegmentUid,
                                 double eta) const = 0;
 
+  /// The airfoil sides along the wing that holds a component segment, placed in the global
+  /// frame: for every segment of the wing in chain order the upper (lower) side of its inner
+  /// airfoil, and last the last segment's outer airfoil's. Each side is a B-spline over [0, 1]
+  /// whose parameter is xsi (0 at the leading edge); ruled skins run straight between them.
+  /// `segmentUids` are the wing's segments in the same order.
+  struct AirfoilSides {
+    std::vector<Handle(Geom_BSplineCurve)> sides;
+    std::vector<std::string> segmentUids;
+  };
+  virtual AirfoilSides airfoilSides(const Configuration& configuration, const std::string& componentSegmentUid,
+                                    Surface surface) const = 0;
+
   /// A wing airfoil by uID as one closed wire in profile coordinates (x along the chord,
   /// z up): its outline, closed by a straight trailing edge where it is blunt.
   virtual TopoDS_Wire airfoilWire(const Configuration& configuration, const std::string& airfoilUid) const = 0;
 };
 
 /// The name the wing plugin offers WingServices under; the number is the interface's version.
-inline constexpr const char* kWingServices = "airshape.wing.WingServices/3";
+inline constexpr const char* kWingServices = "airshape.wing.WingServices/4";
 
 }  // namespace airshape::wing
