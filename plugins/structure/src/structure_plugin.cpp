@@ -8,6 +8,8 @@
 #include "airshape/wing/wing_services.h"
 #include "cell_list.h"
 #include "cell_skin.h"
+#include "fuselage_wall.h"
+#include "pressure_bulkhead.h"
 #include "rib_faces.h"
 #include "rib_list.h"
 #include "spar_list.h"
@@ -66,6 +68,9 @@ class StructurePlugin final : public plugin::BasicPlugin {
       requireComponentSegmentStructure(c, uid);
       return cellSkin(c, *wing, wingCellNamed(c, uid));
     });
+    shapes.add("pressureBulkhead",
+               [](const Configuration& c, const std::string& uid) { return pressureBulkhead(c, uid); });
+    shapes.add("wallSegment", [](const Configuration& c, const std::string& uid) { return fuselageWall(c, uid); });
   }
 
  private:

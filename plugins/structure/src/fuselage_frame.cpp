@@ -1,0 +1,74 @@
+#include "fuselage_frame.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Bnd_Box.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Lin.hxx>
+#include <gp_Pln.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "faces_inside.h"
+
+namespace airshape::structure {
+
+FuselageFrame::FuselageFrame(const Configuration& configuration, const schema::FuselageType& fuselage)
+    : configuration_(configuration),
+      fuselage_(fuselage),
+      toGlobal_(model::componentTransform(configuration, fuselage.uID)),
+      solid_(configuration.shapes().namedShapeOf(configuration, fuselage.uID).shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(solid_, box);
+  reach_ = std::sqrt(box.SquareExtent());
+}
+
+gp_Pnt FuselageFrame::toGlobal(const gp_Pnt& point) const { return model::apply(toGlobal_, point); }
+
+gp_Dir FuselageFrame::toGlobal(const gp_Dir& direction) const {
+  const Eigen::Vector3d d = toGlobal_.linear() * Eigen::Vector3d(direction.X(), direction.Y(), direction.Z());
+  return gp_Dir(d.x(), d.y(), d.z());
+}
+
+std::vector<TopoDS_Face> FuselageFrame::crossSection(const gp_Pnt& origin, const gp_Dir& normal) const {
+  const TopoDS_Face plane = BRepBuilderAPI_MakeFace(gp_Pln(origin, normal), -reach_, reach_, -reach_, reach_);
+  return facesInside(plane, solid_);
+}
+
+TopoDS_Face FuselageFrame::sectionFace(const std::string& sectionUid, const std::string& where) const {
+  auto sectionOf = [&](const std::string& elementUid) -> std::string {
+    if (fuselage_.sections)
+      for (const auto& section : fuselage_.sections->section)
+        if (section.elements)
+          for (const auto& element : section.elements->element)
+            if (element.uID == elementUid) return section.uID;
+    return {};
+  };
+  if (fuselage_.segments)
+    for (const auto& segment : fuselage_.segments->segment) {
+      const bool front = sectionOf(segment.fromElementUID) == sectionUid;
+      if (!front && sectionOf(segment.toElementUID) != sectionUid) continue;
+      const NamedShape& solid = configuration_.shapes().namedShapeOf(configuration_, segment.uID);
+      const std::string name = segment.uID + (front ? "/front" : "/rear");
+      for (const auto& [faceName, face] : solid.faces)
+        if (faceName == name) return face;
+    }
+  throw Error(ErrorCode::InvalidModel, "fuselageSectionUID '" + sectionUid + "' names no section a segment meets", {},
+              where);
+}
+
+gp_Pnt FuselageFrame::alongXOnto(const TopoDS_Shape& shape, const gp_Pnt& point, const std::string& where) const {
+  IntCurvesFace_ShapeIntersector intersector;
+  intersector.Load(shape, 1e-7);
+  intersector.Perform(gp_Lin(point, toGlobal(gp_Dir(1, 0, 0))), -reach_, reach_);
+  if (!intersector.IsDone() || intersector.NbPnt() != 1)
+    throw Error(ErrorCode::InvalidModel,
+                "the line along the fuselage's x axis through (y, z) meets the referenced element " +
+                    std::to_string(intersector.IsDone() ? intersector.NbPnt() : 0) + " times, not once",
+                {}, where);
+  return intersector.Pnt(1);
+}
+
+}  // namespace airshape::structure

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Pnt.hxx>
+
+#include "airshape/model/placement.h"
+#include "airshape/schema/generated/cpacs_model.h"
+
+namespace airshape {
+class Configuration;
+}
+
+namespace airshape::structure {
+
+/// A fuselage as its structure sees it: positions in fuselage coordinates carried to the
+/// global frame, its clean solid (the fuselage plugin's component shape) and the geometry the
+/// structure elements are placed on.
+class FuselageFrame {
+ public:
+  FuselageFrame(const Configuration& configuration, const schema::FuselageType& fuselage);
+
+  gp_Pnt toGlobal(const gp_Pnt& point) const;
+  /// A direction in fuselage coordinates as a global direction.
+  gp_Dir toGlobal(const gp_Dir& direction) const;
+  const TopoDS_Shape& solid() const { return solid_; }
+  /// The diagonal of the solid's bounding box: longer than any line across the fuselage.
+  double reach() const { return reach_; }
+
+  /// The parts of the plane through `origin` with this normal (global) inside the solid.
+  std::vector<TopoDS_Face> crossSection(const gp_Pnt& origin, const gp_Dir& normal) const;
+  /// The face of the fuselage at a section (an end cap of a segment starting or ending there).
+  /// Throws Error naming `where` when no segment of the fuselage meets that section.
+  TopoDS_Face sectionFace(const std::string& sectionUid, const std::string& where) const;
+  /// Where the line through `point` along the fuselage's x axis meets `shape`, which it must
+  /// meet exactly once; otherwise throws Error naming `where`.
+  gp_Pnt alongXOnto(const TopoDS_Shape& shape, const gp_Pnt& point, const std::string& where) const;
+
+ private:
+  const Configuration& configuration_;
+  const schema::FuselageType& fuselage_;
+  model::Transform toGlobal_;
+  TopoDS_Shape solid_;
+  double reach_ = 0.0;
+};
+
+}  // namespace airshape::structure

@@ -1,0 +1,72 @@
+#include "fuselage_structure_list.h"
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/model/primary_model.h"
+
+namespace airshape::structure {
+
+namespace {
+
+/// The first element of a fuselage structure list (`listOf` picks it from a structure) whose
+/// uID is `uid`, in any fuselage of any model.
+template <class Node, class ListOf>
+FuselageElement<Node> findInFuselages(const Configuration& configuration, const std::string& uid, ListOf listOf) {
+  for (const model::ModelComponents& model : model::everyModel(configuration))
+    for (const schema::FuselageType* fuselage : model.fuselages) {
+      if (!fuselage->structure) continue;
+      for (const Node* node : listOf(*fuselage->structure))
+        if (node->uID == uid) return {node, fuselage, &*fuselage->structure};
+    }
+  return {};
+}
+
+}  // namespace
+
+FuselageElement<schema::PressureBulkheadAssemblyPositionType> pressureBulkheadNamed(const Configuration& configuration,
+                                                                                    const std::string& uid) {
+  const auto found = findInFuselages<schema::PressureBulkheadAssemblyPositionType>(
+      configuration, uid, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::PressureBulkheadAssemblyPositionType*> nodes;
+        if (structure.pressureBulkheads)
+          for (const auto& bulkhead : structure.pressureBulkheads->pressureBulkhead) nodes.push_back(&bulkhead);
+        return nodes;
+      });
+  if (found.node == nullptr)
+    throw Error(ErrorCode::InvalidArgument, "no fuselage pressure bulkhead with uID '" + uid + "'");
+  return found;
+}
+
+FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid) {
+  const auto found =
+      findInFuselages<schema::WallSegmentType>(configuration, uid, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::WallSegmentType*> nodes;
+        if (structure.walls && structure.walls->wallSegments)
+          for (const auto& wall : structure.walls->wallSegments->wallSegment)
+            if (wall.uID) nodes.push_back(&wall);
+        return nodes;
+      });
+  if (found.node == nullptr)
+    throw Error(ErrorCode::NotImplemented,
+                "no fuselage wall segment with uID '" + uid + "' (walls of tank hulls are not built yet)");
+  return found;
+}
+
+const schema::FrameType& frameNamed(const schema::FuselageStructureType& structure, const std::string& uid,
+                                    const std::string& where) {
+  if (structure.frames)
+    for (const auto& frame : structure.frames->frame)
+      if (frame.uID == uid) return frame;
+  throw Error(ErrorCode::InvalidModel, "frameUID '" + uid + "' names no frame of this fuselage", {}, where);
+}
+
+const schema::WallPositionType& wallPositionNamed(const schema::FuselageStructureType& structure,
+                                                  const std::string& uid, const std::string& where) {
+  if (structure.walls && structure.walls->wallPositions)
+    for (const auto& position : structure.walls->wallPositions->wallPosition)
+      if (position.uID && *position.uID == uid) return position;
+  throw Error(ErrorCode::InvalidModel, "wallPositionUID '" + uid + "' names no wall position of this fuselage", {},
+              where);
+}
+
+}  // namespace airshape::structure

@@ -1,0 +1,240 @@
+#include "fuselage_wall.h"
+
+#include <set>
+#include <vector>
+
+#include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepFill.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Lin.hxx>
+#include <gp_Pln.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "faces_inside.h"
+#include "fuselage_frame.h"
+#include "fuselage_structure_list.h"
+#include "named_faces.h"
+
+namespace airshape::structure {
+
+namespace {
+
+/// The walls being built on this thread: a wall placed on a wall that is placed on it again
+/// would never finish.
+thread_local std::set<std::string> wallsUnderConstruction;
+
+class ConstructionGuard {
+ public:
+  ConstructionGuard(const std::string& uid, const std::string& xpath) : uid_(uid) {
+    if (!wallsUnderConstruction.insert(uid).second)
+      throw Error(ErrorCode::InvalidModel, "wall '" + uid + "' depends on itself through its wall positions", {},
+                  xpath);
+  }
+  ~ConstructionGuard() { wallsUnderConstruction.erase(uid_); }
+  ConstructionGuard(const ConstructionGuard&) = delete;
+  ConstructionGuard& operator=(const ConstructionGuard&) = delete;
+
+ private:
+  std::string uid_;
+};
+
+/// A wall position placed: its base point (global) and the element it lies on, if any.
+struct BasePoint {
+  gp_Pnt point;
+  TopoDS_Shape element;  ///< null where x is given
+  std::string xpath;
+};
+
+BasePoint basePointOf(const Configuration& configuration, const FuselageFrame& fuselage,
+                      const schema::WallPositionType& position) {
+  BasePoint base{fuselage.toGlobal(gp_Pnt(position.x.value_or(0.0), position.y, position.z)), {}, position.xpath};
+  if (position.x) return base;
+  std::string where = position.xpath;
+  // The shape of the element of this uID, or Error naming where the uID is given.
+  auto shapeOf = [&](const std::string& uid) {
+    try {
+      return configuration.shapes().namedShapeOf(configuration, uid).shape;
+    } catch (const Error& error) {
+      throw Error(error.code(), error.message(), {}, where);
+    }
+  };
+  if (position.bulkheadUID) {
+    where += "/bulkheadUID";
+    base.element = shapeOf(*position.bulkheadUID);
+  } else if (position.wallSegmentUID) {
+    where += "/wallSegmentUID";
+    base.element = shapeOf(*position.wallSegmentUID);
+  } else if (position.fuselageSectionUID) {
+    where += "/fuselageSectionUID";
+    base.element = fuselage.sectionFace(*position.fuselageSectionUID, where);
+  } else {
+    throw Error(ErrorCode::InvalidModel, "the wall position gives neither x nor an element to place it on", {},
+                position.xpath);
+  }
+  base.point = fuselage.alongXOnto(base.element, base.point, where);
+  return base;
+}
+
+/// The plane of the element a base point lies on, through the base point.
+gp_Pln planeOf(const BasePoint& base) {
+  for (TopExp_Explorer face(base.element, TopAbs_FACE); face.More(); face.Next()) {
+    GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(TopoDS::Face(face.Current())));
+    if (planar.IsPlanar()) return gp_Pln(base.point, planar.Plan().Axis().Direction());
+    break;
+  }
+  throw Error(ErrorCode::InvalidModel, "a flush connection needs a plane element at the wall position", {}, base.xpath);
+}
+
+/// Where the line through `point` along `direction` meets `plane`.
+gp_Pnt ontoPlane(const gp_Pln& plane, const gp_Pnt& point, const gp_Vec& direction, const std::string& where) {
+  const double along = gp_Vec(plane.Axis().Direction()).Dot(direction);
+  if (std::abs(along) < 1e-12 * direction.Magnitude())
+    throw Error(ErrorCode::InvalidModel, "the wall runs parallel to the element it is to be flush with", {}, where);
+  const double t = gp_Vec(point, plane.Location()).Dot(gp_Vec(plane.Axis().Direction())) / along;
+  return point.Translated(t * direction);
+}
+
+/// The face through four corners: plane where they are (a strip of a wall always is unless a
+/// flush connection turns an edge), else ruled between the edges lower–upper and next ones.
+TopoDS_Face quad(const gp_Pnt& lower, const gp_Pnt& lowerNext, const gp_Pnt& upper, const gp_Pnt& upperNext) {
+  BRepBuilderAPI_MakePolygon polygon(lower, lowerNext, upperNext, upper, true);
+  BRepBuilderAPI_MakeFace plane(polygon.Wire(), true);
+  if (plane.IsDone()) return plane.Face();
+  return BRepFill::Face(BRepBuilderAPI_MakeEdge(lower, upper), BRepBuilderAPI_MakeEdge(lowerNext, upperNext));
+}
+
+/// A wall before trimming: its base points, its strips and the faces that cut walls it bounds
+/// (its strips, the first and the last stretched along the wall beyond its ends).
+struct WallLayout {
+  std::vector<gp_Pnt> basePoints;
+  std::vector<TopoDS_Face> strips, cutters;
+};
+
+WallLayout layoutOf(const Configuration& configuration, const FuselageElement<schema::WallSegmentType>& wall) {
+  const schema::WallSegmentType& node = *wall.node;
+  const FuselageFrame fuselage(configuration, *wall.fuselage);
+  const std::string positionsPath = node.xpath + "/wallPositionUIDs";
+  std::vector<BasePoint> bases;
+  if (node.wallPositionUIDs)
+    for (const std::string& uid : node.wallPositionUIDs->wallPositionUID)
+      bases.push_back(basePointOf(configuration, fuselage, wallPositionNamed(*wall.structure, uid, positionsPath)));
+  if (bases.size() < 2)
+    throw Error(ErrorCode::InvalidModel, "a wall needs at least two wall positions", {}, positionsPath);
+
+  const double phi = node.phi * M_PI / 180.0;
+  const gp_Vec up(fuselage.toGlobal(gp_Dir(0.0, -std::sin(phi), std::cos(phi))));
+  const double reach = fuselage.reach();
+  const double below = node.doubleSidedExtrusion.value_or(false) ? -reach : 0.0;
+  std::vector<gp_Pnt> lower, upper;
+  for (const BasePoint& base : bases) {
+    lower.push_back(base.point.Translated(below * up));
+    upper.push_back(base.point.Translated(reach * up));
+  }
+  auto flush = [&](std::size_t end, std::size_t neighbour) {
+    const gp_Vec along(bases[neighbour].point, bases[end].point);
+    const gp_Pln plane = planeOf(bases[end]);
+    lower[end] = ontoPlane(plane, lower[end], along, node.xpath);
+    upper[end] = ontoPlane(plane, upper[end], along, node.xpath);
+  };
+  if (node.flushConnectionStart.value_or(false)) flush(0, 1);
+  if (node.flushConnectionEnd.value_or(false)) flush(bases.size() - 1, bases.size() - 2);
+
+  WallLayout layout;
+  for (const BasePoint& base : bases) layout.basePoints.push_back(base.point);
+  const std::size_t last = bases.size() - 1;
+  for (std::size_t k = 0; k < last; ++k) {
+    layout.strips.push_back(quad(lower[k], lower[k + 1], upper[k], upper[k + 1]));
+    const gp_Vec stretch = gp_Vec(bases[k].point, bases[k + 1].point).Normalized() * reach;
+    const gp_Vec before = k == 0 ? -stretch : gp_Vec(0, 0, 0), after = k + 1 == last ? stretch : gp_Vec(0, 0, 0);
+    layout.cutters.push_back(quad(lower[k].Translated(before), lower[k + 1].Translated(after),
+                                  upper[k].Translated(before), upper[k + 1].Translated(after)));
+  }
+  return layout;
+}
+
+TopoDS_Compound compoundOf(const std::vector<TopoDS_Face>& faces) {
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  for (const TopoDS_Face& face : faces) builder.Add(compound, face);
+  return compound;
+}
+
+bool touches(const TopoDS_Face& face, const gp_Pnt& point) {
+  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(point).Vertex(), face);
+  return distance.IsDone() && distance.Value() < 1e-6;
+}
+
+/// The pieces of `faces` split by `cutters` that hold one of the base points.
+std::vector<TopoDS_Face> cutBack(const std::vector<TopoDS_Face>& faces, const std::vector<TopoDS_Face>& cutters,
+                                 const std::vector<gp_Pnt>& basePoints, const std::string& where) {
+  TopTools_ListOfShape arguments, tools;
+  for (const TopoDS_Face& face : faces) arguments.Append(face);
+  for (const TopoDS_Face& cutter : cutters) tools.Append(cutter);
+  BRepAlgoAPI_Splitter splitter;
+  splitter.SetArguments(arguments);
+  splitter.SetTools(tools);
+  splitter.SetRunParallel(true);
+  splitter.Build();
+  if (!splitter.IsDone() || splitter.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the wall cannot be cut at its bounding element", {}, where);
+  std::vector<TopoDS_Face> kept;
+  for (TopExp_Explorer it(splitter.Shape(), TopAbs_FACE); it.More(); it.Next()) {
+    const TopoDS_Face piece = TopoDS::Face(it.Current());
+    for (const gp_Pnt& point : basePoints)
+      if (touches(piece, point)) {
+        kept.push_back(piece);
+        break;
+      }
+  }
+  return kept;
+}
+
+}  // namespace
+
+NamedShape fuselageWall(const Configuration& configuration, const std::string& uid) {
+  const auto wall = wallSegmentNamed(configuration, uid);
+  const ConstructionGuard guard(uid, wall.node->xpath);
+  const WallLayout layout = layoutOf(configuration, wall);
+  const FuselageFrame fuselage(configuration, *wall.fuselage);
+  std::vector<TopoDS_Face> faces;
+  try {
+    faces = facesInside(compoundOf(layout.strips), fuselage.solid());
+  } catch (const Error&) {
+    throw Error(ErrorCode::InvalidModel, "the wall cannot be cut at the fuselage's skin", {}, wall.node->xpath);
+  }
+  if (wall.node->boundingElementUIDs) {
+    const std::string where = wall.node->xpath + "/boundingElementUIDs";
+    for (const std::string& bounding : wall.node->boundingElementUIDs->boundingElementUID) {
+      FuselageElement<schema::WallSegmentType> other;
+      try {
+        other = wallSegmentNamed(configuration, bounding);
+      } catch (const Error&) {
+        throw Error(ErrorCode::NotImplemented,
+                    "bounding element '" + bounding +
+                        "' is not a wall of a fuselage (floors and generic geometry "
+                        "as bounds are not built yet)",
+                    {}, where);
+      }
+      faces = cutBack(faces, layoutOf(configuration, other).cutters, layout.basePoints, where);
+    }
+  }
+  NamedFaces shape;
+  shape.add(uid + "/wall", faces);
+  if (shape.empty()) throw Error(ErrorCode::InvalidModel, "the wall lies outside the fuselage", {}, wall.node->xpath);
+  return shape.shape();
+}
+
+}  // namespace airshape::structure

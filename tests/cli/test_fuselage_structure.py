@@ -1,0 +1,92 @@
+"""Fuselage structure (docs/structure.md): pressure bulkheads and walls in a unit cylinder the test
+writes itself (radius 1, x from 0 to 10, sections at x = 0, 5 and 10), where every area has a
+closed form."""
+import json
+import math
+
+from conftest import airshape, query_answers as ask
+from test_fuselage import HEADER, circle, fuselage
+
+# The interpolated 64-point circle is a circle to about 1e-6.
+REL = 1e-5
+
+
+def position(uid, y, z, x=None, bulkhead=None, section=None, wall=None):
+    place = (f"<x>{x}</x>" if x is not None else f"<bulkheadUID>{bulkhead}</bulkheadUID>" if bulkhead
+             else f"<fuselageSectionUID>{section}</fuselageSectionUID>" if section
+             else f"<wallSegmentUID>{wall}</wallSegmentUID>")
+    return f'<wallPosition uID="{uid}">{place}<y>{y}</y><z>{z}</z></wallPosition>'
+
+
+def wall(uid, phi, *positions, extra=""):
+    uids = "".join(f"<wallPositionUID>{p}</wallPositionUID>" for p in positions)
+    return f'<wallSegment uID="{uid}"><phi>{phi}</phi>{extra}<wallPositionUIDs>{uids}</wallPositionUIDs></wallSegment>'
+
+
+def frame(uid, *stations):
+    positions = "".join(f'<framePosition uID="{uid}P{i}"><structuralElementUID>E</structuralElementUID>'
+                        f"<positionX>{x}</positionX><referenceY>{y}</referenceY><referenceZ>0</referenceZ>"
+                        f"<referenceAngle>0</referenceAngle></framePosition>" for i, (x, y) in enumerate(stations))
+    return f'<frame uID="{uid}">{positions}</frame>'
+
+
+def write(path, structure):
+    body = fuselage("Tube", "Circle", 10.0).replace("</fuselage>", f"<structure>{structure}</structure></fuselage>")
+    profiles = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(64)}</fuselageProfile></fuselageProfiles>'
+    path.write_text(HEADER + body + f"</fuselages></model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
+
+
+def structure():
+    frames = frame("F1", (7, 0)) + frame("Path", (4, -0.5), (4, 0), (4, 0.5))
+    bulkheads = ('<pressureBulkheads><pressureBulkhead uID="B1"><frameUID>F1</frameUID>'
+                 "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
+                 '<pressureBulkhead uID="OnPath"><frameUID>Path</frameUID>'
+                 "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead></pressureBulkheads>")
+    positions = (position("P1", 0.3, 0, x=2) + position("P2", 0.3, 0, bulkhead="B1") +
+                 position("P3", -0.5, 0, section="TubeS1") + position("P4", -0.5, 0, x=9) +
+                 position("P5", 0, 0.5, x=3) + position("P6", 0, 0.5, x=6) +
+                 position("Lost", 0, 0, bulkhead="Nowhere") + position("Self", 0.3, 0, wall="Loop"))
+    walls = (wall("Upright", 0, "P1", "P2") + wall("Both", 0, "P1", "P2", extra="<doubleSidedExtrusion>true</doubleSidedExtrusion>") +
+             wall("Floor", 90, "P3", "P4") +
+             wall("Shelf", -90, "P5", "P6", extra="<boundingElementUIDs><boundingElementUID>Upright</boundingElementUID></boundingElementUIDs>") +
+             wall("Broken", 0, "P1", "Lost") + wall("Loop", 0, "P1", "Self"))
+    return (f"<frames>{frames}</frames>{bulkheads}<walls><wallPositions>{positions}</wallPositions>"
+            f"<wallSegments>{walls}</wallSegments></walls>")
+
+
+def test_bulkheads_and_walls_in_closed_form(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    answers = ask(path, {"op": "component_surface_area", "uid": "B1"}, {"op": "bounding_box", "uid": "B1"},
+                  {"op": "component_type", "uid": "B1"}, {"op": "component_surface_area", "uid": "Upright"},
+                  {"op": "bounding_box", "uid": "Upright"}, {"op": "component_surface_area", "uid": "Both"},
+                  {"op": "component_surface_area", "uid": "Floor"}, {"op": "bounding_box", "uid": "Floor"},
+                  {"op": "component_surface_area", "uid": "Shelf"}, {"op": "bounding_box", "uid": "Shelf"},
+                  {"op": "component_volume", "uid": "Shelf"}, {"op": "component_type", "uid": "Shelf"})
+    bulkhead, box, kind, upright, upright_box, both, floor, floor_box, shelf, shelf_box, volume, wall_kind = answers
+    # The bulkhead: the disc the skin encloses at its frame's station x = 7.
+    assert math.isclose(bulkhead, math.pi, rel_tol=REL) and kind == "pressure_bulkhead"
+    assert math.isclose(box["min"][0], 7, abs_tol=1e-6) and math.isclose(box["max"][0], 7, abs_tol=1e-6)
+    # Upright: the plane y = 0.3 from x = 2 to the bulkhead at x = 7, from z = 0 up to the skin.
+    height = math.sqrt(1 - 0.3 ** 2)
+    assert math.isclose(upright, 5 * height, rel_tol=REL)
+    assert math.isclose(upright_box["max"][0], 7, abs_tol=1e-6) and math.isclose(upright_box["min"][2], 0, abs_tol=1e-6)
+    assert math.isclose(both, 10 * height, rel_tol=REL), "extruded both ways: down to the skin as well"
+    # Floor: phi 90° extrudes along −y; from the section at x = 5 to x = 9, from y = −0.5 to the skin.
+    assert math.isclose(floor, 4 * (1 - 0.5), rel_tol=REL)
+    assert math.isclose(floor_box["min"][0], 5, abs_tol=1e-6) and math.isclose(floor_box["min"][1], -1, abs_tol=1e-5)
+    # Shelf: phi −90° extrudes along +y from y = 0 at z = 0.5; its bound, Upright, cuts it at y = 0.3.
+    assert math.isclose(shelf, 3 * 0.3, rel_tol=1e-9) and math.isclose(shelf_box["max"][1], 0.3, abs_tol=1e-6)
+    assert volume == 0 and wall_kind == "fuselage_wall"
+
+
+def test_fuselage_structure_errors_name_their_path(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    queries = [{"op": "component_surface_area", "uid": u} for u in ("OnPath", "Broken", "Loop")]
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    on_path, broken, loop = (json.loads(line) for line in result.stdout.splitlines())
+    assert "frames/frame[2]" in on_path["error"] and "3 frame positions" in on_path["error"]
+    assert "wallPosition[7]/bulkheadUID" in broken["error"] and "'Nowhere'" in broken["error"]
+    # A wall placed on itself is refused, not built forever.
+    assert "wallPosition[8]/wallSegmentUID" in loop["error"] and "depends on itself" in loop["error"]
