@@ -50,7 +50,13 @@ def structure():
              wall("Floor", 90, "P3", "P4") +
              wall("Shelf", -90, "P5", "P6", extra="<boundingElementUIDs><boundingElementUID>Upright</boundingElementUID></boundingElementUIDs>") +
              wall("Broken", 0, "P1", "Lost") + wall("Loop", 0, "P1", "Self"))
-    return (f"<frames>{frames}</frames>{bulkheads}<walls><wallPositions>{positions}</wallPositions>"
+    beams = ('<cargoCrossBeams><cargoCrossBeam uID="Beam"><structuralElementUID>E</structuralElementUID>'
+             "<frameUID>F1</frameUID><positionZ>-0.5</positionZ></cargoCrossBeam></cargoCrossBeams>")
+    struts = "".join(f'<cargoCrossBeamStrut uID="{uid}"><structuralElementUID>E</structuralElementUID><frameUID>F1</frameUID>'
+                     f"<crossBeamUID>Beam</crossBeamUID><positionYAtCrossBeam>{y}</positionYAtCrossBeam>"
+                     f"<angleX>{angle}</angleX></cargoCrossBeamStrut>" for uid, y, angle in
+                     (("Down", -0.3, 90), ("Leaning", -0.3, 60), ("Beyond", -0.95, 90)))
+    return (f"<frames>{frames}</frames>{bulkheads}{beams}<cargoCrossBeamStruts>{struts}</cargoCrossBeamStruts><walls><wallPositions>{positions}</wallPositions>"
             f"<wallSegments>{walls}</wallSegments></walls>")
 
 
@@ -80,12 +86,34 @@ def test_bulkheads_and_walls_in_closed_form(tmp_path):
     assert volume == 0 and wall_kind == "fuselage_wall"
 
 
+def test_cross_beams_and_struts_are_their_axes(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    beam, beam_area, down, leaning, kind = ask(
+        path, {"op": "bounding_box", "uid": "Beam"}, {"op": "component_surface_area", "uid": "Beam"},
+        {"op": "bounding_box", "uid": "Down"}, {"op": "bounding_box", "uid": "Leaning"},
+        {"op": "component_type", "uid": "Leaning"})
+    # The beam: the chord of the unit circle at z = −0.5 in the frame's plane x = 7.
+    half = math.sqrt(1 - 0.25)
+    assert math.isclose(beam["min"][1], -half, abs_tol=1e-5) and math.isclose(beam["max"][1], half, abs_tol=1e-5)
+    assert beam_area == 0 and math.isclose(beam["min"][0], 7, abs_tol=1e-6)
+    # Straight down from (y, z) = (−0.3, −0.5) to the skin.
+    assert math.isclose(down["min"][2], -math.sqrt(1 - 0.09), abs_tol=1e-5)
+    # angleX 60: 30° towards −y; the skin along (0, −1/2, −√3/2) from (−0.3, −0.5).
+    d = (-0.5, -math.sqrt(3) / 2)
+    b = 2 * (-0.3 * d[0] - 0.5 * d[1])
+    t = (-b + math.sqrt(b * b - 4 * (0.09 + 0.25 - 1))) / 2
+    assert math.isclose(leaning["min"][1], -0.3 + t * d[0], abs_tol=1e-5)
+    assert math.isclose(leaning["min"][2], -0.5 + t * d[1], abs_tol=1e-5) and kind == "cross_beam_strut"
+
+
 def test_fuselage_structure_errors_name_their_path(tmp_path):
     path = tmp_path / "tube.xml"
     write(path, structure())
-    queries = [{"op": "component_surface_area", "uid": u} for u in ("OnPath", "Broken", "Loop")]
+    queries = [{"op": "component_surface_area", "uid": u} for u in ("OnPath", "Broken", "Loop", "Beyond")]
     result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
-    on_path, broken, loop = (json.loads(line) for line in result.stdout.splitlines())
+    on_path, broken, loop, beyond = (json.loads(line) for line in result.stdout.splitlines())
+    assert "cargoCrossBeamStrut[3]/positionYAtCrossBeam" in beyond["error"]
     assert "frames/frame[2]" in on_path["error"] and "3 frame positions" in on_path["error"]
     assert "wallPosition[7]/bulkheadUID" in broken["error"] and "'Nowhere'" in broken["error"]
     # A wall placed on itself is refused, not built forever.

@@ -59,6 +59,34 @@ TopoDS_Face FuselageFrame::sectionFace(const std::string& sectionUid, const std:
               where);
 }
 
+double FuselageFrame::stationX(const schema::FrameType& frame) const {
+  if (frame.framePosition.size() != 1)
+    throw Error(ErrorCode::NotImplemented,
+                "frames of " + std::to_string(frame.framePosition.size()) +
+                    " frame positions are not built yet (one position: a plane station)",
+                {}, frame.xpath);
+  const schema::StringerFramePositionType& position = frame.framePosition[0];
+  if (!position.positionX)
+    throw Error(ErrorCode::NotImplemented, "frame positions placed by a section element are not built yet", {},
+                position.xpath);
+  return *position.positionX;
+}
+
+gp_Pln FuselageFrame::station(const schema::FrameType& frame) const {
+  const schema::StringerFramePositionType& position = frame.framePosition[0];
+  return gp_Pln(toGlobal(gp_Pnt(stationX(frame), position.referenceY, position.referenceZ)), toGlobal(gp_Dir(1, 0, 0)));
+}
+
+gp_Pnt FuselageFrame::skinAhead(const gp_Pnt& from, const gp_Dir& direction, const std::string& where) const {
+  IntCurvesFace_ShapeIntersector intersector;
+  intersector.Load(solid_, 1e-7);
+  intersector.Perform(gp_Lin(from, direction), 1e-9, reach_);
+  if (!intersector.IsDone() || intersector.NbPnt() == 0)
+    throw Error(ErrorCode::InvalidModel, "the line from the element does not reach the fuselage's skin", {}, where);
+  intersector.SortResult();
+  return intersector.Pnt(1);
+}
+
 gp_Pnt FuselageFrame::alongXOnto(const TopoDS_Shape& shape, const gp_Pnt& point, const std::string& where) const {
   IntCurvesFace_ShapeIntersector intersector;
   intersector.Load(shape, 1e-7);

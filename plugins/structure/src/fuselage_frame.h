@@ -6,6 +6,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <gp_Dir.hxx>
+#include <gp_Pln.hxx>
 #include <gp_Pnt.hxx>
 
 #include "airshape/model/placement.h"
@@ -30,6 +31,16 @@ class FuselageFrame {
   const TopoDS_Shape& solid() const { return solid_; }
   /// The diagonal of the solid's bounding box: longer than any line across the fuselage.
   double reach() const { return reach_; }
+
+  /// The station of a frame of one frame position: the plane x = positionX of the fuselage's
+  /// coordinates (global). Throws Error naming the frame for frames of several positions (a
+  /// frame path across the fuselage) or positions placed by a section element: not built yet.
+  gp_Pln station(const schema::FrameType& frame) const;
+  /// The frame's positionX (fuselage coordinates), under the same conditions.
+  double stationX(const schema::FrameType& frame) const;
+  /// Where the ray from `from` along `direction` (global) first meets the fuselage's skin;
+  /// throws Error naming `where` when it meets none.
+  gp_Pnt skinAhead(const gp_Pnt& from, const gp_Dir& direction, const std::string& where) const;
 
   /// The parts of the plane through `origin` with this normal (global) inside the solid.
   std::vector<TopoDS_Face> crossSection(const gp_Pnt& origin, const gp_Dir& normal) const;

@@ -52,6 +52,37 @@ FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& c
   return found;
 }
 
+FuselageElement<schema::CrossBeamAssemblyPositionType> crossBeamNamed(const Configuration& configuration,
+                                                                      const std::string& uid) {
+  const auto found = findInFuselages<schema::CrossBeamAssemblyPositionType>(
+      configuration, uid, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::CrossBeamAssemblyPositionType*> nodes;
+        if (structure.cargoCrossBeams)
+          for (const auto& beam : structure.cargoCrossBeams->cargoCrossBeam) nodes.push_back(&beam);
+        if (structure.paxCrossBeams)
+          for (const auto& beam : structure.paxCrossBeams->paxCrossBeam) nodes.push_back(&beam);
+        return nodes;
+      });
+  if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no fuselage cross beam with uID '" + uid + "'");
+  return found;
+}
+
+FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(const Configuration& configuration,
+                                                                                const std::string& uid) {
+  const auto found = findInFuselages<schema::CrossBeamStrutAssemblyPositionType>(
+      configuration, uid, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::CrossBeamStrutAssemblyPositionType*> nodes;
+        if (structure.cargoCrossBeamStruts)
+          for (const auto& strut : structure.cargoCrossBeamStruts->cargoCrossBeamStrut) nodes.push_back(&strut);
+        if (structure.paxCrossBeamStruts)
+          for (const auto& strut : structure.paxCrossBeamStruts->paxCrossBeamStrut) nodes.push_back(&strut);
+        return nodes;
+      });
+  if (found.node == nullptr)
+    throw Error(ErrorCode::InvalidArgument, "no fuselage cross-beam strut with uID '" + uid + "'");
+  return found;
+}
+
 const schema::FrameType& frameNamed(const schema::FuselageStructureType& structure, const std::string& uid,
                                     const std::string& where) {
   if (structure.frames)

@@ -27,6 +27,15 @@ FuselageElement<schema::PressureBulkheadAssemblyPositionType> pressureBulkheadNa
 /// none has it.
 FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid);
 
+/// The cargo or passenger cross beam with this uID in any model. Throws Error when none has it.
+FuselageElement<schema::CrossBeamAssemblyPositionType> crossBeamNamed(const Configuration& configuration,
+                                                                      const std::string& uid);
+
+/// The cargo or passenger cross-beam strut with this uID in any model. Throws Error when none
+/// has it.
+FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(const Configuration& configuration,
+                                                                                const std::string& uid);
+
 /// The frame of a fuselage structure with this uID; throws Error naming `where` when none has it.
 const schema::FrameType& frameNamed(const schema::FuselageStructureType& structure, const std::string& uid,
                                     const std::string& where);

@@ -1,13 +1,15 @@
 // The structure plugin: spars, ribs and cells of wings; frames, stringers, bulkheads, doors,
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
-// (airshape/wing/wing_services.h). Spar webs, ribs and cells are built; the other node types
-// are claimed (graph/component_graph.h) and wait for their builders.
+// (airshape/wing/wing_services.h) and on the fuselages' component shapes. Spar webs, ribs,
+// cells, pressure bulkheads and walls are built; the other node types are claimed
+// (graph/component_graph.h) and wait for their builders.
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/wing/wing_services.h"
 #include "cell_list.h"
 #include "cell_skin.h"
+#include "cross_beam.h"
 #include "fuselage_wall.h"
 #include "pressure_bulkhead.h"
 #include "rib_faces.h"
@@ -31,8 +33,8 @@ class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
       : BasicPlugin("structure", "0.4.0",
-                    "wing and fuselage structure: spar webs, ribs, cells (frames, stringers, bulkheads, doors, "
-                    "floor beams, walls: no builder yet)",
+                    "wing and fuselage structure: spar webs, ribs, cells, pressure bulkheads, walls, cross beams and "
+                    "struts (frames, stringers, doors, floor beams: no builder yet)",
                     {{"sparSegment", ""},
                      {"ribsDefinition", ""},
                      {"wingCell", ""},
@@ -70,6 +72,8 @@ class StructurePlugin final : public plugin::BasicPlugin {
     });
     shapes.add("pressureBulkhead",
                [](const Configuration& c, const std::string& uid) { return pressureBulkhead(c, uid); });
+    shapes.add("crossBeam", [](const Configuration& c, const std::string& uid) { return crossBeam(c, uid); });
+    shapes.add("crossBeamStrut", [](const Configuration& c, const std::string& uid) { return crossBeamStrut(c, uid); });
     shapes.add("wallSegment", [](const Configuration& c, const std::string& uid) { return fuselageWall(c, uid); });
   }
 

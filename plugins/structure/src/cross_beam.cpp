@@ -1,0 +1,85 @@
+#include "cross_beam.h"
+
+#include <cmath>
+
+#include <BRepAlgoAPI_Section.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "fuselage_frame.h"
+#include "fuselage_structure_list.h"
+
+namespace airshape::structure {
+
+namespace {
+
+/// The edges of `shape` gathered into an edge shape.
+NamedShape edgesOf(const TopoDS_Shape& shape) {
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  for (TopExp_Explorer edge(shape, TopAbs_EDGE); edge.More(); edge.Next()) builder.Add(compound, edge.Current());
+  NamedShape named;
+  named.shape = compound;
+  return named;
+}
+
+/// The cross beam's axis in the global frame.
+TopoDS_Shape beamAxis(const Configuration& configuration,
+                      const FuselageElement<schema::CrossBeamAssemblyPositionType>& beam) {
+  const schema::FrameType& frame = frameNamed(*beam.structure, beam.node->frameUID, beam.node->xpath + "/frameUID");
+  const FuselageFrame fuselage(configuration, *beam.fuselage);
+  const gp_Pln station = fuselage.station(frame);
+  BRep_Builder builder;
+  TopoDS_Compound section;
+  builder.MakeCompound(section);
+  for (const TopoDS_Face& face : fuselage.crossSection(station.Location(), station.Axis().Direction()))
+    builder.Add(section, face);
+  const gp_Pln level(fuselage.toGlobal(gp_Pnt(0, 0, beam.node->positionZ)), fuselage.toGlobal(gp_Dir(0, 0, 1)));
+  BRepAlgoAPI_Section cut(section, BRepBuilderAPI_MakeFace(level, -fuselage.reach(), fuselage.reach(),
+                                                           -fuselage.reach(), fuselage.reach()));
+  if (!cut.IsDone()) throw Error(ErrorCode::InvalidModel, "the cross beam's plane cannot be cut", {}, beam.node->xpath);
+  TopExp_Explorer any(cut.Shape(), TopAbs_EDGE);
+  if (!any.More())
+    throw Error(ErrorCode::InvalidModel, "the cross beam's height lies outside the fuselage at its frame", {},
+                beam.node->xpath + "/positionZ");
+  return cut.Shape();
+}
+
+}  // namespace
+
+NamedShape crossBeam(const Configuration& configuration, const std::string& uid) {
+  return edgesOf(beamAxis(configuration, crossBeamNamed(configuration, uid)));
+}
+
+NamedShape crossBeamStrut(const Configuration& configuration, const std::string& uid) {
+  const auto strut = crossBeamStrutNamed(configuration, uid);
+  const schema::CrossBeamStrutAssemblyPositionType& node = *strut.node;
+  const auto beam = crossBeamNamed(configuration, node.crossBeamUID);
+  const schema::FrameType& beamFrame = frameNamed(*beam.structure, beam.node->frameUID, beam.node->xpath + "/frameUID");
+  const schema::FrameType& frame = frameNamed(*strut.structure, node.frameUID, node.xpath + "/frameUID");
+  const FuselageFrame fuselage(configuration, *strut.fuselage);
+  // Where the strut leaves its beam, which it must lie on.
+  const gp_Pnt onBeam =
+      fuselage.toGlobal(gp_Pnt(fuselage.stationX(beamFrame), node.positionYAtCrossBeam, beam.node->positionZ));
+  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(onBeam).Vertex(), beamAxis(configuration, beam));
+  if (!distance.IsDone() || distance.Value() > 1e-6)
+    throw Error(ErrorCode::InvalidModel, "positionYAtCrossBeam lies beyond the ends of its cross beam", {},
+                node.xpath + "/positionYAtCrossBeam");
+  // Along the beam's plane turned by angleX − 90° about the x axis, from straight down.
+  const double turn = (node.angleX.value_or(90.0) - 90.0) * M_PI / 180.0;
+  const gp_Dir down = fuselage.toGlobal(gp_Dir(0.0, std::sin(turn), -std::cos(turn)));
+  const gp_Pnt start =
+      fuselage.toGlobal(gp_Pnt(fuselage.stationX(frame), node.positionYAtCrossBeam, beam.node->positionZ));
+  const gp_Pnt onFrame = fuselage.skinAhead(start, down, node.xpath);
+  return edgesOf(BRepBuilderAPI_MakeEdge(onBeam, onFrame).Edge());
+}
+
+}  // namespace airshape::structure
