@@ -149,6 +149,19 @@ airshape_status airshape_fuselage_segment_surface_area(airshape_configuration* c
 airshape_status airshape_fuselage_circumference(airshape_configuration* configuration, int fuselage, int segment,
                                                 double eta, double* circumference);
 
+/* Rotors of the model the queries address (a rotorcraft model's), 1-based (docs/rotor.md). */
+airshape_status airshape_rotor_count(airshape_configuration* configuration, int* count);
+airshape_status airshape_rotor_uid(airshape_configuration* configuration, int rotor, char** uid);
+airshape_status airshape_rotor_blade_count(airshape_configuration* configuration, int rotor, int* count);
+airshape_status airshape_rotor_radius(airshape_configuration* configuration, int rotor, double* radius);
+airshape_status airshape_rotor_reference_area(airshape_configuration* configuration, int rotor, double* area);
+airshape_status airshape_rotor_total_blade_planform_area(airshape_configuration* configuration, int rotor,
+                                                         double* area);
+airshape_status airshape_rotor_solidity(airshape_configuration* configuration, int rotor, double* solidity);
+airshape_status airshape_rotor_tip_speed(airshape_configuration* configuration, int rotor, double* speed);
+airshape_status airshape_rotor_volume(airshape_configuration* configuration, int rotor, double* volume);
+airshape_status airshape_rotor_surface_area(airshape_configuration* configuration, int rotor, double* area);
+
 /* Any component: the tight box of one (by uID), or of everything with mirrored halves (uid NULL). */
 airshape_status airshape_bounding_box(airshape_configuration* configuration, const char* uid, double min[3],
                                       double max[3]);

@@ -423,6 +423,36 @@ airshape_status airshape_segment_to_component_segment(airshape_configuration* c,
   });
 }
 
+airshape_status airshape_rotor_count(airshape_configuration* c, int* result) {
+  return count(c, "rotor_count", Json::object(), result);
+}
+airshape_status airshape_rotor_uid(airshape_configuration* c, int rotor, char** uid) {
+  return text(c, "rotor_uid", {{"rotor", rotor}}, uid);
+}
+airshape_status airshape_rotor_blade_count(airshape_configuration* c, int rotor, int* result) {
+  return count(c, "rotor_blade_count", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_radius(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_radius", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_reference_area(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_reference_area", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_total_blade_planform_area(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_total_blade_planform_area", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_solidity(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_solidity", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_tip_speed(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_tip_speed", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_volume(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_volume", {{"rotor", rotor}}, result);
+}
+airshape_status airshape_rotor_surface_area(airshape_configuration* c, int rotor, double* result) {
+  return number(c, "rotor_surface_area", {{"rotor", rotor}}, result);
+}
 airshape_status airshape_fuselage_count(airshape_configuration* c, int* result) {
   return count(c, "fuselage_count", Json::object(), result);
 }

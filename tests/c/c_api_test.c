@@ -22,6 +22,7 @@ static int failures = 0;
 static const char* airliner;
 static const char* with_devices;
 static const char* with_structure;
+static const char* rotorcraft;
 
 /* The number a generic query answers. */
 static double queried(airshape_configuration* c, const char* query) {
@@ -246,11 +247,37 @@ static void structure_components(const char* folder) {
   airshape_close(c);
 }
 
+/* The two-bladed rotor of rectangular blades (chord 0.3, from 0.5 m to 4.5 m off the hub, 300 rpm):
+ * its figures in closed form. */
+static void rotors(void) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(rotorcraft, &c) == AIRSHAPE_OK);
+  int count = 0;
+  char* uid = NULL;
+  double radius = NAN, planform = NAN, solidity = NAN, tip = NAN, volume = NAN;
+  CHECK(airshape_rotor_count(c, &count) == AIRSHAPE_OK && count == 3);
+  CHECK(airshape_rotor_uid(c, 1, &uid) == AIRSHAPE_OK && strcmp(uid, "Main") == 0);
+  airshape_free(uid);
+  CHECK(airshape_rotor_blade_count(c, 1, &count) == AIRSHAPE_OK && count == 2);
+  CHECK(airshape_rotor_radius(c, 1, &radius) == AIRSHAPE_OK && fabs(radius - hypot(0.075, 4.5)) < 1e-12);
+  CHECK(airshape_rotor_total_blade_planform_area(c, 1, &planform) == AIRSHAPE_OK && fabs(planform - 2.4) < 1e-12);
+  CHECK(airshape_rotor_solidity(c, 1, &solidity) == AIRSHAPE_OK &&
+        fabs(solidity - 2.4 / (M_PI * radius * radius)) < 1e-12);
+  CHECK(airshape_rotor_tip_speed(c, 1, &tip) == AIRSHAPE_OK && fabs(tip - 10 * M_PI * radius) < 1e-9);
+  CHECK(airshape_rotor_volume(c, 1, &volume) == AIRSHAPE_OK && fabs(volume - 0.036) < 1e-7);
+  CHECK(airshape_rotor_radius(c, 3, &radius) == AIRSHAPE_INVALID_MODEL);
+  CHECK(strstr(airshape_last_error(), "rotorBladeUID") != NULL);
+  airshape_close(c);
+}
+
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    fprintf(stderr, "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER WING_WITH_DEVICES.xml WING_WITH_STRUCTURE.xml\n");
+  if (argc != 6) {
+    fprintf(stderr,
+            "usage: c_api_test AIRLINER.xml WRITABLE_FOLDER WING_WITH_DEVICES.xml WING_WITH_STRUCTURE.xml "
+            "ROTORCRAFT.xml\n");
     return 2;
   }
+  rotorcraft = argv[5];
   with_structure = argv[4];
   airliner = argv[1];
   with_devices = argv[3];
@@ -260,6 +287,7 @@ int main(int argc, char** argv) {
   handles_work_from_several_threads();
   control_devices(argv[2]);
   structure_components(argv[2]);
+  rotors();
   if (failures == 0) printf("c_api_test: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

@@ -1,6 +1,7 @@
 """The Python module `airshape`: opening, pythonic wings and fuselages, vectorised points,
 editing with incremental rebuilds, saving, exporting, errors, threads."""
 import json
+import math
 import os
 import subprocess
 import sys
@@ -228,3 +229,19 @@ def test_structure_of_a_component_segment(tmp_path):
     model = tmp_path / "wing_box.brep"
     config.export(str(model), structure=True)
     assert model.stat().st_size > web.stat().st_size
+
+
+def test_rotors_of_a_rotorcraft():
+    # Rectangular blades, chord 0.3, from 0.5 m to 4.5 m off the hub (tests/cli/test_rotor.py).
+    config = airshape.Configuration.open(os.path.join(SOURCE, "tests", "data", "rotorcraft-two-blades.xml"))
+    assert [rotor.uid for rotor in config.rotors] == ["Main", "Clockwise", "Orphan"]
+    main = config.rotors["Main"]
+    assert main.type == "rotor" and main.blade_count == 2
+    radius = math.hypot(0.3 / 4, 4.5)
+    assert main.radius == pytest.approx(radius, rel=1e-9)
+    assert main.solidity == pytest.approx(main.total_blade_planform_area / (math.pi * radius ** 2), rel=1e-12)
+    assert main.tip_speed == pytest.approx(10 * math.pi * radius, rel=1e-9)
+    assert main.volume == pytest.approx(2 * 0.05 * 0.09 * 4, rel=1e-6)
+    assert isinstance(config.component("Clockwise"), airshape.Rotor)
+    with pytest.raises(airshape.ModelError, match="rotorBladeUID"):
+        config.rotors["Orphan"].radius

@@ -21,7 +21,7 @@ from . import _airshape
 from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetError, PluginError,
                      WriteError)
 
-__all__ = ["Configuration", "Wing", "Fuselage", "ControlSurface", "Component", "ComponentSegment", "Node", "NodeList", "Error", "FileError", "ModelError",
+__all__ = ["Configuration", "Wing", "Fuselage", "ControlSurface", "Component", "ComponentSegment", "Rotor", "Node", "NodeList", "Error", "FileError", "ModelError",
            "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError"]
 
 Number = Union[int, float]
@@ -319,8 +319,43 @@ class ComponentSegment(Component):
         return self._children_of_type("wing_cell")
 
 
+class Rotor(Component):
+    """A rotor of a rotorcraft: its attached blades as one shape, and its figures
+    (QUERY-components §5, docs/rotor.md)."""
+
+    def _figure(self, what: str) -> Any:
+        return self._config.query(f"rotor_{what}", rotor=self.uid)
+
+    @property
+    def blade_count(self) -> int:
+        return self._figure("blade_count")
+
+    @property
+    def radius(self) -> float:
+        return self._figure("radius")
+
+    @property
+    def reference_area(self) -> float:
+        """pi radius^2"""
+        return self._figure("reference_area")
+
+    @property
+    def total_blade_planform_area(self) -> float:
+        return self._figure("total_blade_planform_area")
+
+    @property
+    def solidity(self) -> float:
+        return self._figure("solidity")
+
+    @property
+    def tip_speed(self) -> float:
+        """In m/s; negative for a negative rotation speed, 0 without one."""
+        return self._figure("tip_speed")
+
+
 def _component(config: "Configuration", uid: str, kind: str) -> Component:
-    return ComponentSegment(config, uid) if kind == "wing_component_segment" else Component(config, uid)
+    classes = {"wing_component_segment": ComponentSegment, "rotor": Rotor}
+    return classes.get(kind, Component)(config, uid)
 
 
 class ControlSurface:
@@ -420,7 +455,7 @@ class Fuselage(_Component):
 
 
 class _Components(Sequence):
-    """Wings or fuselages, by 0-based index or by uID."""
+    """Wings, fuselages or rotors, by 0-based index or by uID."""
 
     def __init__(self, config: "Configuration", kind: str, cls: type) -> None:
         self._config, self._kind, self._cls = config, kind, cls
@@ -470,6 +505,11 @@ class Configuration:
     @property
     def fuselages(self) -> _Components:
         return _Components(self, "fuselage", Fuselage)
+
+    @property
+    def rotors(self) -> _Components:
+        """The rotors of the model the queries address (a rotorcraft model's)."""
+        return _Components(self, "rotor", Rotor)
 
     def component(self, uid: str) -> Component:
         """Any component by uID (spars, ribs, cells, devices, segments, ...)."""

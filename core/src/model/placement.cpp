@@ -19,7 +19,7 @@ double coordinate(const std::optional<double>& value, const std::string& xpath, 
   return value ? finite(*value, xpath) : absent;
 }
 
-/// The own transformation and parentUID of a wing, fuselage or rotor blade of any model.
+/// The own transformation and parentUID of a wing, fuselage, rotor blade or rotor of any model.
 struct Placed {
   const schema::TransformationType* transformation = nullptr;
   std::string parentUid;
@@ -44,6 +44,9 @@ bool findIn(const Model& model, const std::string& uid, Placed& found) {
     if (model.rotorBlades)
       for (const auto& blade : model.rotorBlades->rotorBlade)
         if (visit(blade)) return true;
+    if (model.rotors)
+      for (const auto& rotor : model.rotors->rotor)
+        if (visit(rotor)) return true;
   }
   return false;
 }

@@ -9,6 +9,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/model/placement.h"
+#include "airshape/model/primary_model.h"
 #include "component_segment.h"
 #include "wing_geometry.h"
 #include "wing_lookup.h"
@@ -25,6 +26,12 @@ Handle(Geom_BSplineCurve) placedSide(const SegmentEnd& end, bool upper) {
   Handle(Geom_BSplineCurve) placed = Handle(Geom_BSplineCurve)::DownCast(side->Copy());
   for (int i = 1; i <= placed->NbPoles(); ++i) placed->SetPole(i, model::apply(end.transform, placed->Pole(i)));
   return placed;
+}
+
+/// The wing or rotor blade of this uID; throws Error when none has it.
+const schema::WingType& wingNamed(const Configuration& configuration, const std::string& uid) {
+  const model::ModelComponents& model = model::modelHolding(configuration, uid);
+  return model::findByUid(configuration, model, model.wings, uid, "wing");
 }
 
 gp_Vec applyLinear(const model::Transform& transform, const gp_Vec& v) {
@@ -93,6 +100,26 @@ class WingServicesOfThisPlugin final : public WingServices {
     }
     throw Error(ErrorCode::InvalidModel, "referenceUID '" + referenceUid + "' names neither component segment '" +
                                              componentSegmentUid + "' nor a segment of its wing");
+  }
+
+  std::vector<std::string> segmentUids(const Configuration& configuration, const std::string& wingUid) const override {
+    return WingGeometry::of(configuration, wingNamed(configuration, wingUid))->segmentUids();
+  }
+
+  gp_Pnt segmentPoint(const Configuration& configuration, const std::string& wingUid, std::size_t segment, double eta,
+                      double xsi, Surface surface) const override {
+    const auto geometry = WingGeometry::of(configuration, wingNamed(configuration, wingUid));
+    if (segment >= geometry->segments().size())
+      throw Error(ErrorCode::InvalidArgument, "wing '" + wingUid + "' has no segment " + std::to_string(segment + 1));
+    switch (surface) {
+      case Surface::Upper:
+        return geometry->upperPoint(segment, eta, xsi);
+      case Surface::Lower:
+        return geometry->lowerPoint(segment, eta, xsi);
+      case Surface::Chord:
+        break;
+    }
+    return geometry->chordPoint(segment, eta, xsi);
   }
 
   std::vector<std::string> componentSegmentSegmentUids(const Configuration& configuration,

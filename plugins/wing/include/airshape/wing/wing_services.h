@@ -40,6 +40,16 @@ class WingServices {
   virtual gp_Pnt pointRelativeTo(const Configuration& configuration, const std::string& componentSegmentUid,
                                  const std::string& referenceUid, double eta, double xsi, Surface surface) const = 0;
 
+  /// The segments of a wing or rotor blade by uID, in chain order.
+  virtual std::vector<std::string> segmentUids(const Configuration& configuration,
+                                               const std::string& wingUid) const = 0;
+
+  /// The point at segment coordinates (eta, xsi), both in [0, 1], of the segment at `segment`
+  /// (0-based, chain order) of a wing or rotor blade, on a surface, in the global frame (a
+  /// rotor blade's own frame: its transformation, no rotor).
+  virtual gp_Pnt segmentPoint(const Configuration& configuration, const std::string& wingUid, std::size_t segment,
+                              double eta, double xsi, Surface surface) const = 0;
+
   /// The wing segments a component segment runs through, from its inner to its outer end.
   virtual std::vector<std::string> componentSegmentSegmentUids(const Configuration& configuration,
                                                                const std::string& componentSegmentUid) const = 0;
@@ -81,6 +91,6 @@ class WingServices {
 };
 
 /// The name the wing plugin offers WingServices under; the number is the interface's version.
-inline constexpr const char* kWingServices = "airshape.wing.WingServices/4";
+inline constexpr const char* kWingServices = "airshape.wing.WingServices/5";
 
 }  // namespace airshape::wing
