@@ -19,7 +19,12 @@ double coordinate(const std::optional<double>& value, const std::string& xpath, 
   return value ? finite(*value, xpath) : absent;
 }
 
-/// The own transformation and parentUID of a wing, fuselage, rotor blade or rotor of any model.
+/// The parentUID of a component that may have one (optional in the schema) or must (required).
+std::string parentOf(const std::optional<std::string>& parent) { return parent.value_or(""); }
+std::string parentOf(const std::string& parent) { return parent; }
+
+/// The own transformation and parentUID of a wing, fuselage, rotor blade, rotor, engine
+/// placement or engine pylon of any model.
 struct Placed {
   const schema::TransformationType* transformation = nullptr;
   std::string parentUid;
@@ -30,7 +35,7 @@ bool findIn(const Model& model, const std::string& uid, Placed& found) {
   auto visit = [&](const auto& component) {
     if (component.uID != uid) return false;
     found.transformation = component.transformation.get();
-    found.parentUid = component.parentUID.value_or("");
+    found.parentUid = parentOf(component.parentUID);
     return true;
   };
   if (model.wings)
@@ -39,6 +44,14 @@ bool findIn(const Model& model, const std::string& uid, Placed& found) {
   if (model.fuselages)
     for (const auto& fuselage : model.fuselages->fuselage)
       if (visit(fuselage)) return true;
+  if (model.engines)
+    for (const auto& engine : model.engines->engine)
+      if (visit(engine)) return true;
+  if constexpr (std::is_same_v<Model, schema::AircraftModelType>) {
+    if (model.enginePylons)
+      for (const auto& pylon : model.enginePylons->enginePylon)
+        if (visit(pylon)) return true;
+  }
   // Rotor blades count as wings of a rotorcraft model (primary_model.h).
   if constexpr (std::is_same_v<Model, schema::RotorcraftModelType>) {
     if (model.rotorBlades)

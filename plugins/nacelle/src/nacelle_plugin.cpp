@@ -1,6 +1,10 @@
-// The nacelle plugin: engines placed on the aircraft (with their nacelles) and pylons.
-// It registers its node types; no builder exists yet.
+// The nacelle plugin: engines placed on the aircraft (with their nacelles) and engine pylons.
+// It builds on the wing plugin's public interface (airshape/wing/wing_services.h) for the
+// pylons' airfoils. Pylons and their segments are built; engine nacelles wait for their builder.
+#include "airshape/configuration.h"
 #include "airshape/plugin/basic_plugin.h"
+#include "airshape/wing/wing_services.h"
+#include "pylon_loft.h"
 
 namespace airshape::nacelle {
 namespace {
@@ -8,8 +12,25 @@ namespace {
 class NacellePlugin final : public plugin::BasicPlugin {
  public:
   NacellePlugin()
-      : BasicPlugin("nacelle", "0.1.0", "engine nacelles and pylons (no builder yet)",
-                    {{"engine", ""}, {"enginePylon", ""}, {"pylonSegment", ""}}) {}
+      : BasicPlugin("nacelle", "0.2.0", "engine pylons and their segments (engine nacelles: no builder yet)",
+                    {{"engine", ""}, {"enginePylon", ""}, {"pylonSegment", ""}}, {{"wing", "0.1.0", "1.0.0"}}) {}
+
+  void useServices(const plugin::ServiceRegistry& services) override {
+    wing_ = services.find<wing::WingServices>(wing::kWingServices);
+  }
+
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    const std::shared_ptr<const wing::WingServices> wing = wing_;
+    shapes.add("enginePylon", [wing](const Configuration& c, const std::string& uid) {
+      return PylonLoft::of(c, *wing, uid)->solid();
+    });
+    shapes.add("pylonSegment", [wing](const Configuration& c, const std::string& uid) {
+      return PylonLoft::of(c, *wing, pylonHoldingSegment(c, uid))->segmentSolid(uid);
+    });
+  }
+
+ private:
+  std::shared_ptr<const wing::WingServices> wing_;
 };
 
 }  // namespace

@@ -195,7 +195,11 @@ class WingServicesOfThisPlugin final : public WingServices {
   TopoDS_Wire airfoilWire(const Configuration& configuration, const std::string& airfoilUid) const override {
     const WingProfile profile = WingProfile::fromDefinition(airfoilDefinition(configuration, airfoilUid));
     BRepBuilderAPI_MakeWire wire;
-    const std::vector<Handle(Geom_BSplineCurve)> outline = profile.outline();
+    // The lower side from the trailing edge to the leading edge, then the upper side: the
+    // edges a wing-like loft skins one by one.
+    Handle(Geom_BSplineCurve) lower = Handle(Geom_BSplineCurve)::DownCast(profile.lowerCurve()->Copy());
+    lower->Reverse();
+    const std::vector<Handle(Geom_BSplineCurve)> outline = {lower, profile.upperCurve()};
     for (const auto& curve : outline) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
     const gp_Pnt start = outline.front()->StartPoint(), end = outline.back()->EndPoint();
     if (start.Distance(end) > 1e-12) wire.Add(BRepBuilderAPI_MakeEdge(geometry::straightLine(end, start)).Edge());

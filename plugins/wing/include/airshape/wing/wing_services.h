@@ -86,7 +86,8 @@ class WingServices {
                                     Surface surface) const = 0;
 
   /// A wing airfoil by uID as one closed wire in profile coordinates (x along the chord,
-  /// z up): its outline, closed by a straight trailing edge where it is blunt.
+  /// z up): its lower side from the trailing edge to the leading edge, its upper side on to
+  /// the trailing edge, and a straight trailing edge where it is blunt.
   virtual TopoDS_Wire airfoilWire(const Configuration& configuration, const std::string& airfoilUid) const = 0;
 };
 
