@@ -1,10 +1,14 @@
 #include "airshape/named_shape.h"
 
+#include <cmath>
+
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_GTrsf.hxx>
 #include <gp_Trsf.hxx>
 
 #include "airshape/geometry/brep_building.h"
@@ -43,6 +47,32 @@ NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transfo
   // Transformed copies: a shape moved by a location only loses its face names on the way
   // through a later copy (exports copy what they mesh).
   BRepBuilderAPI_Transform transform(shape.shape, transformation, true);
+  NamedShape transformed{transform.Shape(), {}};
+  for (const auto& [name, face] : shape.faces)
+    transformed.faces.emplace_back(name + suffix, TopoDS::Face(transform.ModifiedShape(face)));
+  return transformed;
+}
+
+NamedShape transformedNamedShape(const NamedShape& shape, const Eigen::Affine3d& transformation,
+                                 const std::string& suffix) {
+  const Eigen::Matrix3d linear = transformation.linear();
+  const Eigen::Vector3d move = transformation.translation();
+  const double scale = std::cbrt(linear.determinant());
+  const bool similarity =
+      scale != 0.0 &&
+      (linear.transpose() * linear - scale * scale * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-12;
+  if (similarity) {
+    gp_Trsf trsf;
+    trsf.SetValues(linear(0, 0), linear(0, 1), linear(0, 2), move.x(), linear(1, 0), linear(1, 1), linear(1, 2),
+                   move.y(), linear(2, 0), linear(2, 1), linear(2, 2), move.z());
+    return transformedNamedShape(shape, trsf, suffix);
+  }
+  gp_GTrsf gtrsf;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) gtrsf.SetValue(r + 1, c + 1, linear(r, c));
+    gtrsf.SetValue(r + 1, 4, move(r));
+  }
+  BRepBuilderAPI_GTransform transform(shape.shape, gtrsf, true);
   NamedShape transformed{transform.Shape(), {}};
   for (const auto& [name, face] : shape.faces)
     transformed.faces.emplace_back(name + suffix, TopoDS::Face(transform.ModifiedShape(face)));

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
@@ -32,6 +33,12 @@ NamedShape namedBooleanResult(BRepAlgoAPI_BuilderAlgo& operation, const std::vec
 /// A transformed copy of a named shape (moved or mirrored by `transformation`), each face
 /// named as before plus `suffix`.
 NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transformation,
+                                 const std::string& suffix = "");
+
+/// The same for any affine map (CPACS transformations scale non-uniformly): moved rigidly
+/// (with a mirror or a uniform scale) where the map is one, else through its matrix, the
+/// faces keeping their names either way.
+NamedShape transformedNamedShape(const NamedShape& shape, const Eigen::Affine3d& transformation,
                                  const std::string& suffix = "");
 
 }  // namespace airshape

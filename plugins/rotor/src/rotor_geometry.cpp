@@ -3,12 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <BRepBuilderAPI_GTransform.hxx>
 #include <BRep_Builder.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <gp_GTrsf.hxx>
-#include <gp_Trsf.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -20,33 +16,6 @@ namespace {
 using Surface = wing::WingServices::Surface;
 
 Eigen::Vector3d vectorOf(const gp_Pnt& p) { return Eigen::Vector3d(p.X(), p.Y(), p.Z()); }
-
-/// A blade's named shape moved by an affine map: rigidly (with a mirror) where the map is one,
-/// else through its matrix (a scaled rotor), keeping the face names either way.
-NamedShape moved(const NamedShape& blade, const model::Transform& map, const std::string& suffix) {
-  const Eigen::Matrix3d linear = map.linear();
-  const double scale = std::cbrt(linear.determinant());
-  const bool rigid =
-      scale != 0.0 &&
-      (linear.transpose() * linear - scale * scale * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-12;
-  if (rigid) {
-    gp_Trsf trsf;
-    trsf.SetValues(linear(0, 0), linear(0, 1), linear(0, 2), map.translation().x(), linear(1, 0), linear(1, 1),
-                   linear(1, 2), map.translation().y(), linear(2, 0), linear(2, 1), linear(2, 2),
-                   map.translation().z());
-    return transformedNamedShape(blade, trsf, suffix);
-  }
-  gp_GTrsf gtrsf;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) gtrsf.SetValue(r + 1, c + 1, linear(r, c));
-    gtrsf.SetValue(r + 1, 4, map.translation()(r));
-  }
-  BRepBuilderAPI_GTransform transform(blade.shape, gtrsf, true);
-  NamedShape result{transform.Shape(), {}};
-  for (const auto& [name, face] : blade.faces)
-    result.faces.emplace_back(name + suffix, TopoDS::Face(transform.ModifiedShape(face)));
-  return result;
-}
 
 }  // namespace
 
@@ -134,8 +103,8 @@ NamedShape RotorGeometry::shape() const {
     if (attachment.azimuths().empty()) continue;
     const NamedShape& blade = configuration_.shapes().namedShapeOf(configuration_, attachment.bladeUid());
     for (const double azimuth : attachment.azimuths()) {
-      const NamedShape placed =
-          moved(blade, attachment.bladeTransform(azimuth, {}), " (blade " + std::to_string(++index) + ")");
+      const NamedShape placed = transformedNamedShape(blade, attachment.bladeTransform(azimuth, {}),
+                                                      " (blade " + std::to_string(++index) + ")");
       builder.Add(compound, placed.shape);
       result.faces.insert(result.faces.end(), placed.faces.begin(), placed.faces.end());
     }
