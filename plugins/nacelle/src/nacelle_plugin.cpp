@@ -1,9 +1,10 @@
 // The nacelle plugin: engines placed on the aircraft (with their nacelles) and engine pylons.
 // It builds on the wing plugin's public interface (airshape/wing/wing_services.h) for the
-// pylons' airfoils. Pylons and their segments are built; engine nacelles wait for their builder.
+// pylons' airfoils. Pylons, their segments and nacelles of one-section cowls are built.
 #include "airshape/configuration.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/wing/wing_services.h"
+#include "engine_nacelle.h"
 #include "pylon_loft.h"
 
 namespace airshape::nacelle {
@@ -12,7 +13,7 @@ namespace {
 class NacellePlugin final : public plugin::BasicPlugin {
  public:
   NacellePlugin()
-      : BasicPlugin("nacelle", "0.2.0", "engine pylons and their segments (engine nacelles: no builder yet)",
+      : BasicPlugin("nacelle", "0.2.0", "engine nacelles (cowls of one section) and pylons with their segments",
                     {{"engine", ""}, {"enginePylon", ""}, {"pylonSegment", ""}}, {{"wing", "0.1.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
@@ -21,6 +22,7 @@ class NacellePlugin final : public plugin::BasicPlugin {
 
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     const std::shared_ptr<const wing::WingServices> wing = wing_;
+    shapes.add("engine", [](const Configuration& c, const std::string& uid) { return engineNacelle(c, uid); });
     shapes.add("enginePylon", [wing](const Configuration& c, const std::string& uid) {
       return PylonLoft::of(c, *wing, uid)->solid();
     });
