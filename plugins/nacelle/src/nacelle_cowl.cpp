@@ -11,6 +11,8 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "cowl_loft.h"
+#include "cowl_parts.h"
 #include "nacelle_profile.h"
 
 namespace airshape::nacelle {
@@ -19,26 +21,6 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 constexpr double kSamePoint = 1e-9;
-
-Handle(Geom_BSplineCurve) placed(const Handle(Geom_BSplineCurve) & curve, const model::Transform& transform) {
-  Handle(Geom_BSplineCurve) copy = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
-  for (int i = 1; i <= copy->NbPoles(); ++i) copy->SetPole(i, model::apply(transform, copy->Pole(i)));
-  return copy;
-}
-
-/// A curve coordinate of the range [−1, 0] as a share of arc length from the curve's start.
-double lengthShare(double zeta, const std::string& where) {
-  if (zeta < -1.0 || zeta > 0.0)
-    throw Error(ErrorCode::InvalidModel, "zeta " + std::to_string(zeta) + " is outside [-1, 0]", {}, where);
-  return zeta + 1.0;
-}
-
-const schema::NacelleSectionType& sectionNamed(const schema::NacelleCowlType& cowl, const std::string& uid,
-                                               const std::string& where) {
-  for (const auto& section : cowl.sections->section)
-    if (section.uID == uid) return section;
-  throw Error(ErrorCode::InvalidModel, "'" + uid + "' names no section of this cowl", {}, where);
-}
 
 /// Adds a curve to the wire, and the straight line to its start from the wire's end where
 /// they differ.
@@ -106,46 +88,22 @@ TopoDS_Shape revolved(const TopoDS_Wire& wire, const std::string& where) {
 TopoDS_Shape cowlSolid(const Configuration& configuration, const schema::NacelleCowlType& cowl) {
   if (!cowl.sections || cowl.sections->section.empty())
     throw Error(ErrorCode::InvalidModel, "the cowl has no sections", {}, cowl.xpath);
-  if (cowl.sections->section.size() > 1)
-    throw Error(ErrorCode::NotImplemented,
-                "cowls of " + std::to_string(cowl.sections->section.size()) +
-                    " sections (lofted around the engine along guide curves) are not built yet",
-                {}, cowl.xpath + "/sections");
-  if (!cowl.rotationCurve) throw Error(ErrorCode::InvalidModel, "the cowl has no rotation curve", {}, cowl.xpath);
-  const schema::NacelleSectionType& section = cowl.sections->section[0];
-  const schema::RotationCurveType& rotation = *cowl.rotationCurve;
-  const std::string rotationPath = rotation.xpath;
-
-  // The section's lower side without its blending part: the lower side runs from the trailing
-  // edge, zeta −1, to the leading edge, zeta 0 (arc length, placed); it is kept up to
-  // startZetaBlending and from endZetaBlending on.
-  const model::Transform placement = sectionTransform(section);
-  const NacelleProfile profile =
-      NacelleProfile::named(configuration, section.profileUID, false, section.xpath + "/profileUID");
-  Handle(Geom_BSplineCurve) lower = placed(profile.lower(), placement);
+  if (cowl.sections->section.size() > 1) return loftedCowl(configuration, cowl);
+  const schema::RotationCurveType* rotation = cowl.rotationCurve.get();
+  Handle(Geom_BSplineCurve) inner = rotationPiece(configuration, cowl);
+  // The lower side is kept up to startZetaBlending and from endZetaBlending on (arc length, placed).
+  const PlacedProfile profile = placedProfile(configuration, cowl.sections->section[0]);
+  const Handle(Geom_BSplineCurve)& lower = profile.lower;
   const double blendStart =
-      parameterAtLengthShare(lower, lengthShare(rotation.startZetaBlending, rotationPath + "/startZetaBlending"));
+      parameterAtLengthShare(lower, lengthShare(rotation->startZetaBlending, rotation->xpath + "/startZetaBlending"));
   const double blendEnd =
-      parameterAtLengthShare(lower, lengthShare(rotation.endZetaBlending, rotationPath + "/endZetaBlending"));
-
-  // The rotation curve between startZeta and endZeta, placed like its reference section. Its
-  // curve coordinate runs as a lower side's: −1 at its last point, 0 at its first (arc length in
-  // its own plane), so that startZeta faces startZetaBlending.
-  const NacelleProfile curve =
-      NacelleProfile::named(configuration, rotation.curveProfileUID, true, rotationPath + "/curveProfileUID");
-  Handle(Geom_BSplineCurve) backwards = Handle(Geom_BSplineCurve)::DownCast(curve.whole()->Copy());
-  backwards->Reverse();
-  const double from = parameterAtLengthShare(backwards, lengthShare(rotation.startZeta, rotationPath + "/startZeta"));
-  const double to = parameterAtLengthShare(backwards, lengthShare(rotation.endZeta, rotationPath + "/endZeta"));
-  Handle(Geom_BSplineCurve) inner =
-      placed(curvePiece(backwards, from, to),
-             sectionTransform(sectionNamed(cowl, rotation.referenceSectionUID, rotationPath + "/referenceSectionUID")));
+      parameterAtLengthShare(lower, lengthShare(rotation->endZetaBlending, rotation->xpath + "/endZetaBlending"));
 
   // Closed in the half plane from the leading edge: the upper side, the trailing edge, the lower
   // side to startZetaBlending, the inner curve from its end nearer that point (joined by a
   // straight blending line), and from endZetaBlending on to the leading edge.
   ProfileWire wire;
-  wire.add(placed(profile.upper(), placement));
+  wire.add(profile.upper);
   wire.add(curvePiece(lower, lower->FirstParameter(), blendStart));
   const gp_Pnt startBlend = lower->Value(blendStart);
   if (startBlend.Distance(inner->EndPoint()) < startBlend.Distance(inner->StartPoint())) inner->Reverse();
@@ -157,7 +115,7 @@ TopoDS_Shape cowlSolid(const Configuration& configuration, const schema::Nacelle
 TopoDS_Shape centerCowlSolid(const Configuration& configuration, const schema::NacelleCenterCowlType& cowl) {
   const NacelleProfile curve = NacelleProfile::named(configuration, cowl.curveUID, true, cowl.xpath + "/curveUID");
   const Handle(Geom_BSplineCurve) shifted =
-      placed(curve.whole(), model::Transform(Eigen::Translation3d(cowl.xOffset, 0.0, 0.0)));
+      placedCurve(curve.whole(), model::Transform(Eigen::Translation3d(cowl.xOffset, 0.0, 0.0)));
   // Closed along the axis: down from the curve's end, along the axis, up to its start.
   const gp_Pnt start = shifted->StartPoint(), end = shifted->EndPoint();
   ProfileWire wire;

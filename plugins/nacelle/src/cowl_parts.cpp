@@ -1,0 +1,56 @@
+#include "cowl_parts.h"
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "nacelle_cowl.h"
+#include "nacelle_profile.h"
+
+namespace airshape::nacelle {
+
+Handle(Geom_BSplineCurve) placedCurve(const Handle(Geom_BSplineCurve) & curve, const model::Transform& transform) {
+  Handle(Geom_BSplineCurve) copy = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  for (int i = 1; i <= copy->NbPoles(); ++i) copy->SetPole(i, model::apply(transform, copy->Pole(i)));
+  return copy;
+}
+
+double lengthShare(double zeta, const std::string& where) {
+  if (zeta < -1.0 || zeta > 0.0)
+    throw Error(ErrorCode::InvalidModel, "zeta " + std::to_string(zeta) + " is outside [-1, 0]", {}, where);
+  return zeta + 1.0;
+}
+
+gp_Pnt PlacedProfile::at(double zeta) const {
+  if (zeta <= 0.0) return lower->Value(parameterAtLengthShare(lower, zeta + 1.0));
+  return upper->Value(parameterAtLengthShare(upper, zeta));
+}
+
+PlacedProfile placedProfile(const Configuration& configuration, const schema::NacelleSectionType& section) {
+  const model::Transform placement = sectionTransform(section);
+  const NacelleProfile profile =
+      NacelleProfile::named(configuration, section.profileUID, false, section.xpath + "/profileUID");
+  PlacedProfile result{placedCurve(profile.lower(), placement), placedCurve(profile.upper(), placement)};
+  if (section.transformation && section.transformation->translation)
+    result.angle = section.transformation->translation->x.value_or(0.0);
+  return result;
+}
+
+Handle(Geom_BSplineCurve) rotationPiece(const Configuration& configuration, const schema::NacelleCowlType& cowl) {
+  if (!cowl.rotationCurve) throw Error(ErrorCode::InvalidModel, "the cowl has no rotation curve", {}, cowl.xpath);
+  const schema::RotationCurveType& rotation = *cowl.rotationCurve;
+  const std::string& where = rotation.xpath;
+  const NacelleProfile curve =
+      NacelleProfile::named(configuration, rotation.curveProfileUID, true, where + "/curveProfileUID");
+  Handle(Geom_BSplineCurve) backwards = Handle(Geom_BSplineCurve)::DownCast(curve.whole()->Copy());
+  backwards->Reverse();
+  const double from = parameterAtLengthShare(backwards, lengthShare(rotation.startZeta, where + "/startZeta"));
+  const double to = parameterAtLengthShare(backwards, lengthShare(rotation.endZeta, where + "/endZeta"));
+  const schema::NacelleSectionType* reference = nullptr;
+  for (const auto& section : cowl.sections->section)
+    if (section.uID == rotation.referenceSectionUID && reference == nullptr) reference = &section;
+  if (reference == nullptr)
+    throw Error(ErrorCode::InvalidModel, "'" + rotation.referenceSectionUID + "' names no section of this cowl", {},
+                where + "/referenceSectionUID");
+  return placedCurve(curvePiece(backwards, from, to), sectionTransform(*reference));
+}
+
+}  // namespace airshape::nacelle
