@@ -506,6 +506,20 @@ class Configuration:
     def fuselages(self) -> _Components:
         return _Components(self, "fuselage", Fuselage)
 
+    def _components_of_type(self, kind: str) -> List[Component]:
+        return [_component(self, entry["uid"], entry["type"]) for entry in self.query("component_list")
+                if entry["type"] == kind]
+
+    @property
+    def engines(self) -> List[Component]:
+        """The engine placements of the model, each with its nacelle as shape (docs/nacelle.md)."""
+        return self._components_of_type("engine_nacelle")
+
+    @property
+    def pylons(self) -> List[Component]:
+        """The engine pylons of the model (docs/nacelle.md)."""
+        return self._components_of_type("engine_pylon")
+
     @property
     def rotors(self) -> _Components:
         """The rotors of the model the queries address (a rotorcraft model's)."""
