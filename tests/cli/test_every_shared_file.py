@@ -21,6 +21,8 @@ KNOWN = [
     "the cell covers no skin",
     "no run of segments joins elements",
     "is not one given by eta and xsi",
+    "no shape",  # engines without nacelles, pylons without segments: nothing to build, said
+    "needs them on all four borders",  # cells mixing contour coordinates with other borders
 ]
 
 

@@ -47,7 +47,8 @@ NamedShape engineNacelle(const Configuration& configuration, const std::string& 
   if (!engine.nacelle)
     throw Error(ErrorCode::InvalidModel, "engine '" + engine.uID + "' has no nacelle: no shape", {}, engine.xpath);
   const schema::EngineNacelleType& nacelle = *engine.nacelle;
-  if (!nacelle.fanCowl) throw Error(ErrorCode::InvalidModel, "the nacelle has no fan cowl", {}, nacelle.xpath);
+  if (!nacelle.fanCowl)
+    throw Error(ErrorCode::InvalidModel, "the nacelle has no fan cowl: no shape", {}, nacelle.xpath);
   BRep_Builder builder;
   TopoDS_Compound compound;
   builder.MakeCompound(compound);

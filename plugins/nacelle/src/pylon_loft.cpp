@@ -5,6 +5,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <TopoDS.hxx>
@@ -52,8 +53,13 @@ std::vector<Handle(Geom_BSplineCurve)> placedOutline(const TopoDS_Wire& wire, co
   return curves;
 }
 
-/// The plane face an outline encloses.
+/// The plane face an outline encloses; null where the outline is a point (a section scaled to
+/// nothing: the pylon ends in a point there).
 TopoDS_Face capOf(const std::vector<Handle(Geom_BSplineCurve)>& outline, const std::string& where) {
+  Bnd_Box box;
+  for (const auto& curve : outline)
+    for (int i = 1; i <= curve->NbPoles(); ++i) box.Add(curve->Pole(i));
+  if (box.IsVoid() || box.SquareExtent() < 1e-20) return {};
   BRepBuilderAPI_MakeWire wire;
   for (const auto& curve : outline) wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
   if (!wire.IsDone()) throw Error(ErrorCode::InvalidModel, "the airfoil outline does not close", {}, where);

@@ -1,5 +1,6 @@
 #include "fuselage_wall.h"
 
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -57,6 +58,20 @@ struct BasePoint {
   std::string xpath;
 };
 
+/// A fuselage section named by `sectionUID` (as older files write fuselageSectionUID), read
+/// with a warning; none when the position has no such element.
+std::optional<std::string> olderSectionUid(const Configuration& configuration,
+                                           const schema::WallPositionType& position) {
+  try {
+    const std::string uid = configuration.value(position.xpath + "/sectionUID");
+    configuration.warnAboutGeometry(
+        {Problem::Severity::Warning, position.xpath + "/sectionUID", "sectionUID read as fuselageSectionUID"});
+    return uid;
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
 BasePoint basePointOf(const Configuration& configuration, const FuselageFrame& fuselage,
                       const schema::WallPositionType& position) {
   BasePoint base{fuselage.toGlobal(gp_Pnt(position.x.value_or(0.0), position.y, position.z)), {}, position.xpath};
@@ -79,6 +94,9 @@ BasePoint basePointOf(const Configuration& configuration, const FuselageFrame& f
   } else if (position.fuselageSectionUID) {
     where += "/fuselageSectionUID";
     base.element = fuselage.sectionFace(*position.fuselageSectionUID, where);
+  } else if (const std::optional<std::string> section = olderSectionUid(configuration, position)) {
+    where += "/sectionUID";
+    base.element = fuselage.sectionFace(*section, where);
   } else {
     throw Error(ErrorCode::InvalidModel, "the wall position gives neither x nor an element to place it on", {},
                 position.xpath);
