@@ -226,7 +226,7 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage walls, cross beams and struts are built
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 455, output[-3000:]
+    assert passed >= 456, output[-3000:]
 
 
 def two_segment_wing(tmp_path, shells):
@@ -294,3 +294,26 @@ def test_cells_bounded_by_contour_coordinates(tmp_path):
     assert below == pytest.approx(area, rel=1e-6) and below_box["max"][2] == pytest.approx(-box["min"][2], abs=1e-6)
     assert volume == 0
     assert "cell[4]" in answers[-1]["error"] and "needs them on all four borders" in answers[-1]["error"]
+
+
+def test_cells_bounded_by_ribs(tmp_path):
+    # The chordwise ribs y = 0.5, 2.5, 4.5 between spars at ξ 0.2 and 0.6 (as above); a cell from
+    # rib 1 to rib 2, from the front spar to xsi 0.6: the upper skin between ξ 0.2 and 0.6 over 2 m.
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6))
+    border = ("<positioningInnerBorder><ribDefinitionUID>Ribs</ribDefinitionUID><ribNumber>1</ribNumber>"
+              "</positioningInnerBorder><positioningOuterBorder><ribDefinitionUID>Ribs</ribDefinitionUID>"
+              "<ribNumber>2</ribNumber></positioningOuterBorder>")
+    between = (f'<cell uID="BetweenRibs"><positioningLeadingEdge><sparUID>Front</sparUID></positioningLeadingEdge>'
+               "<positioningTrailingEdge><xsi1>0.6</xsi1><xsi2>0.6</xsi2></positioningTrailingEdge>"
+               f"{border}</cell>")
+    beyond = between.replace('uID="BetweenRibs"', 'uID="Beyond"').replace("<ribNumber>2</ribNumber>",
+                                                                          "<ribNumber>7</ribNumber>")
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Ribs", 0.1, 0.9, 3) + cells(between, beyond))
+    area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "BetweenRibs"},
+                                      {"op": "bounding_box", "uid": "BetweenRibs"}))
+    assert area == pytest.approx(2.0 * skin_length(0.2, 0.6), rel=1e-6)
+    assert box["min"][1] == pytest.approx(0.5, abs=1e-6) and box["max"][1] == pytest.approx(2.5, abs=1e-6)
+    missing, = ask(path, {"op": "component_surface_area", "uid": "Beyond"})
+    assert "positioningOuterBorder" in missing["error"] and "has no plane rib 7" in missing["error"]

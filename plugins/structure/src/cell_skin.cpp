@@ -6,7 +6,10 @@
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
 #include <TopoDS.hxx>
+#include <gp_Pln.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -39,15 +42,69 @@ class CellCorners {
     if (!spanwise || !chordwise)
       throw Error(ErrorCode::InvalidModel, "the cell has no border positioning", {},
                   !spanwise ? spanwisePath : chordwisePath);
+    if (spanwise->ribDefinitionUID) return onRib(*spanwise, *chordwise, inner, spanwisePath, chordwisePath);
     const double csEta = etaAt(*spanwise, leadingEdge, spanwisePath);
     return frame_.chordPoint("", csEta, xsiAt(*chordwise, inner, csEta, chordwisePath));
   }
 
  private:
+  /// A corner on a rib border: where the rib's plane crosses the chord surface's line of the
+  /// leading (trailing) edge's xsi, or the spar's midplane line.
+  gp_Pnt onRib(const schema::CellPositioningSpanwiseType& spanwise,
+               const schema::CellPositioningChordwiseType& chordwise, bool inner, const std::string& spanwisePath,
+               const std::string& chordwisePath) const {
+    const gp_Pln rib = ribPlane(*spanwise.ribDefinitionUID, spanwise.ribNumber.value_or(1), spanwisePath);
+    auto side = [&](const gp_Pnt& p) { return gp_Vec(rib.Location(), p).Dot(gp_Vec(rib.Axis().Direction())); };
+    if (chordwise.sparUID) {
+      const Polyline spar = frame_.sparLine(sparSegmentNamed(configuration_, *chordwise.sparUID));
+      const auto share = spar.crossing(rib.Location(), gp_Vec(rib.Axis().Direction()));
+      if (!share)
+        throw Error(ErrorCode::InvalidModel, "spar '" + *chordwise.sparUID + "' does not reach the rib", {},
+                    chordwisePath);
+      return spar.at(*share);
+    }
+    if (!chordwise.xsi1 || !chordwise.xsi2)
+      throw Error(ErrorCode::InvalidModel, "the border gives neither xsi1 and xsi2 nor a spar", {}, chordwisePath);
+    const double xsi = inner ? *chordwise.xsi1 : *chordwise.xsi2;
+    double low = 0.0, high = 1.0;
+    double sideLow = side(frame_.chordPoint("", low, xsi));
+    if ((sideLow <= 0.0) == (side(frame_.chordPoint("", high, xsi)) <= 0.0))
+      throw Error(ErrorCode::InvalidModel, "the rib does not cross the cell's chordwise border", {}, spanwisePath);
+    for (int step = 0; step < 60; ++step) {
+      const double middle = 0.5 * (low + high), sideMiddle = side(frame_.chordPoint("", middle, xsi));
+      if ((sideMiddle <= 0.0) == (sideLow <= 0.0))
+        low = middle, sideLow = sideMiddle;
+      else
+        high = middle;
+    }
+    return frame_.chordPoint("", 0.5 * (low + high), xsi);
+  }
+
+  /// The plane, in the wing frame, of rib `number` of a ribs definition (its faces are plane).
+  gp_Pln ribPlane(const std::string& ribsUid, long long number, const std::string& where) const {
+    const std::string name = ribsUid + "/rib " + std::to_string(number);
+    try {
+      for (const auto& [faceName, face] : configuration_.shapes().namedShapeOf(configuration_, ribsUid).faces) {
+        if (faceName != name) continue;
+        GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face));
+        if (!planar.IsPlanar()) break;
+        const gp_Pln global = planar.Plan();
+        const gp_Pnt origin = frame_.toWing(global.Location());
+        const gp_Vec u(origin, frame_.toWing(global.Location().Translated(gp_Vec(global.XAxis().Direction()))));
+        const gp_Vec v(origin, frame_.toWing(global.Location().Translated(gp_Vec(global.YAxis().Direction()))));
+        return gp_Pln(origin, gp_Dir(u.Crossed(v)));
+      }
+    } catch (const Error& error) {
+      throw Error(error.code(), error.message(), {}, where);
+    }
+    throw Error(ErrorCode::InvalidModel, "ribs definition '" + ribsUid + "' has no plane rib " + std::to_string(number),
+                {}, where);
+  }
+
   /// The component segment eta of a border at the leading edge (eta1) or trailing edge (eta2).
   double etaAt(const schema::CellPositioningSpanwiseType& spanwise, bool leadingEdge, const std::string& where) const {
     const auto& eta = leadingEdge ? spanwise.eta1 : spanwise.eta2;
-    if (!eta) throw Error(ErrorCode::NotImplemented, "cells bounded by ribs are not built yet", {}, where);
+    if (!eta) throw Error(ErrorCode::InvalidModel, "the border gives neither eta1 and eta2 nor a rib", {}, where);
     const std::string element = where + (leadingEdge ? "/eta1" : "/eta2");
     if (const auto bare = bareNumber(element)) return *bare;
     try {

@@ -12,8 +12,9 @@ namespace airshape::structure {
 /// and trailing edge (xsi1 at the inner border, xsi2 at the outer, or where a spar's midplane
 /// line crosses the border's chord) at its inner and outer border (eta1 at the leading edge,
 /// eta2 at the trailing edge). Faces are named "<uID>/skin". Throws Error naming the CPACS path
-/// of what cannot be built (cells bounded by ribs are not built yet). A cell bounded by contour
-/// coordinates is contourCellSkin's.
+/// of what cannot be built. A border on a rib (ribDefinitionUID, ribNumber) has its corners
+/// where the rib's plane crosses the leading and trailing edge's lines on the chord surface (an
+/// xsi, or a spar's midplane line). A cell bounded by contour coordinates is contourCellSkin's.
 NamedShape cellSkin(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell);
 
 }  // namespace airshape::structure
