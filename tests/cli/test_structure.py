@@ -226,7 +226,7 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage walls, cross beams and struts are built
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 456, output[-3000:]
+    assert passed >= 460, output[-3000:]
 
 
 def two_segment_wing(tmp_path, shells):
@@ -317,3 +317,22 @@ def test_cells_bounded_by_ribs(tmp_path):
     assert box["min"][1] == pytest.approx(0.5, abs=1e-6) and box["max"][1] == pytest.approx(2.5, abs=1e-6)
     missing, = ask(path, {"op": "component_surface_area", "uid": "Beyond"})
     assert "positioningOuterBorder" in missing["error"] and "has no plane rib 7" in missing["error"]
+
+
+def test_spar_positions_on_ribs(tmp_path):
+    # The chordwise ribs y = 0.5, 2.5, 4.5 between the spars at ξ 0.2 and 0.6; a third spar from the
+    # middle of rib 1 to the middle of rib 3 (xsi 0.5 along each rib: ξ 0.4) is the plane web at
+    # ξ 0.4 from y = 0.5 to 4.5.
+    on_rib = "".join(f'<sparPosition uID="{uid}"><sparPositionRib><ribDefinitionUID>Ribs</ribDefinitionUID>'
+                     f"<ribNumber>{number}</ribNumber><xsi>0.5</xsi></sparPositionRib></sparPosition>"
+                     for uid, number in (("OnRib1", 1), ("OnRib3", 3), ("OnRib9", 9)))
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6) + on_rib)
+    segments = (segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1") +
+                segment("Middle", "OnRib1", "OnRib3") + segment("Broken", "OnRib1", "OnRib9"))
+    path = with_spars(tmp_path, positions, segments, ribs("Ribs", 0.1, 0.9, 3))
+    area, box, broken = ask(path, {"op": "component_surface_area", "uid": "Middle"},
+                            {"op": "bounding_box", "uid": "Middle"}, {"op": "component_surface_area", "uid": "Broken"})
+    assert area["ok"] == pytest.approx(4.0 * height(0.4), rel=1e-7)
+    assert box["ok"]["min"][0] == pytest.approx(1.8, abs=1e-6) and box["ok"]["min"][1] == pytest.approx(0.5, abs=1e-6)
+    assert "sparPosition[7]/sparPositionRib" in broken["error"] and "no plane rib 9" in broken["error"]

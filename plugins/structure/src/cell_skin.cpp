@@ -6,8 +6,6 @@
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
-#include <BRep_Tool.hxx>
-#include <GeomLib_IsPlanarSurface.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
@@ -16,6 +14,7 @@
 #include "contour_cell.h"
 #include "faces_inside.h"
 #include "named_faces.h"
+#include "rib_point.h"
 #include "spar_list.h"
 #include "structure_frame.h"
 
@@ -53,7 +52,8 @@ class CellCorners {
   gp_Pnt onRib(const schema::CellPositioningSpanwiseType& spanwise,
                const schema::CellPositioningChordwiseType& chordwise, bool inner, const std::string& spanwisePath,
                const std::string& chordwisePath) const {
-    const gp_Pln rib = ribPlane(*spanwise.ribDefinitionUID, spanwise.ribNumber.value_or(1), spanwisePath);
+    const gp_Pln rib =
+        ribPlane(configuration_, frame_, *spanwise.ribDefinitionUID, spanwise.ribNumber.value_or(1), spanwisePath);
     auto side = [&](const gp_Pnt& p) { return gp_Vec(rib.Location(), p).Dot(gp_Vec(rib.Axis().Direction())); };
     if (chordwise.sparUID) {
       const Polyline spar = frame_.sparLine(sparSegmentNamed(configuration_, *chordwise.sparUID));
@@ -78,27 +78,6 @@ class CellCorners {
         high = middle;
     }
     return frame_.chordPoint("", 0.5 * (low + high), xsi);
-  }
-
-  /// The plane, in the wing frame, of rib `number` of a ribs definition (its faces are plane).
-  gp_Pln ribPlane(const std::string& ribsUid, long long number, const std::string& where) const {
-    const std::string name = ribsUid + "/rib " + std::to_string(number);
-    try {
-      for (const auto& [faceName, face] : configuration_.shapes().namedShapeOf(configuration_, ribsUid).faces) {
-        if (faceName != name) continue;
-        GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face));
-        if (!planar.IsPlanar()) break;
-        const gp_Pln global = planar.Plan();
-        const gp_Pnt origin = frame_.toWing(global.Location());
-        const gp_Vec u(origin, frame_.toWing(global.Location().Translated(gp_Vec(global.XAxis().Direction()))));
-        const gp_Vec v(origin, frame_.toWing(global.Location().Translated(gp_Vec(global.YAxis().Direction()))));
-        return gp_Pln(origin, gp_Dir(u.Crossed(v)));
-      }
-    } catch (const Error& error) {
-      throw Error(error.code(), error.message(), {}, where);
-    }
-    throw Error(ErrorCode::InvalidModel, "ribs definition '" + ribsUid + "' has no plane rib " + std::to_string(number),
-                {}, where);
   }
 
   /// The component segment eta of a border at the leading edge (eta1) or trailing edge (eta2).

@@ -38,8 +38,14 @@ gp_Vec Polyline::directionAt(double share) const {
 }
 
 std::optional<double> Polyline::crossing(const gp_Pnt& origin, const gp_Vec& normal) const {
+  // An end lying on the plane up to rounding counts as on it (a line built to end on a rib).
+  const double onPlane = 1e-9 * std::max(1.0, length_) * normal.Magnitude();
+  auto side = [&](const gp_Pnt& p) {
+    const double distance = gp_Vec(origin, p).Dot(normal);
+    return std::abs(distance) <= onPlane ? 0.0 : distance;
+  };
   for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
-    const double a = gp_Vec(origin, points_[i]).Dot(normal), b = gp_Vec(origin, points_[i + 1]).Dot(normal);
+    const double a = side(points_[i]), b = side(points_[i + 1]);
     if ((a > 0.0 && b > 0.0) || (a < 0.0 && b < 0.0) || a == b) continue;
     const double t = a / (a - b);
     return (lengths_[i] + t * (lengths_[i + 1] - lengths_[i])) / length_;

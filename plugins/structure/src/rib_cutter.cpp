@@ -50,10 +50,10 @@ gp_Pnt RibCutter::pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
   if (sparPosition) {
     if (structure_.spars && structure_.spars->sparPositions)
       for (const auto& position : structure_.spars->sparPositions->sparPosition)
-        if (position.uID == *sparPosition && position.sparPositionEtaXsi)
-          return frame_.chordPoint(position.sparPositionEtaXsi->referenceUID, position.sparPositionEtaXsi->eta,
-                                   position.sparPositionEtaXsi->xsi);
-    throw Error(ErrorCode::InvalidModel, "spar position '" + *sparPosition + "' is not one given by eta and xsi", {},
+        if (position.uID == *sparPosition && (position.sparPositionEtaXsi || position.sparPositionRib))
+          return frame_.positionPoint(sparPositionOf(position));
+    throw Error(ErrorCode::InvalidModel,
+                "spar position '" + *sparPosition + "' is not one given by eta and xsi or on a rib", {},
                 where + "SparPositionUID");
   }
   throw Error(ErrorCode::InvalidModel, "the rib has no start or end point", {}, where);

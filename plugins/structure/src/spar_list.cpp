@@ -6,9 +6,7 @@
 
 namespace airshape::structure {
 
-namespace {
-
-SparPosition positionOf(const schema::SparPositionType& node) {
+SparPosition sparPositionOf(const schema::SparPositionType& node) {
   SparPosition position;
   position.uid = node.uID;
   position.xpath = node.xpath;
@@ -19,11 +17,15 @@ SparPosition positionOf(const schema::SparPositionType& node) {
   } else if (node.sparPositionRib) {
     position.kind = SparPosition::Kind::OnRib;
     position.xsi = node.sparPositionRib->xsi;
+    position.ribsUid = node.sparPositionRib->ribDefinitionUID;
+    position.ribNumber = node.sparPositionRib->ribNumber.value_or(1);
   } else {
     position.kind = SparPosition::Kind::OnCurve;
   }
   return position;
 }
+
+namespace {
 
 SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSparType& spars,
                       const schema::ComponentSegmentType& componentSegment, const schema::WingType& wing) {
@@ -37,7 +39,7 @@ SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSpa
     if (found == nullptr)
       throw Error(ErrorCode::InvalidModel, "sparPositionUID '" + uid + "' names no spar position of its spars", {},
                   node.xpath + "/sparPositionUIDs");
-    segment.positions.push_back(positionOf(*found));
+    segment.positions.push_back(sparPositionOf(*found));
   }
   return segment;
 }

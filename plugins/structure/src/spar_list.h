@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "airshape/schema/generated/cpacs_model.h"
+
 namespace airshape {
 class Configuration;
 }
@@ -17,6 +19,8 @@ struct SparPosition {
   Kind kind = Kind::EtaXsi;
   double eta = 0.0, xsi = 0.0;
   std::string referenceUid;  ///< EtaXsi: the component segment or a wing segment of its wing
+  std::string ribsUid;       ///< OnRib: the ribs definition, and the rib's number in it (from 1)
+  long long ribNumber = 1;
 };
 
 /// One spar segment: the spar positions it runs through, in order, and where it lies.
@@ -27,6 +31,9 @@ struct SparSegment {
   std::string wingUid;
   std::vector<SparPosition> positions;
 };
+
+/// A spar position as the schema gives it, read.
+SparPosition sparPositionOf(const schema::SparPositionType& node);
 
 /// The spar segment with this uID in any model. Throws Error when none has it, naming the
 /// CPACS path when one of its spar position uIDs names no spar position.

@@ -23,10 +23,12 @@ struct PlacedPosition {
   double eta = 0.0;
 };
 
-PlacedPosition placed(const Configuration& configuration, const wing::WingServices& wing, const SparSegment& spar,
-                      const SparPosition& position) {
-  if (position.kind != SparPosition::Kind::EtaXsi)
-    throw Error(ErrorCode::NotImplemented, "spar positions on ribs or curves are not built yet", {}, position.xpath);
+PlacedPosition placed(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
+                      const SparSegment& spar, const SparPosition& position) {
+  if (position.kind != SparPosition::Kind::EtaXsi) {
+    const gp_Pnt point = frame.positionPoint(position);
+    return {frame.toGlobal(point), frame.etaOf(point)};
+  }
   try {
     return {wing.pointRelativeTo(configuration, spar.componentSegmentUid, position.referenceUid, position.eta,
                                  position.xsi, Surface::Chord),
@@ -60,9 +62,9 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
   const double reach = frame.reach();
   const gp_Vec up = frame.toGlobal(gp_Vec(0, 0, 1)).Normalized();  // the wing's own z axis
   NamedFaces web;
-  PlacedPosition inner = placed(configuration, wing, spar, spar.positions.front());
+  PlacedPosition inner = placed(configuration, wing, frame, spar, spar.positions.front());
   for (std::size_t i = 1; i < spar.positions.size(); ++i) {
-    const PlacedPosition outer = placed(configuration, wing, spar, spar.positions[i]);
+    const PlacedPosition outer = placed(configuration, wing, frame, spar, spar.positions[i]);
     if (inner.point.Distance(outer.point) < 1e-9)
       throw Error(ErrorCode::InvalidModel,
                   "spar positions '" + spar.positions[i - 1].uid + "' and '" + spar.positions[i].uid + "' coincide", {},

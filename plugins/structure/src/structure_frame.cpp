@@ -8,6 +8,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "rib_point.h"
 
 namespace airshape::structure {
 
@@ -98,12 +99,23 @@ Polyline StructureFrame::midplaneLine(const gp_Pnt& from, const gp_Pnt& to) cons
   return Polyline(points);
 }
 
+gp_Pnt StructureFrame::positionPoint(const SparPosition& position) const {
+  switch (position.kind) {
+    case SparPosition::Kind::EtaXsi:
+      return chordPoint(position.referenceUid, position.eta, position.xsi);
+    case SparPosition::Kind::OnRib:
+      return pointOnRib(configuration_, *this, position.ribsUid, position.ribNumber, position.xsi,
+                        position.xpath + "/sparPositionRib");
+    case SparPosition::Kind::OnCurve:
+      break;
+  }
+  throw Error(ErrorCode::NotImplemented, "spar positions on curves are not built yet", {}, position.xpath);
+}
+
 Polyline StructureFrame::sparLine(const SparSegment& spar) const {
   std::vector<gp_Pnt> points;
   for (const SparPosition& position : spar.positions) {
-    if (position.kind != SparPosition::Kind::EtaXsi)
-      throw Error(ErrorCode::NotImplemented, "spar positions on ribs or curves are not built yet", {}, position.xpath);
-    points.push_back(chordPoint(position.referenceUid, position.eta, position.xsi));
+    points.push_back(positionPoint(position));
   }
   if (points.size() < 2)
     throw Error(ErrorCode::InvalidModel, "a spar segment needs at least two spar positions", {},

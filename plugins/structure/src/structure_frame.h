@@ -44,6 +44,8 @@ class StructureFrame {
   Polyline midplaneLine(const gp_Pnt& from, const gp_Pnt& to) const;
   /// The midplane line through a spar segment's positions, in the wing frame.
   Polyline sparLine(const SparSegment& spar) const;
+  /// A spar position's point on the chord surface (wing frame): by eta and xsi, or on a rib.
+  gp_Pnt positionPoint(const SparPosition& position) const;
 
   /// The component segment's solid (global frame) and the size of its box (a length that
   /// surely reaches across it).

@@ -1,0 +1,61 @@
+#include "rib_point.h"
+
+#include <BRep_Tool.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "rib_cutter.h"
+#include "rib_list.h"
+#include "spar_list.h"
+
+namespace airshape::structure {
+
+gp_Pln ribPlane(const Configuration& configuration, const StructureFrame& frame, const std::string& ribsUid,
+                long long number, const std::string& where) {
+  const std::string name = ribsUid + "/rib " + std::to_string(number);
+  try {
+    for (const auto& [faceName, face] : configuration.shapes().namedShapeOf(configuration, ribsUid).faces) {
+      if (faceName != name) continue;
+      GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face));
+      if (!planar.IsPlanar()) break;
+      const gp_Pln global = planar.Plan();
+      const gp_Pnt origin = frame.toWing(global.Location());
+      const gp_Vec u(origin, frame.toWing(global.Location().Translated(gp_Vec(global.XAxis().Direction()))));
+      const gp_Vec v(origin, frame.toWing(global.Location().Translated(gp_Vec(global.YAxis().Direction()))));
+      return gp_Pln(origin, gp_Dir(u.Crossed(v)));
+    }
+  } catch (const Error& error) {
+    throw Error(error.code(), error.message(), {}, where);
+  }
+  throw Error(ErrorCode::InvalidModel, "ribs definition '" + ribsUid + "' has no plane rib " + std::to_string(number),
+              {}, where);
+}
+
+gp_Pnt pointOnRib(const Configuration& configuration, const StructureFrame& frame, const std::string& ribsUid,
+                  long long number, double xsi, const std::string& where) {
+  const gp_Pln plane = ribPlane(configuration, frame, ribsUid, number, where);
+  const RibsDefinition ribs = ribsDefinitionNamed(configuration, ribsUid);
+  const RibCutter cutter(configuration, frame, *ribs.structure);
+  const std::string* start = nullptr;
+  const std::string* end = nullptr;
+  if (ribs.node->ribsPositioning) {
+    start = &ribs.node->ribsPositioning->ribStart;
+    end = &ribs.node->ribsPositioning->ribEnd;
+  } else if (ribs.node->ribExplicitPositioning) {
+    start = &ribs.node->ribExplicitPositioning->ribStart;
+    end = &ribs.node->ribExplicitPositioning->ribEnd;
+  } else {
+    throw Error(ErrorCode::InvalidModel, "ribs definition '" + ribsUid + "' places no rib", {}, where);
+  }
+  auto crossing = [&](const std::string& line) {
+    const Polyline border = cutter.lineNamed(line, where);
+    const auto share = border.crossing(plane.Location(), gp_Vec(plane.Axis().Direction()));
+    if (!share) throw Error(ErrorCode::InvalidModel, "the rib does not reach its border '" + line + "'", {}, where);
+    return border.at(*share);
+  };
+  const gp_Pnt from = crossing(*start), to = crossing(*end);
+  return gp_Pnt(from.XYZ() + xsi * (to.XYZ() - from.XYZ()));
+}
+
+}  // namespace airshape::structure
