@@ -30,7 +30,7 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 /// Samples along the profile per unit of zeta, and across each sector between two sections.
-constexpr int kZetaSamples = 40;
+constexpr int kZetaSamples = 20;
 constexpr int kSectorSamples = 8;
 
 /// A point in the nacelle's cylindrical coordinates.
@@ -51,11 +51,17 @@ std::vector<double> zetasBetween(double from, double to) {
   return zetas;
 }
 
-/// The surface through a stretch of the outline (zetas) swept from section a to section b.
-TopoDS_Face sectorFace(const PlacedProfile& a, const PlacedProfile& b, double angleA, double angleB,
-                       const std::vector<double>& zetas) {
-  std::vector<Cylindrical> atA, atB;
-  for (double zeta : zetas) atA.push_back(cylindrical(a.at(zeta))), atB.push_back(cylindrical(b.at(zeta)));
+/// A section's outline at a stretch's zetas, in cylindrical coordinates.
+using Samples = std::vector<Cylindrical>;
+
+Samples sampled(const PlacedProfile& section, const std::vector<double>& zetas) {
+  Samples samples;
+  for (double zeta : zetas) samples.push_back(cylindrical(section.at(zeta)));
+  return samples;
+}
+
+/// The surface through a stretch of the outline swept from section a (samples atA) to section b.
+TopoDS_Face sectorFace(const Samples& atA, const Samples& atB, double angleA, double angleB) {
   std::vector<std::vector<gp_Pnt>> grid;
   std::vector<double> across;
   for (int j = 0; j <= kSectorSamples; ++j) {
@@ -63,13 +69,13 @@ TopoDS_Face sectorFace(const PlacedProfile& a, const PlacedProfile& b, double an
     const double angle = angleA + u * (angleB - angleA);
     across.push_back(u);
     grid.emplace_back();
-    for (std::size_t l = 0; l < zetas.size(); ++l)
+    for (std::size_t l = 0; l < atA.size(); ++l)
       grid.back().push_back(
           cartesian(atA[l].x + step * (atB[l].x - atA[l].x), atA[l].r + step * (atB[l].r - atA[l].r), angle));
   }
   // Evenly spaced zetas, evenly spaced parameters (also for the trailing edge's two ends).
   std::vector<double> along;
-  for (std::size_t l = 0; l < zetas.size(); ++l) along.push_back(static_cast<double>(l) / (zetas.size() - 1));
+  for (std::size_t l = 0; l < atA.size(); ++l) along.push_back(static_cast<double>(l) / (atA.size() - 1));
   const Handle(Geom_BSplineSurface) surface = geometry::interpolateGrid(
       grid, along, geometry::skinningSpace(along, 3, false), across, geometry::skinningSpace(across, 3, false));
   return BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face();
@@ -82,12 +88,11 @@ Handle(Geom_Curve) arc(double x, double r, double from, double to) {
 }
 
 /// The ruled face between an outline point's path across a sector and an arc of the inner side.
-TopoDS_Face blendingFace(const PlacedProfile& a, const PlacedProfile& b, double angleA, double angleB, double zeta,
+TopoDS_Face blendingFace(const Cylindrical& pa, const Cylindrical& pb, double angleA, double angleB,
                          const gp_Pnt& innerEnd) {
   // The outline point's path: the sector's motion of that one point, sampled and interpolated.
   std::vector<gp_Pnt> points;
   std::vector<double> parameters;
-  const Cylindrical pa = cylindrical(a.at(zeta)), pb = cylindrical(b.at(zeta));
   for (int j = 0; j <= kSectorSamples; ++j) {
     const double u = static_cast<double>(j) / kSectorSamples, step = u * u * (3.0 - 2.0 * u);
     points.push_back(
@@ -125,19 +130,29 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
   }
   const std::vector<double> front = zetasBetween(endBlend, 1.0), back = zetasBetween(-1.0, startBlend);
 
+  // Each section sampled once: the stretch in front of the blending part (endZetaBlending over the
+  // leading edge to the upper trailing edge), the one behind it (the lower trailing edge to
+  // startZetaBlending) and, where blunt, the trailing edge's two ends.
+  struct Sampled {
+    Samples front, back, trailingEdge;
+  };
+  std::vector<Sampled> samples;
+  for (const PlacedProfile& section : sections)
+    samples.push_back({sampled(section, front), sampled(section, back), sampled(section, {1.0, -1.0})});
+  const bool blunt = sections.front().at(1.0).Distance(sections.front().at(-1.0)) > Precision::Confusion();
+
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
   for (std::size_t k = 0; k < sections.size(); ++k) {
-    const PlacedProfile& a = sections[k];
-    const PlacedProfile& b = sections[(k + 1) % sections.size()];
-    const double angleA = a.angle, angleB = k + 1 < sections.size() ? b.angle : b.angle + 360.0;
+    const std::size_t next = (k + 1) % sections.size();
+    const Sampled &a = samples[k], &b = samples[next];
+    const double angleA = sections[k].angle,
+                 angleB = k + 1 < sections.size() ? sections[next].angle : sections[next].angle + 360.0;
     const std::string name = cowl.uID + "/sector " + std::to_string(k + 1);
-    faces.emplace_back(name, sectorFace(a, b, angleA, angleB, front));
-    faces.emplace_back(name, sectorFace(a, b, angleA, angleB, back));
-    // The trailing edge where the profiles are blunt.
-    if (a.at(1.0).Distance(a.at(-1.0)) > Precision::Confusion())
-      faces.emplace_back(name, sectorFace(a, b, angleA, angleB, {1.0, -1.0}));
-    faces.emplace_back(name, blendingFace(a, b, angleA, angleB, startBlend, atStartBlend));
-    faces.emplace_back(name, blendingFace(a, b, angleA, angleB, endBlend, atEndBlend));
+    faces.emplace_back(name, sectorFace(a.front, b.front, angleA, angleB));
+    faces.emplace_back(name, sectorFace(a.back, b.back, angleA, angleB));
+    if (blunt) faces.emplace_back(name, sectorFace(a.trailingEdge, b.trailingEdge, angleA, angleB));
+    faces.emplace_back(name, blendingFace(a.back.back(), b.back.back(), angleA, angleB, atStartBlend));
+    faces.emplace_back(name, blendingFace(a.front.front(), b.front.front(), angleA, angleB, atEndBlend));
     gp_Trsf turn;
     turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), angleA * kDegree);
     const TopoDS_Edge edge = TopoDS::Edge(BRepBuilderAPI_MakeEdge(meridian).Edge().Moved(turn));
