@@ -1,5 +1,7 @@
 #include "rib_point.h"
 
+#include <set>
+
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 
@@ -32,8 +34,32 @@ gp_Pln ribPlane(const Configuration& configuration, const StructureFrame& frame,
               {}, where);
 }
 
+namespace {
+
+/// The ribs definitions whose ribs are being looked at on this thread: a spar on a rib of a
+/// definition whose ribs end at that spar would be built forever.
+thread_local std::set<std::string> ribsInUse;
+
+class RibsGuard {
+ public:
+  RibsGuard(const std::string& uid, const std::string& where) : uid_(uid) {
+    if (!ribsInUse.insert(uid).second)
+      throw Error(ErrorCode::InvalidModel,
+                  "the ribs of '" + uid + "' and a spar positioned on them depend on each other", {}, where);
+  }
+  ~RibsGuard() { ribsInUse.erase(uid_); }
+  RibsGuard(const RibsGuard&) = delete;
+  RibsGuard& operator=(const RibsGuard&) = delete;
+
+ private:
+  std::string uid_;
+};
+
+}  // namespace
+
 gp_Pnt pointOnRib(const Configuration& configuration, const StructureFrame& frame, const std::string& ribsUid,
                   long long number, double xsi, const std::string& where) {
+  const RibsGuard guard(ribsUid, where);
   const gp_Pln plane = ribPlane(configuration, frame, ribsUid, number, where);
   const RibsDefinition ribs = ribsDefinitionNamed(configuration, ribsUid);
   const RibCutter cutter(configuration, frame, *ribs.structure);
