@@ -37,10 +37,13 @@ def write(path, structure):
 
 
 def structure():
-    frames = frame("F1", (7, 0)) + frame("Path", (4, -0.5), (4, 0), (4, 0.5))
+    frames = (frame("F1", (7, 0)) + frame("Path", (4, -0.5), (4, 0), (4, 0.5)) +
+              frame("Riffled", (4, 0), (5, 0), (6, 0)))
     bulkheads = ('<pressureBulkheads><pressureBulkhead uID="B1"><frameUID>F1</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
                  '<pressureBulkhead uID="OnPath"><frameUID>Path</frameUID>'
+                 "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
+                 '<pressureBulkhead uID="OnRiffles"><frameUID>Riffled</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead></pressureBulkheads>")
     positions = (position("P1", 0.3, 0, x=2) + position("P2", 0.3, 0, bulkhead="B1") +
                  position("P3", -0.5, 0, section="TubeS1") + position("P4", -0.5, 0, x=9) +
@@ -86,6 +89,17 @@ def test_bulkheads_and_walls_in_closed_form(tmp_path):
     assert volume == 0 and wall_kind == "fuselage_wall"
 
 
+def test_a_bulkhead_on_a_frame_path(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    area, box = ask(path, {"op": "component_surface_area", "uid": "OnPath"}, {"op": "bounding_box", "uid": "OnPath"})
+    # Rays straight up from y = −0.5, 0, 0.5 at x = 4 meet the unit circle; the chord between the
+    # first and last cuts off the circular segment of central angle π/3 above z = √3/2.
+    angle = math.pi / 3
+    assert math.isclose(area, (angle - math.sin(angle)) / 2, rel_tol=1e-5)
+    assert math.isclose(box["min"][2], math.sqrt(3) / 2, abs_tol=1e-6) and math.isclose(box["max"][2], 1, abs_tol=1e-5)
+
+
 def test_cross_beams_and_struts_are_their_axes(tmp_path):
     path = tmp_path / "tube.xml"
     write(path, structure())
@@ -110,11 +124,11 @@ def test_cross_beams_and_struts_are_their_axes(tmp_path):
 def test_fuselage_structure_errors_name_their_path(tmp_path):
     path = tmp_path / "tube.xml"
     write(path, structure())
-    queries = [{"op": "component_surface_area", "uid": u} for u in ("OnPath", "Broken", "Loop", "Beyond")]
+    queries = [{"op": "component_surface_area", "uid": u} for u in ("OnRiffles", "Broken", "Loop", "Beyond")]
     result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
-    on_path, broken, loop, beyond = (json.loads(line) for line in result.stdout.splitlines())
+    riffled, broken, loop, beyond = (json.loads(line) for line in result.stdout.splitlines())
     assert "cargoCrossBeamStrut[3]/positionYAtCrossBeam" in beyond["error"]
-    assert "frames/frame[2]" in on_path["error"] and "3 frame positions" in on_path["error"]
+    assert "frames/frame[3]/framePosition[2]" in riffled["error"] and "different stations" in riffled["error"]
     assert "wallPosition[7]/bulkheadUID" in broken["error"] and "'Nowhere'" in broken["error"]
     # A wall placed on itself is refused, not built forever.
     assert "wallPosition[8]/wallSegmentUID" in loop["error"] and "depends on itself" in loop["error"]

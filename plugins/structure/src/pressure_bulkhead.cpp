@@ -1,23 +1,78 @@
 #include "pressure_bulkhead.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepPrimAPI_MakeHalfSpace.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "faces_inside.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
 
 namespace airshape::structure {
 
+namespace {
+
+constexpr double kDegrees = M_PI / 180.0;
+
+/// A bulkhead on a frame of several positions at one station: each position's ray (from its
+/// reference point at its angle about the x axis, 0° up) meets the skin; the frame runs along the
+/// skin from the first of these points to the last, and the bulkhead is the part of the cross
+/// section that the chord between them cuts off on the side of the points in between.
+std::vector<TopoDS_Face> sectionPart(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  const auto& positions = frame.framePosition;
+  if (positions.size() < 3)
+    throw Error(ErrorCode::NotImplemented, "bulkheads on frames of two positions are not built yet", {}, frame.xpath);
+  const double x = positions[0].positionX.value_or(0.0);
+  std::vector<gp_Pnt> hits;
+  for (const auto& position : positions) {
+    if (!position.positionX || std::abs(*position.positionX - x) > 1e-9 * std::max(1.0, std::abs(x)))
+      throw Error(ErrorCode::NotImplemented,
+                  "bulkheads on frames whose positions lie at different stations (riffled bulkheads) are not built "
+                  "yet",
+                  {}, position.xpath);
+    const double angle = position.referenceAngle * kDegrees;
+    hits.push_back(fuselage.skinAhead(fuselage.toGlobal(gp_Pnt(x, position.referenceY, position.referenceZ)),
+                                      fuselage.toGlobal(gp_Dir(0.0, -std::sin(angle), std::cos(angle))),
+                                      position.xpath));
+  }
+  const gp_Dir normal = fuselage.toGlobal(gp_Dir(1, 0, 0));
+  const gp_Vec chord(hits.front(), hits.back());
+  if (chord.Magnitude() < 1e-9 || chord.Crossed(gp_Vec(normal)).Magnitude() < 1e-12)
+    throw Error(ErrorCode::InvalidModel, "the frame's first and last positions meet the skin at one point", {},
+                frame.xpath);
+  const TopoDS_Face cut = BRepBuilderAPI_MakeFace(gp_Pln(hits.front(), gp_Dir(chord.Crossed(gp_Vec(normal)))));
+  const TopoDS_Shape side = BRepPrimAPI_MakeHalfSpace(cut, hits[1]).Solid();
+  BRep_Builder builder;
+  TopoDS_Compound section;
+  builder.MakeCompound(section);
+  for (const TopoDS_Face& face : fuselage.crossSection(hits.front(), normal)) builder.Add(section, face);
+  return facesInside(section, side);
+}
+
+}  // namespace
+
 NamedShape pressureBulkhead(const Configuration& configuration, const std::string& uid) {
   const auto bulkhead = pressureBulkheadNamed(configuration, uid);
   const schema::FrameType& frame =
       frameNamed(*bulkhead.structure, bulkhead.node->frameUID, bulkhead.node->xpath + "/frameUID");
   const FuselageFrame fuselage(configuration, *bulkhead.fuselage);
-  const gp_Pln station = fuselage.station(frame);
   std::vector<TopoDS_Face> faces;
   try {
-    faces = fuselage.crossSection(station.Location(), station.Axis().Direction());
-  } catch (const Error&) {
+    if (frame.framePosition.size() > 1) {
+      faces = sectionPart(fuselage, frame);
+    } else {
+      const gp_Pln station = fuselage.station(frame);
+      faces = fuselage.crossSection(station.Location(), station.Axis().Direction());
+    }
+  } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;
     throw Error(ErrorCode::InvalidModel, "the fuselage cannot be cut at the bulkhead's frame", {}, frame.xpath);
   }
   NamedFaces shape;
