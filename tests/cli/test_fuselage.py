@@ -396,3 +396,20 @@ def test_approximation_settings_that_cannot_be_met_name_the_node(tmp_path):
     approximated_cylinders(path, "><controlPointNumber>2</controlPointNumber>")
     answer = json.loads(airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n').stdout)
     assert "pointList/approximationSettings/controlPointNumber: controlPointNumber must lie in [4" in answer["error"]
+
+
+def test_ducts_are_lofted_as_fuselages_are(tmp_path):
+    # A duct of the unit circle at x = 0, 5 and 10: the cylinder again, and its segments halves.
+    profiles = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(64)}</fuselageProfile></fuselageProfiles>'
+    duct = fuselage("Pipe", "Circle", 10.0).replace("<fuselage ", "<duct ").replace("</fuselage>", "</duct>")
+    assembly = '<ductAssembly uID="Both"><name>a</name><ductUIDs><uID>Pipe</uID></ductUIDs></ductAssembly>'
+    path = tmp_path / "duct.xml"
+    path.write_text(HEADER + fuselage("Hull", "Circle", 10.0) + f"</fuselages><ducts>{duct}{assembly}</ducts>"
+                    f"</model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
+    volume, segment, kind, segment_kind = ask(
+        path, {"op": "component_volume", "uid": "Pipe"}, {"op": "component_volume", "uid": "PipeG1"},
+        {"op": "component_type", "uid": "Pipe"}, {"op": "component_type", "uid": "PipeG1"})
+    assert math.isclose(volume, math.pi * 10, rel_tol=1e-5) and math.isclose(segment, math.pi * 5, rel_tol=1e-5)
+    assert kind == "duct" and segment_kind == "fuselage_segment"
+    result = airshape("query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Both"}) + "\n")
+    assert "duct assemblies are not built yet" in json.loads(result.stdout)["error"]

@@ -24,7 +24,7 @@ std::string parentOf(const std::optional<std::string>& parent) { return parent.v
 std::string parentOf(const std::string& parent) { return parent; }
 
 /// The own transformation and parentUID of a wing, fuselage, rotor blade, rotor, engine
-/// placement or engine pylon of any model.
+/// placement, engine pylon or duct of any model.
 struct Placed {
   const schema::TransformationType* transformation = nullptr;
   std::string parentUid;
@@ -48,6 +48,14 @@ bool findIn(const Model& model, const std::string& uid, Placed& found) {
     for (const auto& engine : model.engines->engine)
       if (visit(engine)) return true;
   if constexpr (std::is_same_v<Model, schema::AircraftModelType>) {
+    // Ducts have no parent in CPACS 3.5.
+    if (model.ducts)
+      for (const auto& duct : model.ducts->duct)
+        if (duct.uID == uid) {
+          found.transformation = duct.transformation.get();
+          found.parentUid.clear();
+          return true;
+        }
     if (model.enginePylons)
       for (const auto& pylon : model.enginePylons->enginePylon)
         if (visit(pylon)) return true;

@@ -94,6 +94,17 @@ bool smoothThrough(const Geom_BSplineCurve& curve, double t) {
 
 std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration& configuration,
                                                              const schema::FuselageType& fuselage) {
+  return build(configuration, fuselage);
+}
+
+std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration& configuration,
+                                                             const schema::DuctType& duct) {
+  return build(configuration, duct);
+}
+
+template <class Body>
+std::shared_ptr<const FuselageGeometry> FuselageGeometry::build(const Configuration& configuration,
+                                                                const Body& fuselage) {
   return configuration.cache().obtain<FuselageGeometry>("fuselage-geometry:" + fuselage.uID, [&] {
     auto geometry = std::make_shared<FuselageGeometry>();
     geometry->xpath_ = fuselage.xpath;

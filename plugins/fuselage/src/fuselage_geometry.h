@@ -35,6 +35,8 @@ class FuselageGeometry {
  public:
   static std::shared_ptr<const FuselageGeometry> of(const Configuration& configuration,
                                                     const schema::FuselageType& fuselage);
+  /// A duct is lofted as a fuselage is: sections of fuselage profiles, segments, positionings.
+  static std::shared_ptr<const FuselageGeometry> of(const Configuration& configuration, const schema::DuctType& duct);
 
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
@@ -56,6 +58,9 @@ class FuselageGeometry {
   NamedShape segmentSolid(std::size_t segment) const;
 
  private:
+  template <class Body>
+  static std::shared_ptr<const FuselageGeometry> build(const Configuration& configuration, const Body& body);
+
   /// Skins the placed profiles (chain order): the loft without guide curves.
   void loft(const std::vector<PlacedProfile>& sections);
   /// The skin through the placed profiles and the guide curves: patches (patchRings) for

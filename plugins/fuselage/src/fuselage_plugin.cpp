@@ -22,6 +22,33 @@ schema::FuselageType& selectFuselage(const Configuration& configuration, const J
                                    "fuselage");
 }
 
+/// Every duct of every aircraft model.
+std::vector<const schema::DuctType*> everyDuct(const Configuration& configuration) {
+  std::vector<const schema::DuctType*> ducts;
+  const auto& vehicles = configuration.cpacs().vehicles;
+  if (vehicles && vehicles->aircraft)
+    for (const auto& model : vehicles->aircraft->model)
+      if (model.ducts)
+        for (const auto& duct : model.ducts->duct) ducts.push_back(&duct);
+  return ducts;
+}
+
+/// The duct of this uID; a duct assembly (a union of ducts) is not built yet.
+const schema::DuctType& ductNamed(const Configuration& configuration, const std::string& uid) {
+  for (const schema::DuctType* duct : everyDuct(configuration))
+    if (duct->uID == uid) return *duct;
+  throw Error(ErrorCode::NotImplemented, "duct assemblies are not built yet ('" + uid + "')");
+}
+
+/// The duct holding a duct segment of this uID.
+const schema::DuctType& ductHolding(const Configuration& configuration, const std::string& segmentUid) {
+  for (const schema::DuctType* duct : everyDuct(configuration))
+    if (duct->segments)
+      for (const auto& segment : duct->segments->segment)
+        if (segment.uID == segmentUid) return *duct;
+  throw Error(ErrorCode::InvalidArgument, "no duct segment with uID '" + segmentUid + "'");
+}
+
 std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
   return query::selectByIndexOrUid(q, "segment", geometry.segmentUids(), "segment");
 }
@@ -32,6 +59,15 @@ class FuselagePlugin final : public plugin::BasicPlugin {
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
       const model::ModelComponents& model = model::modelHolding(c, uid);
       return FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, uid, "fuselage"))->solid(uid);
+    });
+    shapes.add("duct", [](const Configuration& c, const std::string& uid) {
+      return FuselageGeometry::of(c, ductNamed(c, uid))->solid(uid);
+    });
+    shapes.add("ductSegment", [](const Configuration& c, const std::string& uid) {
+      const schema::DuctType& duct = ductHolding(c, uid);
+      const auto geometry = FuselageGeometry::of(c, duct);
+      const auto& uids = geometry->segmentUids();
+      return geometry->segmentSolid(static_cast<std::size_t>(std::find(uids.begin(), uids.end(), uid) - uids.begin()));
     });
     shapes.add("fuselageSegment", [](const Configuration& c, const std::string& uid) {
       const std::string& fuselageUid =
@@ -45,8 +81,8 @@ class FuselagePlugin final : public plugin::BasicPlugin {
   }
 
   FuselagePlugin()
-      : BasicPlugin("fuselage", "0.1.0", "CPACS fuselages: profiles, sections, segments",
-                    {{"fuselage", "fuselages/fuselage"}, {"fuselageSegment", ""}}) {}
+      : BasicPlugin("fuselage", "0.2.0", "CPACS fuselages (profiles, sections, segments) and ducts lofted as they are",
+                    {{"fuselage", "fuselages/fuselage"}, {"fuselageSegment", ""}, {"duct", ""}, {"ductSegment", ""}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"fuselage_count", "", "-> number of fuselages of the model",

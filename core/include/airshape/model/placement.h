@@ -26,8 +26,8 @@ gp_Pnt apply(const Transform& transform, const gp_Pnt& point);
 /// convention the reference applies, even to scaling). Null gives the identity.
 Transform transformationMatrix(const schema::TransformationType* transformation);
 
-/// The component matrix C of a wing, fuselage, rotor blade, rotor, engine placement or engine
-/// pylon: its own transformation, translated by its
+/// The component matrix C of a wing, fuselage, rotor blade, rotor, engine placement, engine
+/// pylon or duct: its own transformation, translated by its
 /// parent's origin (through the whole parentUID chain) unless its translation's refType is
 /// absGlobal. Rotation and scaling of the parent are not inherited.
 Transform componentTransform(const Configuration& configuration, const std::string& uid);
