@@ -2,16 +2,11 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "nacelle_cowl.h"
 #include "nacelle_profile.h"
 
 namespace airshape::nacelle {
-
-Handle(Geom_BSplineCurve) placedCurve(const Handle(Geom_BSplineCurve) & curve, const model::Transform& transform) {
-  Handle(Geom_BSplineCurve) copy = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
-  for (int i = 1; i <= copy->NbPoles(); ++i) copy->SetPole(i, model::apply(transform, copy->Pole(i)));
-  return copy;
-}
 
 double lengthShare(double zeta, const std::string& where) {
   if (zeta < -1.0 || zeta > 0.0)
@@ -28,7 +23,8 @@ PlacedProfile placedProfile(const Configuration& configuration, const schema::Na
   const model::Transform placement = sectionTransform(section);
   const NacelleProfile profile =
       NacelleProfile::named(configuration, section.profileUID, false, section.xpath + "/profileUID");
-  PlacedProfile result{placedCurve(profile.lower(), placement), placedCurve(profile.upper(), placement)};
+  PlacedProfile result{geometry::transformed(profile.lower(), placement),
+                       geometry::transformed(profile.upper(), placement)};
   if (section.transformation && section.transformation->translation)
     result.angle = section.transformation->translation->x.value_or(0.0);
   return result;
@@ -50,7 +46,7 @@ Handle(Geom_BSplineCurve) rotationPiece(const Configuration& configuration, cons
   if (reference == nullptr)
     throw Error(ErrorCode::InvalidModel, "'" + rotation.referenceSectionUID + "' names no section of this cowl", {},
                 where + "/referenceSectionUID");
-  return placedCurve(curvePiece(backwards, from, to), sectionTransform(*reference));
+  return geometry::transformed(curvePiece(backwards, from, to), sectionTransform(*reference));
 }
 
 }  // namespace airshape::nacelle

@@ -14,9 +14,6 @@ class Configuration;
 
 namespace airshape::nacelle {
 
-/// A curve moved by an affine map (pole by pole).
-Handle(Geom_BSplineCurve) placedCurve(const Handle(Geom_BSplineCurve) & curve, const model::Transform& transform);
-
 /// A curve coordinate zeta of [−1, 0] as the share of arc length from a lower side's start.
 /// Throws Error naming `where` outside that range.
 double lengthShare(double zeta, const std::string& where);

@@ -11,6 +11,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "cowl_loft.h"
 #include "cowl_parts.h"
 #include "nacelle_profile.h"
@@ -115,7 +116,7 @@ TopoDS_Shape cowlSolid(const Configuration& configuration, const schema::Nacelle
 TopoDS_Shape centerCowlSolid(const Configuration& configuration, const schema::NacelleCenterCowlType& cowl) {
   const NacelleProfile curve = NacelleProfile::named(configuration, cowl.curveUID, true, cowl.xpath + "/curveUID");
   const Handle(Geom_BSplineCurve) shifted =
-      placedCurve(curve.whole(), model::Transform(Eigen::Translation3d(cowl.xOffset, 0.0, 0.0)));
+      geometry::transformed(curve.whole(), model::Transform(Eigen::Translation3d(cowl.xOffset, 0.0, 0.0)));
   // Closed along the axis: down from the curve's end, along the axis, up to its start.
   const gp_Pnt start = shifted->StartPoint(), end = shifted->EndPoint();
   ProfileWire wire;

@@ -12,6 +12,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/compatibility.h"
 #include "airshape/geometry/loft_piece.h"
 #include "airshape/geometry/skinning.h"
@@ -47,8 +48,7 @@ std::vector<Handle(Geom_BSplineCurve)> placedOutline(const TopoDS_Wire& wire, co
     const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge.Current(), first, last);
     Handle(Geom_BSplineCurve) spline = GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last));
     if (edge.Current().Orientation() == TopAbs_REVERSED) spline->Reverse();
-    for (int i = 1; i <= spline->NbPoles(); ++i) spline->SetPole(i, model::apply(transform, spline->Pole(i)));
-    curves.push_back(spline);
+    curves.push_back(geometry::transformed(spline, transform));
   }
   return curves;
 }

@@ -22,10 +22,7 @@ namespace {
 
 /// An airfoil side (profile coordinates) placed by a segment end's transformation.
 Handle(Geom_BSplineCurve) placedSide(const SegmentEnd& end, bool upper) {
-  const Handle(Geom_BSplineCurve)& side = upper ? end.profile->upperCurve() : end.profile->lowerCurve();
-  Handle(Geom_BSplineCurve) placed = Handle(Geom_BSplineCurve)::DownCast(side->Copy());
-  for (int i = 1; i <= placed->NbPoles(); ++i) placed->SetPole(i, model::apply(end.transform, placed->Pole(i)));
-  return placed;
+  return geometry::transformed(upper ? end.profile->upperCurve() : end.profile->lowerCurve(), end.transform);
 }
 
 /// The wing or rotor blade of this uID; throws Error when none has it.
