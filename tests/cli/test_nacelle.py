@@ -37,11 +37,15 @@ def test_pylon_loft_in_closed_form():
     assert math.isclose(box["min"][0], 1, abs_tol=1e-6) and math.isclose(box["max"][0], 1 + 3, abs_tol=1e-6)
 
 
+def error_of(uid):
+    """The error a component's volume answers with."""
+    result = airshape("query", ENGINES, stdin=json.dumps({"op": "component_volume", "uid": uid}) + "\n")
+    return json.loads(result.stdout)["error"]
+
+
 def test_a_pylon_without_segments_has_no_shape():
-    path = ENGINES
-    result = airshape("query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Bare"}) + "\n")
-    answer = json.loads(result.stdout)
-    assert "enginePylon[2]" in answer["error"] and "no segments" in answer["error"]
+    error = error_of("Bare")
+    assert "enginePylon[2]" in error and "no segments" in error
 
 
 def test_one_section_nacelles_are_bodies_of_revolution():
@@ -74,10 +78,8 @@ def test_sections_lofted_around_the_engine():
 
 
 def test_an_engine_without_nacelle_has_no_shape():
-    path = ENGINES
-    result = airshape("query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Hollow"}) + "\n")
-    answer = json.loads(result.stdout)
-    assert "has no nacelle" in answer["error"] and "vehicles/engines/engine[5]" in answer["error"]
+    error = error_of("Hollow")
+    assert "has no nacelle" in error and "vehicles/engines/engine[5]" in error
 
 
 def test_nacelle_conformance_does_not_regress():
