@@ -54,6 +54,21 @@ def test_where_the_wing_meets_the_fuselage():
     assert math.isclose(length, reversed_length, rel_tol=1e-7)  # the order does not matter
 
 
+def test_a_fuselage_that_cannot_be_built_is_left_out(tmp_path):
+    path = tmp_path / "cylinders.xml"
+    write_cylinders(path)
+    # Reversed, the second segment ends where the first does: no chain of segments.
+    text = path.read_text().replace("<fromElementUID>FullE1</fromElementUID><toElementUID>FullE2</toElementUID>",
+                                    "<fromElementUID>FullE2</fromElementUID><toElementUID>FullE1</toElementUID>")
+    path.write_text(text)
+    listed, length, volume = answers(path, {"op": "component_list"}, {"op": "configuration_length"},
+                                     {"op": "component_volume", "uid": "Full"})
+    uids = [entry["uid"] for entry in listed["ok"]]
+    assert "HalfCylinder" in uids and "Full" not in uids and "FullG1" not in uids
+    assert math.isclose(length["ok"], 10, abs_tol=1e-6)  # the half cylinder alone
+    assert "continuous chain" in volume["error"] and "fuselage[1]/segments" in volume["error"]
+
+
 def test_errors_name_what_is_wrong():
     wrong = answers(EXAMPLE, {"op": "component_type", "uid": "Nobody"},
                     {"op": "component_volume", "uid": "ExampleAircraft"},

@@ -73,6 +73,16 @@ def test_spoilers_are_counted_on_their_own(tmp_path):
     assert answers[3] == {"error": "argument 'index' must be a 1-based integer"}
 
 
+def test_spoilers_are_components_the_component_list_leaves_out(tmp_path):
+    listed, kind, volume = ask(tmp_path, {"op": "component_list"}, {"op": "component_type", "uid": "Spoiler"},
+                               {"op": "component_volume", "uid": "Slat"})
+    uids = [entry["uid"] for entry in listed["ok"]]
+    # The list is the reference's components (QUERY-components §1), which has no spoilers.
+    assert "Flap" in uids and "Slat" in uids and "Spoiler" not in uids
+    assert kind == {"ok": "control_surface"}
+    assert uids == sorted(uids)
+
+
 # A rectangular wing (chord 2, span 5, x from 1 to 3) of parabolic arcs z = ±0.15·c·ξ(1−ξ),
 # ξ = x/c: the section area aft of ξ0 is 0.3·c²·(1/6 − ξ0²/2 + ξ0³/3), so a plain flap's volume
 # is known in closed form, and its hinge line (on the chord, the airfoil is symmetric) too. Its

@@ -82,6 +82,17 @@ def test_an_engine_without_nacelle_has_no_shape():
     assert "has no nacelle" in error and "vehicles/engines/engine[5]" in error
 
 
+def test_configuration_length_leaves_nacelles_and_empty_pylons_out():
+    length, whole, *parts = ask(ENGINES, {"op": "configuration_length"}, {"op": "bounding_box"},
+                                *({"op": "bounding_box", "uid": uid} for uid in ("Rect", "Swept", "Pylon")))
+    # The wings and the pylon make the configuration's box; the nacelles 5 to 20 m aft of the
+    # wing and the pylon without segments are no part of it (QUERY-components §7).
+    front = min(box["min"][0] for box in parts)
+    back = max(box["max"][0] for box in parts)
+    assert math.isclose(length, back - front, abs_tol=1e-9) and back < 10
+    assert whole["min"][0] == front and whole["max"][0] == back
+
+
 def test_nacelle_conformance_does_not_regress():
     passed, output = conformance_passed("cases-nacelle.json")
     assert passed >= 35, output[-3000:]

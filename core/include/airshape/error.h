@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace airshape {
 
@@ -38,6 +39,14 @@ class Error : public std::runtime_error {
   std::string message_;
   std::string file_;
   std::string cpacsPath_;
+};
+
+/// A component that exists but has no shape (an engine without a nacelle, a pylon without
+/// segments): measures refuse it with this error, the configuration's box leaves it out.
+class NoShape : public Error {
+ public:
+  NoShape(const std::string& message, std::string cpacsPath)
+      : Error(ErrorCode::InvalidModel, message, {}, std::move(cpacsPath)) {}
 };
 
 }  // namespace airshape

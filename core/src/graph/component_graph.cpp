@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 #include <utility>
@@ -136,6 +137,20 @@ void addModelTanks(std::vector<ComponentLocation>& locations) {
   addBodyStructure("fuelTanks/fuelTank/vessels/vessel/structure", locations);
 }
 
+/// Whether the reference library registers components of this location (QUERY-components §1):
+/// it has no class for spoilers, wing fuel tanks, frames, stringers, floor panels, windows,
+/// intercostals, general structural members and landing gear (nor for what lies in a
+/// spoiler), and reads tanks only in the model's own fuelTanks (not the CPACS 3.5 layout
+/// inside fuselages).
+bool referenceRegisters(const ComponentLocation& location) {
+  static const std::set<std::string> unregistered = {"spoiler",     "wingFuelTank",     "frame",
+                                                     "stringer",    "floorPanel",       "window",
+                                                     "intercostal", "structuralMember", "landingGear"};
+  const bool inFuselageTanks = location.pathInModel.rfind("fuselages/fuselage/fuelTanks/", 0) == 0;
+  const bool inSpoiler = location.pathInModel.find("/spoilers/spoiler/") != std::string::npos;
+  return unregistered.count(location.nodeType) == 0 && !inFuselageTanks && !inSpoiler;
+}
+
 std::vector<ComponentLocation> catalogue() {
   std::vector<ComponentLocation> locations = {
       {kModelNodeType, "", "plane", true},
@@ -158,6 +173,13 @@ std::vector<ComponentLocation> catalogue() {
   addWingContents("rotorBlades/rotorBlade", locations);
   addFuselageContents("fuselages/fuselage", locations);
   addModelTanks(locations);
+  for (ComponentLocation& location : locations) {
+    location.listed = referenceRegisters(location);
+    location.inConfigurationBox = location.pathInModel == "fuselages/fuselage" ||
+                                  location.pathInModel == "wings/wing" || location.pathInModel == "rotors/rotor" ||
+                                  location.pathInModel == "enginePylons/enginePylon" ||
+                                  location.pathInModel == "genericGeometryComponents/genericGeometryComponent";
+  }
   return locations;
 }
 
@@ -183,6 +205,8 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
   component.part = location.part;
   component.insideParent = location.insideParent;
   component.structure = location.structure;
+  component.inConfigurationBox = location.inConfigurationBox;
+  component.listed = location.listed;
   if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
   component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
   component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);

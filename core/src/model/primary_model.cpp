@@ -1,5 +1,7 @@
 #include "airshape/model/primary_model.h"
 
+#include <algorithm>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/segment_chain.h"
@@ -10,7 +12,7 @@ namespace {
 
 /// Adds the component unless its segments cannot be ordered, which `skipped` then records.
 template <class Component>
-void addIfChained(Component& component, std::vector<Component*>& list, Problems& skipped) {
+void addIfChained(Component& component, std::vector<Component*>& list, ModelComponents& model) {
   std::vector<SegmentEnds> ends;
   if (component.segments)
     for (const auto& segment : component.segments->segment)
@@ -19,8 +21,9 @@ void addIfChained(Component& component, std::vector<Component*>& list, Problems&
     chainOrder(ends);
     list.push_back(&component);
   } catch (const Error& error) {
-    skipped.push_back({Problem::Severity::Warning, component.xpath + "/segments",
-                       error.message() + "; " + component.uID + " cannot be built and is left out"});
+    model.skippedUids.push_back(component.uID);
+    model.skipped.push_back({Problem::Severity::Warning, component.xpath + "/segments",
+                             error.message() + "; " + component.uID + " cannot be built and is left out"});
   }
 }
 
@@ -28,9 +31,9 @@ template <class Model>
 ModelComponents collect(const Model& model) {
   ModelComponents result;
   if (model.wings)
-    for (auto& wing : model.wings->wing) addIfChained(wing, result.wings, result.skipped);
+    for (auto& wing : model.wings->wing) addIfChained(wing, result.wings, result);
   if (model.fuselages)
-    for (auto& fuselage : model.fuselages->fuselage) addIfChained(fuselage, result.fuselages, result.skipped);
+    for (auto& fuselage : model.fuselages->fuselage) addIfChained(fuselage, result.fuselages, result);
   return result;
 }
 
@@ -38,7 +41,7 @@ ModelComponents collect(const Model& model) {
 ModelComponents collectRotorcraft(const schema::RotorcraftModelType& rotorcraft) {
   ModelComponents result = collect(rotorcraft);
   if (rotorcraft.rotorBlades)
-    for (auto& blade : rotorcraft.rotorBlades->rotorBlade) addIfChained(blade, result.wings, result.skipped);
+    for (auto& blade : rotorcraft.rotorBlades->rotorBlade) addIfChained(blade, result.wings, result);
   return result;
 }
 
@@ -85,6 +88,17 @@ const ModelComponents& modelHolding(const Configuration& configuration, const st
   if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
   const std::size_t model = configuration.components().components()[static_cast<std::size_t>(index)].model;
   return everyModel(configuration).at(model);
+}
+
+bool leftOut(const Configuration& configuration, const graph::Component& component) {
+  const std::vector<std::string>& skipped = everyModel(configuration).at(component.model).skippedUids;
+  const graph::ComponentGraph& graph = configuration.components();
+  for (const graph::Component* above = &component; above != nullptr;) {
+    if (std::find(skipped.begin(), skipped.end(), above->uid) != skipped.end()) return true;
+    const long parent = graph.find(above->parentUid);
+    above = parent < 0 ? nullptr : &graph.components()[static_cast<std::size_t>(parent)];
+  }
+  return false;
 }
 
 void throwNotInModel(const Configuration& configuration, const ModelComponents& model, const std::string& uid,

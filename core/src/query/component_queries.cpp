@@ -11,6 +11,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/model/primary_model.h"
 #include "airshape/query/arguments.h"
 #include "intersection_curves.h"
 
@@ -41,11 +42,13 @@ Json componentEntry(const graph::Component& component) {
   return {{"uid", component.uid}, {"type", component.typeName}};
 }
 
-/// Every component of the model queries address (the first model), sorted by uID.
+/// Every component of the model queries address (the first model) that the reference
+/// registers (QUERY-components §1), sorted by uID.
 Json componentList(Configuration& configuration, const Json&) {
   std::vector<const graph::Component*> listed;
   for (const graph::Component& component : configuration.components().components())
-    if (component.model == 0 && !component.uid.empty()) listed.push_back(&component);
+    if (component.model == 0 && !component.uid.empty() && component.listed && !model::leftOut(configuration, component))
+      listed.push_back(&component);
   std::sort(listed.begin(), listed.end(), [](const auto* a, const auto* b) { return a->uid < b->uid; });
   Json list = Json::array();
   for (const graph::Component* component : listed) list.push_back(componentEntry(*component));

@@ -9,6 +9,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/model/primary_model.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/query/arguments.h"
 #include "airshape/query/box_answer.h"
@@ -31,21 +32,38 @@ Bnd_Box mirrored(const Bnd_Box& box, const std::string& symmetry) {
   return result;
 }
 
-Json boundingBox(Configuration& configuration, const Json& query) {
-  if (query.contains("uid"))
-    return boxAnswer(tightBox(configuration.shapes().shapeOf(configuration, stringArgument(query, "uid"))));
-  // The whole configuration, mirrored halves included: every component a plugin builds.
+/// The tight box of the whole configuration, mirrored halves included: the components that
+/// count in it (QUERY-components §7) and that a plugin builds.
+Bnd_Box configurationBox(Configuration& configuration) {
   Bnd_Box all;
   for (const auto& component : configuration.components().components()) {
-    if (component.part || component.insideParent || configuration.shapes().find(component.nodeType) == nullptr)
+    if (!component.inConfigurationBox || model::leftOut(configuration, component) ||
+        configuration.shapes().find(component.nodeType) == nullptr)
       continue;
-    const Bnd_Box box = tightBox(configuration.shapes().shapeOf(configuration, component.uid));
+    Bnd_Box box;
+    try {
+      box = tightBox(configuration.shapes().shapeOf(configuration, component.uid));
+    } catch (const NoShape&) {
+      continue;  // as the reference leaves it out
+    }
     all.Add(box);
     const std::string symmetry = model::resolvedSymmetry(configuration, component.uid);
     if (symmetry != "none") all.Add(mirrored(box, symmetry));
   }
   if (all.IsVoid()) throw Error(ErrorCode::NotImplemented, "no builder yet for any component of the configuration");
-  return boxAnswer(all);
+  return all;
+}
+
+Json boundingBox(Configuration& configuration, const Json& query) {
+  if (query.contains("uid"))
+    return boxAnswer(tightBox(configuration.shapes().shapeOf(configuration, stringArgument(query, "uid"))));
+  return boxAnswer(configurationBox(configuration));
+}
+
+Json configurationLength(Configuration& configuration, const Json&) {
+  double xMin, yMin, zMin, xMax, yMax, zMax;
+  configurationBox(configuration).Get(xMin, yMin, zMin, xMax, yMax, zMax);
+  return xMax - xMin;
 }
 
 }  // namespace
@@ -73,6 +91,8 @@ void registerCoreQueries(QueryRegistry& registry) {
   registry.add({"bounding_box", "core",
                 "[uid] -> {min, max}: tight box of a component, or of the whole configuration with mirrored halves",
                 boundingBox});
+  registry.add({"configuration_length", "core",
+                "-> x extent of the configuration's tight box (bounding_box without uid)", configurationLength});
   registry.add({"component_faces", "core",
                 "uid, [mirrored] -> [{name, area, centre}]: the named faces of a component's solid or mirrored half",
                 componentFaces});

@@ -44,11 +44,9 @@ const schema::EngineType& engineNamed(const Configuration& configuration, const 
 NamedShape engineNacelle(const Configuration& configuration, const std::string& placementUid) {
   const schema::EnginePositionType& placement = placementNamed(configuration, placementUid);
   const schema::EngineType& engine = engineNamed(configuration, placement.engineUID, placement.xpath + "/engineUID");
-  if (!engine.nacelle)
-    throw Error(ErrorCode::InvalidModel, "engine '" + engine.uID + "' has no nacelle: no shape", {}, engine.xpath);
+  if (!engine.nacelle) throw NoShape("engine '" + engine.uID + "' has no nacelle: no shape", engine.xpath);
   const schema::EngineNacelleType& nacelle = *engine.nacelle;
-  if (!nacelle.fanCowl)
-    throw Error(ErrorCode::InvalidModel, "the nacelle has no fan cowl: no shape", {}, nacelle.xpath);
+  if (!nacelle.fanCowl) throw NoShape("the nacelle has no fan cowl: no shape", nacelle.xpath);
   BRep_Builder builder;
   TopoDS_Compound compound;
   builder.MakeCompound(compound);

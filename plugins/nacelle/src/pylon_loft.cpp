@@ -86,7 +86,7 @@ std::shared_ptr<const PylonLoft> PylonLoft::of(const Configuration& configuratio
     loft->uid_ = pylon.uID;
     loft->xpath_ = pylon.xpath;
     if (!pylon.segments || pylon.segments->segment.empty())
-      throw Error(ErrorCode::InvalidModel, "the pylon has no segments: no shape", {}, pylon.xpath);
+      throw NoShape("the pylon has no segments: no shape", pylon.xpath);
     const auto placed = model::placedElements(configuration, pylon);
     std::vector<model::SegmentEnds> chain;
     for (const auto& segment : pylon.segments->segment) chain.push_back({segment.fromElementUID, segment.toElementUID});

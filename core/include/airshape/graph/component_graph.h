@@ -26,6 +26,13 @@ struct ComponentLocation {
   /// Structure of its parent (spars, ribs, cells, frames, ...): surfaces that `export
   /// --structure` joins with its parent's faces into one connected shell.
   bool structure = false;
+  /// Counts in the configuration's box and length (QUERY-components §7): the flying and the
+  /// external parts, not what lies in or on them (nacelles, ducts, tanks, decks, systems).
+  bool inConfigurationBox = false;
+  /// Listed by `component_list`: a component the reference library registers (QUERY-components
+  /// §1). Spoilers, wing fuel tanks, frames, stringers and a few more are built and measured
+  /// like any component, but the reference has no component for them.
+  bool listed = true;
 };
 
 /// The node type of the model element itself (type `plane`), which has no shape.
@@ -41,11 +48,13 @@ const std::vector<ComponentLocation>& standardComponentLocations();
 struct Component {
   std::string uid;  ///< empty for an element without one (the schema requires it; validate says so)
   std::string nodeType;
-  std::string typeName;       ///< ComponentLocation::typeName
-  bool part = false;          ///< ComponentLocation::part
-  bool insideParent = false;  ///< ComponentLocation::insideParent
-  bool structure = false;     ///< ComponentLocation::structure
-  std::string parentUid;      ///< its parentUID, else the component it lies in; empty: attached to nothing
+  std::string typeName;             ///< ComponentLocation::typeName
+  bool part = false;                ///< ComponentLocation::part
+  bool insideParent = false;        ///< ComponentLocation::insideParent
+  bool structure = false;           ///< ComponentLocation::structure
+  bool inConfigurationBox = false;  ///< ComponentLocation::inConfigurationBox
+  bool listed = true;               ///< ComponentLocation::listed
+  std::string parentUid;            ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
   const xercesc::DOMElement* element = nullptr;

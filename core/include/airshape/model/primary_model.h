@@ -9,6 +9,9 @@
 namespace airshape {
 class Configuration;
 }
+namespace airshape::graph {
+struct Component;
+}
 
 namespace airshape::model {
 
@@ -21,6 +24,7 @@ struct ModelComponents {
   std::vector<schema::WingType*> wings;
   std::vector<schema::FuselageType*> fuselages;
   Problems skipped;
+  std::vector<std::string> skippedUids;  ///< the uIDs of the components left out
 };
 
 /// Every model of a document: the aircraft models, then the rotorcraft models, in document
@@ -38,6 +42,10 @@ ModelComponents primaryModel(const schema::CpacsType& cpacs);
 /// its own model; `info`, `build` and `export` cover every model). Throws Error when no
 /// component has the uID.
 const ModelComponents& modelHolding(const Configuration& configuration, const std::string& uid);
+
+/// Whether the component, or one it lies in, was left out on loading (a wing or fuselage
+/// whose segments form no chain).
+bool leftOut(const Configuration& configuration, const graph::Component& component);
 
 /// Throws the Error for a uID that names no wing or fuselage of `model`: why it was left out
 /// on loading, if it was; that queries address the first model only, if another model holds
