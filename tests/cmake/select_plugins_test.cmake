@@ -1,7 +1,7 @@
 cmake_minimum_required(VERSION 3.20)
 # `cmake -P` test of airshape_select_plugins: a selective build brings in what a plugin
 # builds on, before it, and refuses an unknown name.
-set(AIRSHAPE_ALL_PLUGINS wing fuselage controlsurfaces structure nacelle rotor generic)
+set(AIRSHAPE_ALL_PLUGINS wing fuselage controlsurfaces structure nacelle rotor tank generic)
 set(AIRSHAPE_PLUGIN_FOLDER ${SOURCE}/plugins)
 include(${SOURCE}/cmake/AirshapePlugin.cmake)
 
@@ -12,5 +12,9 @@ endif()
 airshape_select_plugins(selected structure controlsurfaces nacelle)
 if(NOT selected STREQUAL "wing;fuselage;structure;controlsurfaces;nacelle")
   message(FATAL_ERROR "structure, controlsurfaces, nacelle selected '${selected}'")
+endif()
+airshape_select_plugins(selected tank)
+if(NOT selected STREQUAL "fuselage;tank")
+  message(FATAL_ERROR "tank selected '${selected}', expected 'fuselage;tank'")
 endif()
 message(STATUS "plugin selection: ok")

@@ -94,22 +94,29 @@ bool smoothThrough(const Geom_BSplineCurve& curve, double t) {
 
 std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration& configuration,
                                                              const schema::FuselageType& fuselage) {
-  return build(configuration, fuselage);
+  return build(configuration, fuselage, model::componentTransform(configuration, fuselage.uID));
+}
+
+std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration& configuration,
+                                                             const schema::FuselageType& body,
+                                                             const model::Transform& placement) {
+  return build(configuration, body, placement);
 }
 
 std::shared_ptr<const FuselageGeometry> FuselageGeometry::of(const Configuration& configuration,
                                                              const schema::DuctType& duct) {
-  return build(configuration, duct);
+  return build(configuration, duct, model::componentTransform(configuration, duct.uID));
 }
 
 template <class Body>
 std::shared_ptr<const FuselageGeometry> FuselageGeometry::build(const Configuration& configuration,
-                                                                const Body& fuselage) {
+                                                                const Body& fuselage,
+                                                                const model::Transform& placement) {
   return configuration.cache().obtain<FuselageGeometry>("fuselage-geometry:" + fuselage.uID, [&] {
     auto geometry = std::make_shared<FuselageGeometry>();
     geometry->xpath_ = fuselage.xpath;
     ProfileLibrary profiles(configuration);
-    const auto placed = model::placedElements(configuration, fuselage);
+    const auto placed = model::placedElements(fuselage, placement);
     if (!fuselage.segments) return std::shared_ptr<const FuselageGeometry>(geometry);
     std::vector<PlacedProfile> sections;  // in chain order
     std::vector<const schema::GuideCurvesType*> guidesPerSegment;

@@ -37,6 +37,11 @@ class FuselageGeometry {
                                                     const schema::FuselageType& fuselage);
   /// A duct is lofted as a fuselage is: sections of fuselage profiles, segments, positionings.
   static std::shared_ptr<const FuselageGeometry> of(const Configuration& configuration, const schema::DuctType& duct);
+  /// A body defined as a fuselage is but placed by `placement` instead of a component
+  /// transformation of its own (a tank vessel, placed by its tank).
+  static std::shared_ptr<const FuselageGeometry> of(const Configuration& configuration,
+                                                    const schema::FuselageType& body,
+                                                    const model::Transform& placement);
 
   const std::vector<std::string>& segmentUids() const { return segmentUids_; }
 
@@ -59,7 +64,8 @@ class FuselageGeometry {
 
  private:
   template <class Body>
-  static std::shared_ptr<const FuselageGeometry> build(const Configuration& configuration, const Body& body);
+  static std::shared_ptr<const FuselageGeometry> build(const Configuration& configuration, const Body& body,
+                                                       const model::Transform& placement);
 
   /// Skins the placed profiles (chain order): the loft without guide curves.
   void loft(const std::vector<PlacedProfile>& sections);

@@ -1,5 +1,6 @@
-// The fuselage plugin: CPACS fuselages. It answers the fuselage ops that need no
-// geometry; the geometry ops are registered as pending until the fuselage builder exists.
+// The fuselage plugin: CPACS fuselages and ducts, lofted from their sections of fuselage
+// profiles, and the fuselage ops. It offers the same loft to other plugins (tank vessels)
+// through its public interface (airshape/fuselage/fuselage_services.h).
 #include <algorithm>
 
 #include "airshape/configuration.h"
@@ -9,6 +10,7 @@
 #include "airshape/query/arguments.h"
 #include "airshape/query/model_selection.h"
 #include "fuselage_geometry.h"
+#include "fuselage_services.h"
 
 namespace airshape::fuselage {
 
@@ -55,6 +57,10 @@ std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
 
 class FuselagePlugin final : public plugin::BasicPlugin {
  public:
+  void offerServices(plugin::ServiceRegistry& services) const override {
+    services.offer<FuselageServices>(kFuselageServices, makeFuselageServices());
+  }
+
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
       const model::ModelComponents& model = model::modelHolding(c, uid);
@@ -81,7 +87,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
   }
 
   FuselagePlugin()
-      : BasicPlugin("fuselage", "0.2.0", "CPACS fuselages (profiles, sections, segments) and ducts lofted as they are",
+      : BasicPlugin("fuselage", "0.3.0", "CPACS fuselages (profiles, sections, segments) and ducts lofted as they are",
                     {{"fuselage", "fuselages/fuselage"}, {"fuselageSegment", ""}, {"duct", ""}, {"ductSegment", ""}}) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {

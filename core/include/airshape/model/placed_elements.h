@@ -16,14 +16,13 @@ struct PlacedElement {
   Transform transform;
 };
 
-/// Every section element of a wing or fuselage (any component with sections, elements and
-/// positionings), by element uID. Throws Error for broken positionings.
+/// Every section element of a body with sections, elements and positionings, placed by the
+/// component matrix `componentMatrix`, by element uID. Throws Error for broken positionings.
 template <class Component>
-auto placedElements(const Configuration& configuration, const Component& component) {
+auto placedElements(const Component& component, const Transform& componentMatrix) {
   using Element = std::decay_t<decltype(component.sections->section[0].elements->element[0])>;
   std::unordered_map<std::string, PlacedElement<Element>> placed;
   if (!component.sections) return placed;
-  const Transform componentMatrix = componentTransform(configuration, component.uID);
   const auto positioning = positioningTranslations(component.positionings.get());
   for (const auto& section : component.sections->section) {
     Transform sectionMatrix = componentMatrix;
@@ -36,6 +35,13 @@ auto placedElements(const Configuration& configuration, const Component& compone
                                       &element, sectionMatrix * transformationMatrix(element.transformation.get())});
   }
   return placed;
+}
+
+/// Every section element of a wing or fuselage (any component with sections, elements and
+/// positionings) placed by its component transformation, by element uID.
+template <class Component>
+auto placedElements(const Configuration& configuration, const Component& component) {
+  return placedElements(component, componentTransform(configuration, component.uID));
 }
 
 }  // namespace airshape::model

@@ -1,0 +1,76 @@
+// The tank plugin: fuel tanks and their vessels (hulls), lofted from sections and segments
+// by the fuselage plugin's public interface (airshape/fuselage/fuselage_services.h) or
+// revolved from design parameters (a cylinder between two domes). It reads the tanks of the
+// model's own fuelTanks (the layout after CPACS 3.5 that the reference reads) and the CPACS
+// 3.5 tanks inside fuselages (genericFuelTanks with hulls or design parameters).
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "airshape/plugin/basic_plugin.h"
+#include "airshape/xml/text.h"
+#include "vessel.h"
+
+namespace airshape::tank {
+namespace {
+
+/// A tank: the compound of its vessels' solids (an outer and an inner vessel overlap), or the
+/// one solid of its design parameters.
+NamedShape tankShape(const Configuration& configuration, const fuselage::FuselageServices& fuselages,
+                     const std::string& uid) {
+  const graph::Component& tank =
+      configuration.components().components()[static_cast<std::size_t>(configuration.components().find(uid))];
+  if (xml::name(*tank.element) == "integralFuelTank")
+    throw Error(ErrorCode::NotImplemented, "integral fuel tanks (bounded by fuselage structure) are not built yet", {},
+                tank.xpath);
+  const std::vector<std::string> vessels = vesselsOfTank(configuration, uid);
+  if (vessels.empty()) throw NoShape("the tank has no vessels: no shape", tank.xpath);
+  if (vessels == std::vector{uid}) return vesselSolid(configuration, fuselages, *vesselNamed(configuration, uid));
+  NamedShape result;
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const std::string& vesselUid : vessels) {
+    const NamedShape& vessel = configuration.shapes().namedShapeOf(configuration, vesselUid);
+    builder.Add(compound, vessel.shape);
+    result.faces.insert(result.faces.end(), vessel.faces.begin(), vessel.faces.end());
+  }
+  result.shape = compound;
+  return result;
+}
+
+class TankPlugin final : public plugin::BasicPlugin {
+ public:
+  TankPlugin()
+      : BasicPlugin("tank", "0.1.0", "fuel tanks and their vessels: lofted bodies or cylinders between domes",
+                    {{"fuelTank", ""}, {"tankHull", ""}, {"hullSegment", ""}}, {{"fuselage", "0.3.0", "1.0.0"}}) {}
+
+  void useServices(const plugin::ServiceRegistry& services) override {
+    fuselages_ = services.find<fuselage::FuselageServices>(fuselage::kFuselageServices);
+  }
+
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    const std::shared_ptr<const fuselage::FuselageServices> fuselages = fuselages_;
+    shapes.add("fuelTank",
+               [fuselages](const Configuration& c, const std::string& uid) { return tankShape(c, *fuselages, uid); });
+    shapes.add("tankHull", [fuselages](const Configuration& c, const std::string& uid) {
+      return vesselSolid(c, *fuselages, *vesselNamed(c, uid));
+    });
+    shapes.add("hullSegment", [fuselages](const Configuration& c, const std::string& uid) {
+      const std::string& vesselUid =
+          c.components().components()[static_cast<std::size_t>(c.components().find(uid))].parentUid;
+      const auto vessel = vesselNamed(c, vesselUid);
+      if (!vessel->body) throw Error(ErrorCode::InvalidModel, "the vessel has no segments", {}, vessel->xpath);
+      return fuselages->bodySegmentSolid(c, *vessel->body, vessel->placement, uid);
+    });
+  }
+
+ private:
+  std::shared_ptr<const fuselage::FuselageServices> fuselages_;
+};
+
+}  // namespace
+}  // namespace airshape::tank
+
+AIRSHAPE_PLUGIN(airshape::tank::TankPlugin)
