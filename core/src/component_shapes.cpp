@@ -7,6 +7,8 @@
 namespace airshape {
 
 const NamedShape& ComponentShapes::namedShapeOf(const Configuration& configuration, const std::string& uid) const {
+  if (uid.empty())
+    throw Error(ErrorCode::InvalidModel, "the element has no uID (the schema requires one): nothing names it to build");
   const long index = configuration.components().find(uid);
   if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
   const std::string& nodeType = configuration.components().components()[static_cast<std::size_t>(index)].nodeType;

@@ -1,9 +1,11 @@
-// The generic-geometry plugin: wing fuel tanks, decks and deck components, generic systems and
-// their components, and external objects (CAD files placed in the aircraft). Ducts are lofted
-// as fuselages are, by the fuselage plugin; tanks are the tank plugin's. It claims the node types of the component
-// catalogue (graph/component_graph.h); no builder exists yet. Landing gear is left to a plugin of its own (the
-// third-party example of tests/third_party_plugin is one).
+// The generic-geometry plugin: generic systems and their components, decks and their
+// components (seats, galleys, lavatories, ...), built from the geometry of the system or
+// deck elements they name (cuboids, cylinders, cones, ellipsoids, tori, multi-segment shapes
+// lofted through the fuselage plugin's public interface, and CAD files), and external
+// objects (CAD files placed in the aircraft). Wing fuel tanks are claimed without a builder.
+#include "airshape/configuration.h"
 #include "airshape/plugin/basic_plugin.h"
+#include "placed_parts.h"
 
 namespace airshape::generic {
 namespace {
@@ -11,13 +13,38 @@ namespace {
 class GenericPlugin final : public plugin::BasicPlugin {
  public:
   GenericPlugin()
-      : BasicPlugin("generic", "0.1.0", "wing fuel tanks, decks, systems and external objects (no builder yet)",
+      : BasicPlugin("generic", "0.2.0", "systems, decks and their components, external objects (CAD files)",
                     {{"wingFuelTank", ""},
                      {"deck", ""},
                      {"deckComponent", ""},
                      {"genericSystem", ""},
                      {"systemComponent", ""},
-                     {"genericGeometryComponent", ""}}) {}
+                     {"genericGeometryComponent", ""}},
+                    {{"fuselage", "0.3.0", "1.0.0"}}) {}
+
+  void useServices(const plugin::ServiceRegistry& services) override {
+    fuselages_ = services.find<fuselage::FuselageServices>(fuselage::kFuselageServices);
+  }
+
+  void registerShapeBuilders(ComponentShapes& shapes) const override {
+    const std::shared_ptr<const fuselage::FuselageServices> fuselages = fuselages_;
+    shapes.add("systemComponent", [fuselages](const Configuration& c, const std::string& uid) {
+      return systemComponentShape(c, *fuselages, uid);
+    });
+    shapes.add("deckComponent", [fuselages](const Configuration& c, const std::string& uid) {
+      return deckComponentShape(c, *fuselages, uid);
+    });
+    shapes.add("genericSystem", [](const Configuration& c, const std::string& uid) {
+      return compoundOfParts(c, uid, "systemComponent");
+    });
+    shapes.add("deck",
+               [](const Configuration& c, const std::string& uid) { return compoundOfParts(c, uid, "deckComponent"); });
+    shapes.add("genericGeometryComponent",
+               [](const Configuration& c, const std::string& uid) { return externalObjectShape(c, uid); });
+  }
+
+ private:
+  std::shared_ptr<const fuselage::FuselageServices> fuselages_;
 };
 
 }  // namespace

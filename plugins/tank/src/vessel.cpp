@@ -4,7 +4,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/schema/dom_reader.h"
+#include "airshape/schema/element_reading.h"
 #include "airshape/xml/text.h"
 #include "dome_meridian.h"
 #include "vessel_of_revolution.h"
@@ -21,40 +21,9 @@ const graph::Component& componentNamed(const Configuration& configuration, const
   return configuration.components().components()[static_cast<std::size_t>(index)];
 }
 
-/// A child element read into a schema node. Tanks of the model's own fuelTanks are newer than
-/// the CPACS 3.5 schema the document model is generated from, so their parts are read here,
-/// into the 3.5 types they share; the reader binds the node to the element, which it leaves
-/// unchanged.
-template <class Node>
-std::shared_ptr<Node> readChild(const DOMElement& parent, const std::string& name, const std::string& xpath) {
-  const DOMElement* child = xml::firstChild(parent, name);
-  if (child == nullptr) return nullptr;
-  auto node = std::make_shared<Node>();
-  schema::ReadReport ignored;  // what the schema does not say is read as far as it goes
-  schema::readNode(const_cast<DOMElement&>(*child), *node, xpath + "/" + name, ignored);
-  return node;
-}
-
-/// The number a child element holds, absent without the child.
-std::optional<double> numberIn(const DOMElement& parent, const std::string& name, const std::string& xpath) {
-  const DOMElement* child = xml::firstChild(parent, name);
-  if (child == nullptr) return std::nullopt;
-  const std::string text = xml::text(*child);
-  std::size_t used = 0;
-  double value = NAN;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || text.find_first_not_of(" \t\r\n", used) != std::string::npos || !std::isfinite(value))
-    throw Error(ErrorCode::InvalidModel, "'" + text + "' is not a number", {}, xpath + "/" + name);
-  return value;
-}
-
 /// The own transformation of an element (identity without one).
 model::Transform ownTransformation(const DOMElement& element, const std::string& xpath) {
-  const auto transformation = readChild<schema::TransformationType>(element, "transformation", xpath);
+  const auto transformation = schema::readChild<schema::TransformationType>(element, "transformation", xpath);
   return model::transformationMatrix(transformation.get());
 }
 
@@ -62,7 +31,8 @@ model::Transform ownTransformation(const DOMElement& element, const std::string&
 /// the component it is attached to (its parentUID, else the fuselage it lies in) unless its
 /// translation is absGlobal.
 model::Transform tankPlacement(const Configuration& configuration, const graph::Component& tank) {
-  const auto transformation = readChild<schema::TransformationType>(*tank.element, "transformation", tank.xpath);
+  const auto transformation =
+      schema::readChild<schema::TransformationType>(*tank.element, "transformation", tank.xpath);
   model::Transform placement = model::transformationMatrix(transformation.get());
   const bool absGlobal = transformation && transformation->translation &&
                          transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
@@ -86,15 +56,13 @@ std::shared_ptr<const Vessel> readVessel(const Configuration& configuration, con
     vessel->xpath = component.xpath;
   }
   vessel->placement = tankPlacement(configuration, *tank) * ownTransformation(*element, vessel->xpath);
-  if (xml::firstChild(*element, "sections") != nullptr) {
-    auto body = std::make_shared<schema::FuselageType>();
-    schema::ReadReport ignored;
-    schema::readNode(const_cast<DOMElement&>(*element), *body, vessel->xpath, ignored);
-    vessel->body = body;
-  }
-  vessel->cylinderRadius = numberIn(*element, "cylinderRadius", vessel->xpath);
-  vessel->cylinderLength = numberIn(*element, "cylinderLength", vessel->xpath);
-  vessel->dome = readChild<schema::DomeTypeType>(*element, "domeType", vessel->xpath);
+  // Vessels of model tanks are newer than the CPACS 3.5 schema: read here into the 3.5 types
+  // they share.
+  if (xml::firstChild(*element, "sections") != nullptr)
+    vessel->body = schema::readElement<schema::FuselageType>(*element, vessel->xpath);
+  vessel->cylinderRadius = schema::numberIn(*element, "cylinderRadius", vessel->xpath);
+  vessel->cylinderLength = schema::numberIn(*element, "cylinderLength", vessel->xpath);
+  vessel->dome = schema::readChild<schema::DomeTypeType>(*element, "domeType", vessel->xpath);
   return vessel;
 }
 
