@@ -401,15 +401,25 @@ def test_approximation_settings_that_cannot_be_met_name_the_node(tmp_path):
 def test_ducts_are_lofted_as_fuselages_are(tmp_path):
     # A duct of the unit circle at x = 0, 5 and 10: the cylinder again, and its segments halves.
     profiles = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(64)}</fuselageProfile></fuselageProfiles>'
-    duct = fuselage("Pipe", "Circle", 10.0).replace("<fuselage ", "<duct ").replace("</fuselage>", "</duct>")
-    assembly = '<ductAssembly uID="Both"><name>a</name><ductUIDs><uID>Pipe</uID></ductUIDs></ductAssembly>'
+    def duct(uid, shift=0.0):
+        return (fuselage(uid, "Circle", 10.0).replace("<fuselage ", "<duct ").replace("</fuselage>", "</duct>")
+                .replace("<transformation/>", f"<transformation><translation><x>{shift}</x></translation>"
+                                              "</transformation>", 1))
+    # "Both": the pipe and the same pipe 4 further along x, overlapping over 6 m; "Empty": none.
+    assembly = ('<ductAssembly uID="Both"><name>a</name><ductUIDs><uID>Pipe</uID><uID>Further</uID></ductUIDs>'
+                '</ductAssembly><ductAssembly uID="Empty"><name>a</name><ductUIDs/></ductAssembly>'
+                '<ductAssembly uID="Wrong"><name>a</name><ductUIDs><uID>Hull</uID></ductUIDs></ductAssembly>')
     path = tmp_path / "duct.xml"
-    path.write_text(HEADER + fuselage("Hull", "Circle", 10.0) + f"</fuselages><ducts>{duct}{assembly}</ducts>"
+    path.write_text(HEADER + fuselage("Hull", "Circle", 10.0) + f"</fuselages><ducts>{duct('Pipe')}{duct('Further', 4.0)}{assembly}</ducts>"
                     f"</model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
     volume, segment, kind, segment_kind = ask(
         path, {"op": "component_volume", "uid": "Pipe"}, {"op": "component_volume", "uid": "PipeG1"},
         {"op": "component_type", "uid": "Pipe"}, {"op": "component_type", "uid": "PipeG1"})
     assert math.isclose(volume, math.pi * 10, rel_tol=1e-5) and math.isclose(segment, math.pi * 5, rel_tol=1e-5)
     assert kind == "duct" and segment_kind == "fuselage_segment"
-    result = airshape("query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Both"}) + "\n")
-    assert "duct assemblies are not built yet" in json.loads(result.stdout)["error"]
+    union, both_kind = ask(path, {"op": "component_volume", "uid": "Both"}, {"op": "component_type", "uid": "Both"})
+    assert math.isclose(union, math.pi * 14, rel_tol=1e-5) and both_kind == "duct"  # one pipe 14 long
+    queries = "".join(json.dumps({"op": "component_volume", "uid": uid}) + "\n" for uid in ("Empty", "Wrong"))
+    empty, wrong = (json.loads(line)["error"] for line in airshape("query", str(path), stdin=queries).stdout.splitlines())
+    assert "ductAssembly[2]: the duct assembly names no ducts" in empty
+    assert "ductAssembly[3]/ductUIDs: 'Hull' names no duct" in wrong

@@ -120,7 +120,7 @@ def test_build_says_for_every_element_what_became_of_it(with_elements):
     assert "valid solid" in said["Flap"]
     assert "spoiler[1]: the device has no outerShape with an inner and an outer border" in said["Spoiler"]
     assert "sparSegment[1]/sparPositionUIDs: a spar segment needs at least two spar positions" in said["FrontSpar"]
-    assert "no builder yet for generic_system (plugin generic)" in said["Battery"]
+    assert "none of its components has a shape: no shape" in said["Battery"]  # "Cell" names no element
     assert "not supported: no loaded plugin builds landingGear" in said["NoseGear"]
 
 

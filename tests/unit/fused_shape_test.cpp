@@ -6,7 +6,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
-#include "airshape/export/fused_shape.h"
+#include "airshape/fused_shape.h"
 #include "airshape/geometry/brep_measures.h"
 
 namespace {
@@ -29,7 +29,7 @@ TEST(FusedShape, UnionKeepsTheNamesOfWhatRemains) {
   // name, as do the bar's side faces, cut to what lies outside.
   const airshape::NamedShape a = namedBox("a", gp_Pnt(0, 0, 0), 1.0, 1.0, 1.0);
   const airshape::NamedShape b = namedBox("b", gp_Pnt(0.5, 0.25, 0.25), 1.0, 0.5, 0.5);
-  const airshape::NamedShape fused = airshape::exporting::fuseNamedShapes({&a, &b});
+  const airshape::NamedShape fused = airshape::fuseNamedShapes({&a, &b});
   EXPECT_NEAR(airshape::geometry::volumeOf(fused.shape), 1.0 + 0.25 - 0.125, 1e-12);
   TopTools_IndexedMapOfShape resultFaces;
   TopExp::MapShapes(fused.shape, TopAbs_FACE, resultFaces);
@@ -45,5 +45,5 @@ TEST(FusedShape, UnionKeepsTheNamesOfWhatRemains) {
 
 TEST(FusedShape, OneShapeIsItself) {
   const airshape::NamedShape a = namedBox("a", gp_Pnt(0, 0, 0), 2.0, 2.0, 2.0);
-  EXPECT_TRUE(airshape::exporting::fuseNamedShapes({&a}).shape.IsSame(a.shape));
+  EXPECT_TRUE(airshape::fuseNamedShapes({&a}).shape.IsSame(a.shape));
 }

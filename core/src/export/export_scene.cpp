@@ -13,7 +13,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/export/fused_shape.h"
+#include "airshape/fused_shape.h"
 #include "airshape/graph/parallel_build.h"
 #include "airshape/model/symmetry.h"
 #include "posed_components.h"

@@ -5,7 +5,9 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/fused_shape.h"
 #include "airshape/model/primary_model.h"
+#include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
 #include "airshape/query/model_selection.h"
@@ -35,11 +37,38 @@ std::vector<const schema::DuctType*> everyDuct(const Configuration& configuratio
   return ducts;
 }
 
-/// The duct of this uID; a duct assembly (a union of ducts) is not built yet.
-const schema::DuctType& ductNamed(const Configuration& configuration, const std::string& uid) {
+/// The duct of this uID, or null.
+const schema::DuctType* ductNamed(const Configuration& configuration, const std::string& uid) {
   for (const schema::DuctType* duct : everyDuct(configuration))
-    if (duct->uID == uid) return *duct;
-  throw Error(ErrorCode::NotImplemented, "duct assemblies are not built yet ('" + uid + "')");
+    if (duct->uID == uid) return duct;
+  return nullptr;
+}
+
+/// The duct assembly of this uID; throws Error when there is none.
+const schema::DuctAssemblyType& ductAssemblyNamed(const Configuration& configuration, const std::string& uid) {
+  const auto& vehicles = configuration.cpacs().vehicles;
+  if (vehicles && vehicles->aircraft)
+    for (const auto& model : vehicles->aircraft->model)
+      if (model.ducts)
+        for (const auto& assembly : model.ducts->ductAssembly)
+          if (assembly.uID == uid) return assembly;
+  throw Error(ErrorCode::InvalidArgument, "no duct or duct assembly with uID '" + uid + "'");
+}
+
+/// A duct assembly: the Boolean union of its ducts, with the mirrored halves of those that
+/// have a symmetry plane (the cutting tool the schema applies to wings and fuselages).
+NamedShape ductAssemblySolid(const Configuration& configuration, const schema::DuctAssemblyType& assembly) {
+  std::vector<const NamedShape*> ducts;
+  if (assembly.ductUIDs)
+    for (const std::string& uid : assembly.ductUIDs->uID) {
+      if (ductNamed(configuration, uid) == nullptr)
+        throw Error(ErrorCode::InvalidModel, "'" + uid + "' names no duct", {}, assembly.xpath + "/ductUIDs");
+      ducts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
+      if (model::resolvedSymmetry(configuration, uid) != "none")
+        ducts.push_back(&configuration.shapes().mirroredShapeOf(configuration, uid));
+    }
+  if (ducts.empty()) throw NoShape("the duct assembly names no ducts: no shape", assembly.xpath);
+  return fuseNamedShapes(ducts);
 }
 
 /// The duct holding a duct segment of this uID.
@@ -67,7 +96,8 @@ class FuselagePlugin final : public plugin::BasicPlugin {
       return FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, uid, "fuselage"))->solid(uid);
     });
     shapes.add("duct", [](const Configuration& c, const std::string& uid) {
-      return FuselageGeometry::of(c, ductNamed(c, uid))->solid(uid);
+      if (const schema::DuctType* duct = ductNamed(c, uid)) return FuselageGeometry::of(c, *duct)->solid(uid);
+      return ductAssemblySolid(c, ductAssemblyNamed(c, uid));
     });
     shapes.add("ductSegment", [](const Configuration& c, const std::string& uid) {
       const schema::DuctType& duct = ductHolding(c, uid);

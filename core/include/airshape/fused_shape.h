@@ -4,11 +4,11 @@
 
 #include "airshape/named_shape.h"
 
-namespace airshape::exporting {
+namespace airshape {
 
 /// The Boolean union of named solids, each face of the result named as the face it came
 /// from (faces split by the union keep the name on every piece; faces inside the union
 /// disappear). Throws Error when the union fails or is not a valid shape.
 NamedShape fuseNamedShapes(const std::vector<const NamedShape*>& shapes);
 
-}  // namespace airshape::exporting
+}  // namespace airshape

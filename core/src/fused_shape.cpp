@@ -1,4 +1,4 @@
-#include "airshape/export/fused_shape.h"
+#include "airshape/fused_shape.h"
 
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -6,7 +6,7 @@
 
 #include "airshape/error.h"
 
-namespace airshape::exporting {
+namespace airshape {
 
 NamedShape fuseNamedShapes(const std::vector<const NamedShape*>& shapes) {
   if (shapes.empty()) throw Error(ErrorCode::InvalidArgument, "nothing to fuse");
@@ -27,4 +27,4 @@ NamedShape fuseNamedShapes(const std::vector<const NamedShape*>& shapes) {
   return result;
 }
 
-}  // namespace airshape::exporting
+}  // namespace airshape
