@@ -5,7 +5,7 @@ STEP object (written by `airshape export` from a box system) placed by a transfo
 import json
 import math
 
-from conftest import airshape, query_answers as ask
+from conftest import airshape, conformance_passed, query_answers as ask
 from test_fuselage import HEADER, circle, fuselage
 
 
@@ -131,3 +131,8 @@ def test_an_external_step_object_placed_by_its_transformation(tmp_path):
     lost, odd = (json.loads(line)["error"] for line in airshape("query", str(path), stdin=queries).stdout.splitlines())
     assert "nowhere.step' cannot be read" in lost and "genericGeometryComponent[2]/linkToFile" in lost
     assert "unknown file format 'Stl'" in odd
+
+
+def test_generic_conformance_does_not_regress():
+    passed, output = conformance_passed("cases-generic.json")
+    assert passed >= 188, output[-3000:]
