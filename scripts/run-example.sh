@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, and runs airshape on the example airliner:
-# checks it, builds every component with the mirrored halves, writes STEP, STL and glTF next
-# to it with a summary (volumes, areas, time), and asks a few queries.
+# checks it, builds every element (wings, fuselage, flaps, slats, ailerons, spoiler, spars,
+# ribs, engine, pylon, tank, duct) and says what became of each, writes the aircraft with its
+# mirrored halves as STEP, STL and glTF next to it with a summary (volumes, areas, time), and
+# asks a few queries.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 example=examples/generic-airliner.xml
 ./build/bin/airshape validate "$example"
+./build/bin/airshape build "$example"
 ./build/bin/airshape export "$example" --mirror --force \
   -o examples/generic-airliner.step -o examples/generic-airliner.stl -o examples/generic-airliner.glb
 printf '%s\n' '{"op":"wing_reference_area","wing":"Wing","plane":"x-y"}' '{"op":"wing_span","wing":"Wing"}' \

@@ -119,7 +119,7 @@ void printSummary(const exporting::ExportScene& scene) {
 std::size_t withoutBuilder(const Configuration& configuration) {
   std::size_t count = 0;
   for (const graph::Component& component : configuration.components().components())
-    count += configuration.shapes().find(component.nodeType) == nullptr ? 1 : 0;
+    count += component.nodeType != graph::kModelNodeType && configuration.shapes().find(component.nodeType) == nullptr;
   return count;
 }
 

@@ -91,13 +91,15 @@ static void typed_ops_agree_with_the_query(void) {
   CHECK(airshape_bounding_box(c, NULL, minimum, maximum) == AIRSHAPE_OK && maximum[1] == -minimum[1]);
   CHECK(airshape_bounding_box(c, "VTP", minimum, maximum) == AIRSHAPE_OK && minimum[2] > 0);
   int component_segments = -1;
-  CHECK(airshape_wing_component_segment_count(c, 1, &component_segments) == AIRSHAPE_OK && component_segments == 0);
+  CHECK(airshape_wing_component_segment_count(c, 1, &component_segments) == AIRSHAPE_OK && component_segments == 1);
+  CHECK(airshape_component_segment_to_segment(c, 1, 1, 0.5, 0.5, NULL, &eta, &xsi) == AIRSHAPE_OK && eta >= 0 &&
+        eta <= 1 && xsi >= 0 && xsi <= 1);
 
   /* Bad arguments: statuses and messages, and the handle goes on working. */
   CHECK(airshape_wing_upper_point(c, 1, 1, 1.5, 0.3, point) == AIRSHAPE_INVALID_ARGUMENT);
   CHECK(strstr(airshape_last_error(), "eta") != NULL);
   CHECK(airshape_wing_volume(c, 9, &volume) == AIRSHAPE_INVALID_ARGUMENT);
-  CHECK(airshape_component_segment_to_segment(c, 1, 1, 0.5, 0.5, NULL, &eta, &xsi) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(airshape_component_segment_to_segment(c, 1, 2, 0.5, 0.5, NULL, &eta, &xsi) == AIRSHAPE_INVALID_ARGUMENT);
   CHECK(airshape_query(c, "not json", &text) == AIRSHAPE_INVALID_ARGUMENT);
   CHECK(airshape_wing_volume(c, 1, &volume) == AIRSHAPE_OK);
   airshape_close(c);

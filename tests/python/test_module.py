@@ -80,6 +80,10 @@ def test_editing_rebuilds_only_the_edited_wing(config):
 def test_sections_and_segments_are_removed_and_added(config):
     wing = config.wings["Wing"]
     volume, fuselage_volume = wing.volume, config.fuselages[0].volume
+    # The wing box runs to the tip section: it goes first and comes back last.
+    boxes = config.node("/cpacs/vehicles/aircraft/model/wings/wing[@uID='Wing']").componentSegments
+    box = boxes[0].xml
+    boxes[0].remove()
     outer = wing.segments[1], wing.positionings[2], wing.sections[2]
     saved = [node.xml for node in outer]
     with pytest.raises(airshape.ArgumentError):  # the outer segment still refers to it
@@ -92,6 +96,8 @@ def test_sections_and_segments_are_removed_and_added(config):
     wing.positionings.append(saved[1])
     wing.segments.append(saved[0])
     assert (wing.segment_count, wing.section_count) == (2, 3)
+    boxes.append(box)
+    assert len(wing.component_segments) == 1
     assert wing.volume == pytest.approx(volume, rel=1e-12)
     assert config.fuselages[0].volume == fuselage_volume
     assert config.cache_statistics()["builds_by_key"]["fuselage-geometry:Fuselage"] == 1

@@ -106,26 +106,38 @@ class CadExportReadBack : public ::testing::Test {
     configuration_.reset();
   }
 
+  /// One answer of the query service.
+  static query::Json asked(const std::string& question) {
+    return query::answer(*configuration_, plugin::processPlugins().queries(), question)["ok"];
+  }
+
+  /// The uIDs of the wings and fuselages (one solid each; the example's other components,
+  /// nacelles and the like, are compounds of several).
+  static std::vector<std::string> wingsAndFuselages() {
+    std::vector<std::string> uids;
+    for (const std::string kind : {"wing", "fuselage"}) {
+      const long count = asked("{\"op\":\"" + kind + "_count\"}").get<long>();
+      for (long index = 1; index <= count; ++index)
+        uids.push_back(
+            asked("{\"op\":\"" + kind + "_uid\",\"" + kind + "\":" + std::to_string(index) + "}").get<std::string>());
+    }
+    return uids;
+  }
+
   /// The volumes the query service gives for every wing and fuselage, smallest first.
   static std::vector<double> queriedVolumes() {
     std::vector<double> volumes;
-    const query::QueryRegistry& ops = plugin::processPlugins().queries();
-    for (const char* kind : {"wing", "fuselage"}) {
-      const std::string counted = "{\"op\":\"" + std::string(kind) + "_count\"}";
-      const long count = query::answer(*configuration_, ops, counted)["ok"].get<long>();
-      for (long index = 1; index <= count; ++index) {
-        const std::string asked =
-            "{\"op\":\"" + std::string(kind) + "_volume\",\"" + kind + "\":" + std::to_string(index) + "}";
-        volumes.push_back(query::answer(*configuration_, ops, asked)["ok"].get<double>());
-      }
-    }
+    for (const std::string& uid : wingsAndFuselages())
+      volumes.push_back(asked("{\"op\":\"component_volume\",\"uid\":\"" + uid + "\"}").get<double>());
     std::sort(volumes.begin(), volumes.end());
     return volumes;
   }
 
   static std::string exported(const std::string& name) {
     const std::string path = (folder_ / name).string();
-    exporting::exportConfiguration(*configuration_, path, {});
+    exporting::ExportOptions options;
+    options.components = wingsAndFuselages();
+    exporting::exportConfiguration(*configuration_, path, options);
     return path;
   }
 

@@ -3,6 +3,8 @@
 // through its public interface (airshape/fuselage/fuselage_services.h).
 #include <algorithm>
 
+#include <gp_Trsf.hxx>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/fused_shape.h"
@@ -68,6 +70,9 @@ NamedShape ductAssemblySolid(const Configuration& configuration, const schema::D
         ducts.push_back(&configuration.shapes().mirroredShapeOf(configuration, uid));
     }
   if (ducts.empty()) throw NoShape("the duct assembly names no ducts: no shape", assembly.xpath);
+  // One duct is copied: an export names the faces of each component, which two components
+  // sharing faces would confuse.
+  if (ducts.size() == 1) return transformedNamedShape(*ducts.front(), gp_Trsf());
   return fuseNamedShapes(ducts);
 }
 

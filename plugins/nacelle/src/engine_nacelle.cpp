@@ -51,15 +51,19 @@ NamedShape engineNacelle(const Configuration& configuration, const std::string& 
   TopoDS_Compound compound;
   builder.MakeCompound(compound);
   NamedShape nacelleShape;
+  int parts = 0;
   auto add = [&](const TopoDS_Shape& solid, const std::string& name) {
     builder.Add(compound, solid);
+    nacelleShape.shape = solid;
+    ++parts;
     for (TopExp_Explorer face(solid, TopAbs_FACE); face.More(); face.Next())
       nacelleShape.faces.emplace_back(placementUid + "/" + name, TopoDS::Face(face.Current()));
   };
   add(cowlSolid(configuration, *nacelle.fanCowl), "fan cowl");
   if (nacelle.coreCowl) add(cowlSolid(configuration, *nacelle.coreCowl), "core cowl");
   if (nacelle.centerCowl) add(centerCowlSolid(configuration, *nacelle.centerCowl), "centre cowl");
-  nacelleShape.shape = compound;
+  // One cowl is its solid itself (CAD formats name solids, not compounds); more, a compound.
+  if (parts > 1) nacelleShape.shape = compound;
   return transformedNamedShape(nacelleShape, model::componentTransform(configuration, placementUid));
 }
 

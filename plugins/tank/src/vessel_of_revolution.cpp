@@ -1,13 +1,15 @@
 #include "vessel_of_revolution.h"
 
-#include <utility>
-#include <vector>
+#include <cmath>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <GC_MakeSegment.hxx>
+#include <GProp_GProps.hxx>
+#include <GeomConvert.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Solid.hxx>
@@ -21,10 +23,12 @@ namespace airshape::tank {
 
 namespace {
 
-/// A meridian edge and the name of the face it sweeps.
-using NamedEdge = std::pair<std::string, TopoDS_Edge>;
-
-TopoDS_Edge edgeOf(const Handle(Geom_Curve) & curve) { return BRepBuilderAPI_MakeEdge(curve).Edge(); }
+/// The edge of a meridian curve as a B-spline (conic arcs exactly, as rational ones): CAD
+/// exchange keeps B-spline surfaces of revolution whole, where STEP readers took arcs of
+/// ellipses trimmed by angle for less than they are.
+TopoDS_Edge edgeOf(const Handle(Geom_Curve) & curve) {
+  return BRepBuilderAPI_MakeEdge(Handle(Geom_Curve)(GeomConvert::CurveToBSplineCurve(curve))).Edge();
+}
 
 }  // namespace
 
@@ -35,19 +39,16 @@ NamedShape vesselOfRevolution(const DomeMeridian& dome, double cylinderRadius, d
   // The rear dome is the front one mirrored in the plane through the cylinder's middle.
   gp_Trsf mirror;
   mirror.SetMirror(gp_Ax2(gp_Pnt(middle, 0, 0), gp_Dir(1, 0, 0)));
-  std::vector<NamedEdge> meridian;
-  for (const Handle(Geom_Curve) & curve : dome.curves) meridian.emplace_back(uid + "/front dome", edgeOf(curve));
-  if (cylinderLength > 0.0)
-    meridian.emplace_back(uid + "/cylinder", edgeOf(GC_MakeSegment(gp_Pnt(dome.depth, 0, cylinderRadius),
-                                                                   gp_Pnt(2 * middle - dome.depth, 0, cylinderRadius))
-                                                        .Value()));
-  for (auto curve = dome.curves.rbegin(); curve != dome.curves.rend(); ++curve) {
-    Handle(Geom_Curve) mirrored = Handle(Geom_Curve)::DownCast((*curve)->Transformed(mirror));
-    meridian.emplace_back(uid + "/rear dome", edgeOf(mirrored->Reversed()));
-  }
-  // Closed along the axis, the meridian bounds a planar face whose revolution is the solid.
+  // The meridian from the front apex over the cylinder to the rear apex, closed along the
+  // axis: it bounds a planar face whose revolution is the solid.
   BRepBuilderAPI_MakeWire wire;
-  for (const auto& [name, edge] : meridian) wire.Add(edge);
+  for (const Handle(Geom_Curve) & curve : dome.curves) wire.Add(edgeOf(curve));
+  if (cylinderLength > 0.0)
+    wire.Add(
+        edgeOf(GC_MakeSegment(gp_Pnt(dome.depth, 0, cylinderRadius), gp_Pnt(2 * middle - dome.depth, 0, cylinderRadius))
+                   .Value()));
+  for (auto curve = dome.curves.rbegin(); curve != dome.curves.rend(); ++curve)
+    wire.Add(edgeOf(Handle(Geom_Curve)::DownCast((*curve)->Transformed(mirror))->Reversed()));
   wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(2 * middle, 0, 0), gp_Pnt(0, 0, 0)).Edge());
   if (!wire.IsDone()) throw Error(ErrorCode::InvalidModel, "the vessel's meridian is not connected");
   BRepBuilderAPI_MakeFace section(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0)), wire.Wire());
@@ -57,11 +58,18 @@ NamedShape vesselOfRevolution(const DomeMeridian& dome, double cylinderRadius, d
   TopExp_Explorer solid(revolution.Shape(), TopAbs_SOLID);
   if (!solid.More()) throw Error(ErrorCode::InvalidModel, "the vessel's revolution is no solid");
   vessel.shape = geometry::outwards(TopoDS::Solid(solid.Current()));
-  // The faces by the meridian edge each one sweeps (faces of the solid, as the revolution
-  // made them).
-  for (const auto& [name, edge] : meridian)
-    for (const TopoDS_Shape& face : revolution.Generated(edge))
-      if (face.ShapeType() == TopAbs_FACE) vessel.faces.emplace_back(name, TopoDS::Face(face));
+  // The faces by where they lie along the axis: the cylinder about the middle, the domes
+  // (with their lids) before and behind it.
+  for (TopExp_Explorer face(vessel.shape, TopAbs_FACE); face.More(); face.Next()) {
+    GProp_GProps properties;
+    BRepGProp::SurfaceProperties(face.Current(), properties);
+    const double x = properties.CentreOfMass().X();
+    const bool cylinder = cylinderLength > 0.0 && std::abs(x - middle) < 1e-9 * middle;
+    vessel.faces.emplace_back(uid + (cylinder     ? "/cylinder"
+                                     : x < middle ? "/front dome"
+                                                  : "/rear dome"),
+                              TopoDS::Face(face.Current()));
+  }
   return vessel;
 }
 
