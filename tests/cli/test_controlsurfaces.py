@@ -74,13 +74,14 @@ def test_spoilers_are_counted_on_their_own(tmp_path):
 
 
 def test_spoilers_are_components_the_component_list_leaves_out(tmp_path):
-    listed, kind, volume = ask(tmp_path, {"op": "component_list"}, {"op": "component_type", "uid": "Spoiler"},
-                               {"op": "component_volume", "uid": "Slat"})
+    listed, kind, volume, every = ask(tmp_path, {"op": "component_list"}, {"op": "component_type", "uid": "Spoiler"},
+                                      {"op": "component_volume", "uid": "Slat"}, {"op": "component_list", "all": True})
     uids = [entry["uid"] for entry in listed["ok"]]
     # The list is the reference's components (QUERY-components §1), which has no spoilers.
     assert "Flap" in uids and "Slat" in uids and "Spoiler" not in uids
     assert kind == {"ok": "control_surface"}
     assert uids == sorted(uids)
+    assert {"uid": "Spoiler", "type": "control_surface"} in every["ok"]  # all: every component
 
 
 # A rectangular wing (chord 2, span 5, x from 1 to 3) of parabolic arcs z = ±0.15·c·ξ(1−ξ),

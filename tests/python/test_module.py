@@ -263,3 +263,13 @@ def test_engines_and_pylons_as_components():
     assert engines["Low"].type == "engine_nacelle" and engines["Low"].volume > 0
     with pytest.raises(airshape.ModelError, match="has no nacelle"):
         engines["Hollow"].volume
+
+
+def test_every_family_of_the_example_as_components(config):
+    tanks, ducts = config.tanks, config.ducts
+    assert [tank.uid for tank in tanks] == ["CentreTank"] and tanks[0].type == "tank"
+    # The centre tank: a cylinder of radius 0.6 and length 2.4 between half ellipsoids 0.3 deep.
+    assert tanks[0].volume == pytest.approx(math.pi * 0.36 * 2.4 + 4 / 3 * math.pi * 0.36 * 0.3, rel=1e-6)
+    assert sorted(duct.uid for duct in ducts) == ["APU_Ducts", "APU_Exhaust"]
+    assert ducts[0].volume == pytest.approx(ducts[1].volume, rel=1e-9)  # the assembly of the one duct
+    assert config.systems == [] and config.decks == [] and config.external_objects == []

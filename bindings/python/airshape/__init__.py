@@ -507,7 +507,7 @@ class Configuration:
         return _Components(self, "fuselage", Fuselage)
 
     def _components_of_type(self, kind: str) -> List[Component]:
-        return [_component(self, entry["uid"], entry["type"]) for entry in self.query("component_list")
+        return [_component(self, entry["uid"], entry["type"]) for entry in self.query("component_list", all=True)
                 if entry["type"] == kind]
 
     @property
@@ -519,6 +519,31 @@ class Configuration:
     def pylons(self) -> List[Component]:
         """The engine pylons of the model (docs/nacelle.md)."""
         return self._components_of_type("engine_pylon")
+
+    @property
+    def tanks(self) -> List[Component]:
+        """The fuel tanks, each the compound of its vessels (docs/tank.md)."""
+        return self._components_of_type("tank")
+
+    @property
+    def ducts(self) -> List[Component]:
+        """The ducts and duct assemblies (docs/fuselage.md)."""
+        return self._components_of_type("duct")
+
+    @property
+    def systems(self) -> List[Component]:
+        """The generic systems, each the compound of its components (docs/generic.md)."""
+        return self._components_of_type("generic_system")
+
+    @property
+    def decks(self) -> List[Component]:
+        """The decks, each the compound of its seats, galleys, ... (docs/generic.md)."""
+        return self._components_of_type("deck")
+
+    @property
+    def external_objects(self) -> List[Component]:
+        """The external CAD objects placed in the aircraft (docs/generic.md)."""
+        return self._components_of_type("external_object")
 
     @property
     def rotors(self) -> _Components:

@@ -43,11 +43,14 @@ Json componentEntry(const graph::Component& component) {
 }
 
 /// Every component of the model queries address (the first model) that the reference
-/// registers (QUERY-components §1), sorted by uID.
-Json componentList(Configuration& configuration, const Json&) {
+/// registers (QUERY-components §1), sorted by uID; with "all": true every component Airshape
+/// knows (spoilers, frames, CPACS 3.5 tanks, ...).
+Json componentList(Configuration& configuration, const Json& query) {
+  const bool all = query.contains("all") && query.at("all").is_boolean() && query.at("all").get<bool>();
   std::vector<const graph::Component*> listed;
   for (const graph::Component& component : configuration.components().components())
-    if (component.model == 0 && !component.uid.empty() && component.listed && !model::leftOut(configuration, component))
+    if (component.model == 0 && !component.uid.empty() &&
+        (all || (component.listed && !model::leftOut(configuration, component))))
       listed.push_back(&component);
   std::sort(listed.begin(), listed.end(), [](const auto* a, const auto* b) { return a->uid < b->uid; });
   Json list = Json::array();
@@ -112,7 +115,9 @@ Json intersectionLength(Configuration& configuration, const Json& query) {
 }  // namespace
 
 void registerComponentQueries(QueryRegistry& registry) {
-  registry.add({"component_list", "core", "-> [{uid, type}] of every component of the first model, sorted by uID",
+  registry.add({"component_list", "core",
+                "[all] -> [{uid, type}] of the first model's components the reference registers, sorted by uID; "
+                "all: true lists every one",
                 componentList});
   registry.add({"component_children", "core",
                 "uid -> [{uid, type}] of the components directly inside it (segments, devices, spars, ...)",
