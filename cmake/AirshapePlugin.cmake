@@ -11,6 +11,25 @@ endfunction()
 # airshape_select_plugins(OUT plugin...): the plugins asked for and, transitively, those they
 # build on, as each plugin folder's manifest (plugins/NAME/plugin.cmake) names them in
 # AIRSHAPE_PLUGIN_REQUIRES; required plugins come first. An unknown name is a fatal error.
+# A plugin's public interface (its include/ folder, header-only): the target
+# airshape::<name> for the plugins that build on it and use it through Plugin::useServices,
+# exported to the build tree's airshape<Name>Targets.cmake and installed.
+function(airshape_plugin_interface name)
+  string(SUBSTRING ${name} 0 1 first)
+  string(TOUPPER ${first} first)
+  string(SUBSTRING ${name} 1 -1 rest)
+  set(targets airshape${first}${rest}Targets)
+  add_library(airshape_${name}_interface INTERFACE)
+  add_library(airshape::${name} ALIAS airshape_${name}_interface)
+  target_include_directories(airshape_${name}_interface INTERFACE
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  set_target_properties(airshape_${name}_interface PROPERTIES EXPORT_NAME ${name})
+  export(TARGETS airshape_${name}_interface NAMESPACE airshape:: FILE ${CMAKE_BINARY_DIR}/${targets}.cmake)
+  install(TARGETS airshape_${name}_interface EXPORT ${targets})
+  install(DIRECTORY include/airshape DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT ${targets} NAMESPACE airshape:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/airshape)
+endfunction()
+
 function(airshape_select_plugins out)
   set(selected)
   set(visiting)

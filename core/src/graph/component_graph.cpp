@@ -195,6 +195,12 @@ long ComponentGraph::find(const std::string& uid) const {
   return entry == byUid_.end() || uid.empty() ? -1 : static_cast<long>(entry->second);
 }
 
+const Component& ComponentGraph::named(const std::string& uid) const {
+  const long index = find(uid);
+  if (index < 0) throw Error(ErrorCode::InvalidArgument, "no component with uID '" + uid + "'");
+  return components_[static_cast<std::size_t>(index)];
+}
+
 void ComponentGraph::add(const DOMElement& element, const ComponentLocation& location, std::size_t model) {
   Component component;
   component.uid = xml::attribute(element, "uID");

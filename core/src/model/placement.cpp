@@ -131,6 +131,16 @@ Transform componentTransform(const Configuration& configuration, const std::stri
   return result;
 }
 
+Transform placedOnParent(const Configuration& configuration, const schema::TransformationType* transformation,
+                         const std::string& parentUid) {
+  Transform placement = transformationMatrix(transformation);
+  const bool absGlobal = transformation && transformation->translation &&
+                         transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
+  if (!absGlobal && !parentUid.empty())
+    placement.pretranslate(componentTransform(configuration, parentUid).translation());
+  return placement;
+}
+
 std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const schema::PositioningsType* positionings) {
   std::unordered_map<std::string, Eigen::Vector3d> result;
   if (positionings == nullptr) return result;

@@ -21,10 +21,7 @@ namespace {
 
 /// The component a query's uID argument (`name`) names; an error for any other uID.
 const graph::Component& componentArgument(const Configuration& configuration, const Json& query, const char* name) {
-  const std::string uid = stringArgument(query, name);
-  const long index = configuration.components().find(uid);
-  if (index < 0) throw Error(ErrorCode::InvalidArgument, "no component with uID '" + uid + "'");
-  return configuration.components().components()[static_cast<std::size_t>(index)];
+  return configuration.components().named(stringArgument(query, name));
 }
 
 /// The shape of a component that has geometry: not the model, built, and not empty.

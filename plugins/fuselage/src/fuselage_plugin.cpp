@@ -111,8 +111,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
       return geometry->segmentSolid(static_cast<std::size_t>(std::find(uids.begin(), uids.end(), uid) - uids.begin()));
     });
     shapes.add("fuselageSegment", [](const Configuration& c, const std::string& uid) {
-      const std::string& fuselageUid =
-          c.components().components()[static_cast<std::size_t>(c.components().find(uid))].parentUid;
+      const std::string& fuselageUid = c.components().named(uid).parentUid;
       const model::ModelComponents& model = model::modelHolding(c, fuselageUid);
       const auto geometry =
           FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, fuselageUid, "fuselage"));

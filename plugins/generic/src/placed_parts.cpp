@@ -19,23 +19,12 @@ namespace {
 
 using xercesc::DOMElement;
 
-const graph::Component& componentNamed(const Configuration& configuration, const std::string& uid) {
-  const long index = configuration.components().find(uid);
-  if (index < 0) throw Error(ErrorCode::InvalidArgument, "no component with uID '" + uid + "'");
-  return configuration.components().components()[static_cast<std::size_t>(index)];
-}
-
 /// An element's own transformation, translated by the origin of `parentUid` (unless its
 /// translation is absGlobal or there is no parent).
 model::Transform placed(const Configuration& configuration, const DOMElement& element, const std::string& xpath,
                         const std::string& parentUid) {
   const auto transformation = schema::readChild<schema::TransformationType>(element, "transformation", xpath);
-  model::Transform placement = model::transformationMatrix(transformation.get());
-  const bool absGlobal = transformation && transformation->translation &&
-                         transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
-  if (!absGlobal && !parentUid.empty())
-    placement.pretranslate(model::componentTransform(configuration, parentUid).translation());
-  return placement;
+  return model::placedOnParent(configuration, transformation.get(), parentUid);
 }
 
 /// Whether an element lies in the vehicles' element definitions, outside the models, the
@@ -74,27 +63,27 @@ NamedShape elementShape(const Configuration& configuration, const fuselage::Fuse
 
 NamedShape systemComponentShape(const Configuration& configuration, const fuselage::FuselageServices& fuselages,
                                 const std::string& uid) {
-  const graph::Component& component = componentNamed(configuration, uid);
+  const graph::Component& component = configuration.components().named(uid);
   const DOMElement& element = referencedElement(configuration, component, "systemElementUID", "system element");
   // A parentUID that names a component places it; else it sits in the aircraft's frame.
   const std::string parent =
-      componentNamed(configuration, component.parentUid).nodeType == "genericSystem" ? "" : component.parentUid;
+      configuration.components().named(component.parentUid).nodeType == "genericSystem" ? "" : component.parentUid;
   return elementShape(configuration, fuselages, component, element,
                       placed(configuration, *component.element, component.xpath, parent));
 }
 
 NamedShape deckComponentShape(const Configuration& configuration, const fuselage::FuselageServices& fuselages,
                               const std::string& uid) {
-  const graph::Component& component = componentNamed(configuration, uid);
+  const graph::Component& component = configuration.components().named(uid);
   const DOMElement& element = referencedElement(configuration, component, "deckElementUID", "deck element");
-  const graph::Component& deck = componentNamed(configuration, component.parentUid);
+  const graph::Component& deck = configuration.components().named(component.parentUid);
   const model::Transform deckPlacement = placed(configuration, *deck.element, deck.xpath, deck.parentUid);
   return elementShape(configuration, fuselages, component, element,
                       deckPlacement * placed(configuration, *component.element, component.xpath, ""));
 }
 
 NamedShape externalObjectShape(const Configuration& configuration, const std::string& uid) {
-  const graph::Component& component = componentNamed(configuration, uid);
+  const graph::Component& component = configuration.components().named(uid);
   const DOMElement* link = xml::firstChild(*component.element, "linkToFile");
   if (link == nullptr) throw Error(ErrorCode::InvalidModel, "no linkToFile given", {}, component.xpath);
   const TopoDS_Shape shape = readExternalFile(configuration.source(), xml::text(*link), xml::attribute(*link, "format"),
@@ -106,7 +95,7 @@ NamedShape externalObjectShape(const Configuration& configuration, const std::st
 }
 
 NamedShape compoundOfParts(const Configuration& configuration, const std::string& uid, const std::string& childType) {
-  const DOMElement* whole = componentNamed(configuration, uid).element;
+  const DOMElement* whole = configuration.components().named(uid).element;
   // Its parts are the components inside its element, whatever parent their parentUID names.
   const auto inside = [whole](const graph::Component& part) {
     for (const xercesc::DOMNode* above = part.element->getParentNode(); above != nullptr;
@@ -130,7 +119,7 @@ NamedShape compoundOfParts(const Configuration& configuration, const std::string
       // a component described by its mass only: nothing to add
     }
   }
-  if (!any) throw NoShape("none of its components has a shape: no shape", componentNamed(configuration, uid).xpath);
+  if (!any) throw NoShape("none of its components has a shape: no shape", configuration.components().named(uid).xpath);
   all.shape = compound;
   return all;
 }

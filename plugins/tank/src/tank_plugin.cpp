@@ -19,8 +19,7 @@ namespace {
 /// one solid of its design parameters.
 NamedShape tankShape(const Configuration& configuration, const fuselage::FuselageServices& fuselages,
                      const std::string& uid) {
-  const graph::Component& tank =
-      configuration.components().components()[static_cast<std::size_t>(configuration.components().find(uid))];
+  const graph::Component& tank = configuration.components().named(uid);
   if (xml::name(*tank.element) == "integralFuelTank")
     throw Error(ErrorCode::NotImplemented, "integral fuel tanks (bounded by fuselage structure) are not built yet", {},
                 tank.xpath);
@@ -58,8 +57,7 @@ class TankPlugin final : public plugin::BasicPlugin {
       return vesselSolid(c, *fuselages, *vesselNamed(c, uid));
     });
     shapes.add("hullSegment", [fuselages](const Configuration& c, const std::string& uid) {
-      const std::string& vesselUid =
-          c.components().components()[static_cast<std::size_t>(c.components().find(uid))].parentUid;
+      const std::string& vesselUid = c.components().named(uid).parentUid;
       const auto vessel = vesselNamed(c, vesselUid);
       if (!vessel->body) throw Error(ErrorCode::InvalidModel, "the vessel has no segments", {}, vessel->xpath);
       return fuselages->bodySegmentSolid(c, *vessel->body, vessel->placement, uid);

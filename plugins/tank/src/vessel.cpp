@@ -15,12 +15,6 @@ namespace {
 
 using xercesc::DOMElement;
 
-const graph::Component& componentNamed(const Configuration& configuration, const std::string& uid) {
-  const long index = configuration.components().find(uid);
-  if (index < 0) throw Error(ErrorCode::InvalidArgument, "no component with uID '" + uid + "'");
-  return configuration.components().components()[static_cast<std::size_t>(index)];
-}
-
 /// The own transformation of an element (identity without one).
 model::Transform ownTransformation(const DOMElement& element, const std::string& xpath) {
   const auto transformation = schema::readChild<schema::TransformationType>(element, "transformation", xpath);
@@ -33,12 +27,7 @@ model::Transform ownTransformation(const DOMElement& element, const std::string&
 model::Transform tankPlacement(const Configuration& configuration, const graph::Component& tank) {
   const auto transformation =
       schema::readChild<schema::TransformationType>(*tank.element, "transformation", tank.xpath);
-  model::Transform placement = model::transformationMatrix(transformation.get());
-  const bool absGlobal = transformation && transformation->translation &&
-                         transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
-  if (!absGlobal && !tank.parentUid.empty())
-    placement.pretranslate(model::componentTransform(configuration, tank.parentUid).translation());
-  return placement;
+  return model::placedOnParent(configuration, transformation.get(), tank.parentUid);
 }
 
 std::shared_ptr<const Vessel> readVessel(const Configuration& configuration, const graph::Component& component) {
@@ -52,7 +41,7 @@ std::shared_ptr<const Vessel> readVessel(const Configuration& configuration, con
       throw Error(ErrorCode::InvalidModel, "the tank has neither hulls nor design parameters", {}, component.xpath);
     vessel->xpath = component.xpath + "/designParameters";
   } else {
-    tank = &componentNamed(configuration, component.parentUid);
+    tank = &configuration.components().named(component.parentUid);
     vessel->xpath = component.xpath;
   }
   vessel->placement = tankPlacement(configuration, *tank) * ownTransformation(*element, vessel->xpath);
@@ -102,14 +91,14 @@ NamedShape revolvedVessel(const Vessel& vessel) {
 
 std::shared_ptr<const Vessel> vesselNamed(const Configuration& configuration, const std::string& uid) {
   return configuration.cache().obtain<Vessel>(
-      "vessel:" + uid, [&] { return readVessel(configuration, componentNamed(configuration, uid)); });
+      "vessel:" + uid, [&] { return readVessel(configuration, configuration.components().named(uid)); });
 }
 
 std::vector<std::string> vesselsOfTank(const Configuration& configuration, const std::string& tankUid) {
   std::vector<std::string> vessels;
   for (const graph::Component& component : configuration.components().components())
     if (component.nodeType == "tankHull" && component.parentUid == tankUid) vessels.push_back(component.uid);
-  if (vessels.empty() && xml::firstChild(*componentNamed(configuration, tankUid).element, "designParameters"))
+  if (vessels.empty() && xml::firstChild(*configuration.components().named(tankUid).element, "designParameters"))
     vessels.push_back(tankUid);
   return vessels;
 }

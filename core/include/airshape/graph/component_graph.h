@@ -77,6 +77,8 @@ class ComponentGraph {
   std::size_t depth(std::size_t index) const { return depth_[index]; }
   /// Index of the component with this uID, or -1.
   long find(const std::string& uid) const;
+  /// The component with this uID; throws Error(InvalidArgument) when no component has it.
+  const Component& named(const std::string& uid) const;
 
  private:
   /// Adds a component found at `location`, unless an earlier one holds its uID.

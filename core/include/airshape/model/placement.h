@@ -32,6 +32,13 @@ Transform transformationMatrix(const schema::TransformationType* transformation)
 /// absGlobal. Rotation and scaling of the parent are not inherited.
 Transform componentTransform(const Configuration& configuration, const std::string& uid);
 
+/// The placement of an element with a transformation of its own and a parent that is a
+/// component (tanks, system components, decks, external objects): its matrix, translated by
+/// the parent's origin (as componentTransform translates) unless there is no parent or its
+/// translation is absGlobal.
+Transform placedOnParent(const Configuration& configuration, const schema::TransformationType* transformation,
+                         const std::string& parentUid);
+
 /// The translation of each section (by uID) that positionings give: the toPoint of the
 /// first positioning that targets it, chained through fromSectionUID. Throws Error when a
 /// fromSectionUID names a section no positioning reaches, or when positionings loop.
