@@ -217,8 +217,8 @@ NamedShape elementGeometry(const Configuration& configuration, const fuselage::F
     add("external file", i + 1, [&] {
       const DOMElement* link = xml::firstChild(*files[i], "linkToFile");
       if (link == nullptr) throw Error(ErrorCode::InvalidModel, "no linkToFile given", {}, partPath);
-      const TopoDS_Shape shape = readExternalFile(configuration.source(), xml::text(*link),
-                                                  xml::attribute(*link, "format"), partPath + "/linkToFile");
+      const TopoDS_Shape shape =
+          readExternalFile(configuration, xml::text(*link), xml::attribute(*link, "format"), partPath + "/linkToFile");
       return transformedNamedShape(named(shape, uid + "/external " + std::to_string(i + 1)),
                                    frame * transformationOf(*files[i], partPath));
     });

@@ -12,6 +12,7 @@
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 
+#include "airshape/configuration.h"
 #include "airshape/error.h"
 
 namespace airshape::generic {
@@ -42,27 +43,29 @@ TopoDS_Shape readInMetres(const std::string& path) {
 
 }  // namespace
 
-TopoDS_Shape readExternalFile(const std::string& cpacsFile, const std::string& link, const std::string& format,
+TopoDS_Shape readExternalFile(const Configuration& configuration, const std::string& link, const std::string& format,
                               const std::string& xpath) {
   if (format.empty()) throw Error(ErrorCode::InvalidModel, "the linked file's format is not given", {}, xpath);
   const std::string kind = lowerCase(format);
   if (kind != "step" && kind != "iges" && kind != "brep")
     throw Error(ErrorCode::InvalidModel, "unknown file format '" + format + "' (Step, Iges or Brep)", {}, xpath);
   std::filesystem::path path(link);
-  if (path.is_relative()) path = std::filesystem::path(cpacsFile).parent_path() / path;
+  if (path.is_relative()) path = std::filesystem::path(configuration.source()).parent_path() / path;
   if (!std::ifstream(path).good())
     throw Error(ErrorCode::InvalidModel, "the linked file '" + path.string() + "' cannot be read", {}, xpath);
-  TopoDS_Shape shape;
-  if (kind == "step") shape = readInMetres<STEPControl_Reader>(path.string());
-  if (kind == "iges") shape = readInMetres<IGESControl_Reader>(path.string());
-  if (kind == "brep") {
-    BRep_Builder builder;
-    if (!BRepTools::Read(shape, path.string().c_str(), builder)) shape.Nullify();
-  }
-  if (shape.IsNull())
-    throw Error(ErrorCode::InvalidModel, "the linked file '" + path.string() + "' holds no " + format + " shape", {},
-                xpath);
-  return shape;
+  return *configuration.cache().obtain<TopoDS_Shape>("external-file:" + kind + ":" + path.string(), [&] {
+    TopoDS_Shape shape;
+    if (kind == "step") shape = readInMetres<STEPControl_Reader>(path.string());
+    if (kind == "iges") shape = readInMetres<IGESControl_Reader>(path.string());
+    if (kind == "brep") {
+      BRep_Builder builder;
+      if (!BRepTools::Read(shape, path.string().c_str(), builder)) shape.Nullify();
+    }
+    if (shape.IsNull())
+      throw Error(ErrorCode::InvalidModel, "the linked file '" + path.string() + "' holds no " + format + " shape", {},
+                  xpath);
+    return std::make_shared<const TopoDS_Shape>(shape);
+  });
 }
 
 }  // namespace airshape::generic

@@ -86,7 +86,7 @@ NamedShape externalObjectShape(const Configuration& configuration, const std::st
   const graph::Component& component = configuration.components().named(uid);
   const DOMElement* link = xml::firstChild(*component.element, "linkToFile");
   if (link == nullptr) throw Error(ErrorCode::InvalidModel, "no linkToFile given", {}, component.xpath);
-  const TopoDS_Shape shape = readExternalFile(configuration.source(), xml::text(*link), xml::attribute(*link, "format"),
+  const TopoDS_Shape shape = readExternalFile(configuration, xml::text(*link), xml::attribute(*link, "format"),
                                               component.xpath + "/linkToFile");
   NamedShape named{shape, {}};
   for (TopExp_Explorer face(shape, TopAbs_FACE); face.More(); face.Next())
