@@ -5,9 +5,11 @@
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRep_Builder.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <gp_GTrsf.hxx>
 #include <gp_Trsf.hxx>
 
@@ -41,6 +43,20 @@ NamedShape namedBooleanResult(BRepAlgoAPI_BuilderAlgo& operation, const std::vec
         if (resultFaces.Contains(piece)) result.faces.emplace_back(name, TopoDS::Face(piece));
     }
   return result;
+}
+
+NamedShape compoundOfNamedShapes(const std::vector<const NamedShape*>& shapes) {
+  if (shapes.size() == 1) return *shapes.front();
+  NamedShape all;
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const NamedShape* part : shapes) {
+    builder.Add(compound, part->shape);
+    all.faces.insert(all.faces.end(), part->faces.begin(), part->faces.end());
+  }
+  all.shape = compound;
+  return all;
 }
 
 NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transformation, const std::string& suffix) {

@@ -30,6 +30,10 @@ NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>
 /// a split face inherit it; faces of inputs that name none of their faces stay unnamed.
 NamedShape namedBooleanResult(BRepAlgoAPI_BuilderAlgo& operation, const std::vector<const NamedShape*>& inputs);
 
+/// Named shapes side by side as one compound (a tank of vessels, a system of components),
+/// each face keeping its name; one shape is returned as it is.
+NamedShape compoundOfNamedShapes(const std::vector<const NamedShape*>& shapes);
+
 /// A transformed copy of a named shape (moved or mirrored by `transformation`), each face
 /// named as before plus `suffix`.
 NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transformation,

@@ -10,10 +10,8 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepPrimAPI_MakeWedge.hxx>
-#include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -224,17 +222,9 @@ NamedShape elementGeometry(const Configuration& configuration, const fuselage::F
     });
   }
   if (parts.empty()) throw NoShape("the element's geometry has no part: no shape", xpath);
-  if (parts.size() == 1) return parts.front();
-  NamedShape all;
-  TopoDS_Compound compound;
-  BRep_Builder builder;
-  builder.MakeCompound(compound);
-  for (const NamedShape& part : parts) {
-    builder.Add(compound, part.shape);
-    all.faces.insert(all.faces.end(), part.faces.begin(), part.faces.end());
-  }
-  all.shape = compound;
-  return all;
+  std::vector<const NamedShape*> built;
+  for (const NamedShape& part : parts) built.push_back(&part);
+  return compoundOfNamedShapes(built);
 }
 
 }  // namespace airshape::generic

@@ -1,9 +1,7 @@
 #include "placed_parts.h"
 
-#include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -103,25 +101,18 @@ NamedShape compoundOfParts(const Configuration& configuration, const std::string
       if (above == whole) return true;
     return false;
   };
-  NamedShape all;
-  TopoDS_Compound compound;
-  BRep_Builder builder;
-  builder.MakeCompound(compound);
-  bool any = false;
+  std::vector<const NamedShape*> parts;
   for (const graph::Component& child : configuration.components().components()) {
     if (child.nodeType != childType || !inside(child)) continue;
     try {
-      const NamedShape& part = configuration.shapes().namedShapeOf(configuration, child.uid);
-      builder.Add(compound, part.shape);
-      all.faces.insert(all.faces.end(), part.faces.begin(), part.faces.end());
-      any = true;
+      parts.push_back(&configuration.shapes().namedShapeOf(configuration, child.uid));
     } catch (const NoShape&) {
       // a component described by its mass only: nothing to add
     }
   }
-  if (!any) throw NoShape("none of its components has a shape: no shape", configuration.components().named(uid).xpath);
-  all.shape = compound;
-  return all;
+  if (parts.empty())
+    throw NoShape("none of its components has a shape: no shape", configuration.components().named(uid).xpath);
+  return compoundOfNamedShapes(parts);
 }
 
 }  // namespace airshape::generic

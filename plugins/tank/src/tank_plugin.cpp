@@ -3,9 +3,6 @@
 // revolved from design parameters (a cylinder between two domes). It reads the tanks of the
 // model's own fuelTanks (the layout after CPACS 3.5 that the reference reads) and the CPACS
 // 3.5 tanks inside fuselages (genericFuelTanks with hulls or design parameters).
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
-
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/plugin/basic_plugin.h"
@@ -26,17 +23,10 @@ NamedShape tankShape(const Configuration& configuration, const fuselage::Fuselag
   const std::vector<std::string> vessels = vesselsOfTank(configuration, uid);
   if (vessels.empty()) throw NoShape("the tank has no vessels: no shape", tank.xpath);
   if (vessels == std::vector{uid}) return vesselSolid(configuration, fuselages, *vesselNamed(configuration, uid));
-  NamedShape result;
-  TopoDS_Compound compound;
-  BRep_Builder builder;
-  builder.MakeCompound(compound);
-  for (const std::string& vesselUid : vessels) {
-    const NamedShape& vessel = configuration.shapes().namedShapeOf(configuration, vesselUid);
-    builder.Add(compound, vessel.shape);
-    result.faces.insert(result.faces.end(), vessel.faces.begin(), vessel.faces.end());
-  }
-  result.shape = compound;
-  return result;
+  std::vector<const NamedShape*> solids;
+  for (const std::string& vesselUid : vessels)
+    solids.push_back(&configuration.shapes().namedShapeOf(configuration, vesselUid));
+  return compoundOfNamedShapes(solids);
 }
 
 class TankPlugin final : public plugin::BasicPlugin {
