@@ -73,6 +73,12 @@ BENCHMARK_CAPTURE(buildComponent, system_of_shapes, kExamples + "systemExample.x
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(buildComponent, external_step_object, kCpacs + "simpletest-nacelle.xml", "nacelle")
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(buildComponent, wing_fuel_tank_box, kCpacs + "CPACS_30_D250_10.xml", "FT4")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(buildComponent, wing_fuel_tank_stepped, kCpacs + "CPACS_30_D250_10.xml", "FT2")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(buildComponent, wing_component_segment, kCpacs + "CPACS_30_D250_10.xml", "D250_wing_CS")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(buildEveryComponent, file_fuelTanks, kCpacs + "simpletest-fuelTanks.cpacs.xml")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(buildEveryComponent, file_ducts, kCpacs + "simpletest_ducts.xml")->Unit(benchmark::kMillisecond);

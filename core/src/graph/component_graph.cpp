@@ -73,7 +73,8 @@ void addWingContents(const std::string& wing, std::vector<ComponentLocation>& lo
     locations.push_back({"wingCell", structure + "/lowerShell/cells/cell", "wing_cell", false, true});
   };
   addStructure(segment + "/structure");
-  locations.push_back({"wingFuelTank", segment + "/wingFuelTanks/wingFuelTank", "tank"});
+  // A wing fuel tank is a part of the wing's volume: exported when named, like structure.
+  locations.push_back({"wingFuelTank", segment + "/wingFuelTanks/wingFuelTank", "tank", false, true});
   for (const auto& [device, folder] : {std::pair<std::string, std::string>{"trailingEdgeDevice", "trailingEdgeDevices"},
                                        {"leadingEdgeDevice", "leadingEdgeDevices"},
                                        {"spoiler", "spoilers"}}) {

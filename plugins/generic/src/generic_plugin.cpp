@@ -2,7 +2,7 @@
 // components (seats, galleys, lavatories, ...), built from the geometry of the system or
 // deck elements they name (cuboids, cylinders, cones, ellipsoids, tori, multi-segment shapes
 // lofted through the fuselage plugin's public interface, and CAD files), and external
-// objects (CAD files placed in the aircraft). Wing fuel tanks are claimed without a builder.
+// objects (CAD files placed in the aircraft).
 #include "airshape/configuration.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "placed_parts.h"
@@ -14,8 +14,7 @@ class GenericPlugin final : public plugin::BasicPlugin {
  public:
   GenericPlugin()
       : BasicPlugin("generic", "0.2.0", "systems, decks and their components, external objects (CAD files)",
-                    {{"wingFuelTank", ""},
-                     {"deck", ""},
+                    {{"deck", ""},
                      {"deckComponent", ""},
                      {"genericSystem", ""},
                      {"systemComponent", ""},

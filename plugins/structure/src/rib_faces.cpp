@@ -58,7 +58,7 @@ class RibSet {
         frame_(cutter.frame()),
         reference_(cutter.lineNamed(positioning_.ribReference, xpath() + "/ribReference")) {}
 
-  NamedShape build() const {
+  std::vector<RibPlacement> placements() const {
     const bool startsOnSpar = positioning_.startSparPositionUID.has_value();
     const bool endsOnSpar = positioning_.endSparPositionUID.has_value();
     const double start = etaOnReference(cutter_.pointOf(positioning_.startEtaXsiPoint, positioning_.startCurvePoint,
@@ -69,14 +69,24 @@ class RibSet {
                                       endsOnSpar);
     const int count = numberOfRibs(start, end);
     const double offset = etaOffset(start, end, count);
-    NamedFaces ribs;
+    std::vector<RibPlacement> placements;
     for (int i = 0; i < count; ++i) {
       const double eta = start + offset * i;
       const bool onSpar = (i == 0 && startsOnSpar) || (std::abs(end - eta) <= 1e-7 && endsOnSpar);
       const gp_Pnt point = reference_.at(eta);
       const auto [direction, up] = ribAxes(point, eta, onSpar);
+      placements.push_back({point, direction, up});
+    }
+    return placements;
+  }
+
+  NamedShape build() const {
+    NamedFaces ribs;
+    const std::vector<RibPlacement> all = placements();
+    for (std::size_t i = 0; i < all.size(); ++i) {
       const std::string name = ribs_.uid + "/rib " + std::to_string(i + 1);
-      ribs.add(name, cutter_.cut(point, direction, up, positioning_.ribStart, positioning_.ribEnd, name, xpath()));
+      ribs.add(name, cutter_.cut(all[i].point, all[i].direction, all[i].up, positioning_.ribStart, positioning_.ribEnd,
+                                 name, xpath()));
     }
     return ribs.shape();
   }
@@ -166,7 +176,7 @@ class ExplicitRib {
   ExplicitRib(const RibsDefinition& ribs, const RibCutter& cutter)
       : ribs_(ribs), positioning_(*ribs.node->ribExplicitPositioning), cutter_(cutter), frame_(cutter.frame()) {}
 
-  NamedShape build() const {
+  RibPlacement placement() const {
     const gp_Pnt start = cutter_.pointOf(positioning_.startEtaXsiPoint, positioning_.startCurvePoint,
                                          positioning_.startSparPositionUID, xpath() + "/start");
     const gp_Pnt end = cutter_.pointOf(positioning_.endEtaXsiPoint, positioning_.endCurvePoint,
@@ -187,10 +197,15 @@ class ExplicitRib {
                   xpath());
     // The tilt turns about the wing's x axis, so that neighbouring ribs stay connected.
     upStart.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), -(xRotationOf(ribs_) - 90.0) * kDegrees);
+    return {start, gp_Vec(start, end).Normalized(), upStart};
+  }
+
+  NamedShape build() const {
+    const RibPlacement rib = placement();
     const std::string name = ribs_.uid + "/rib 1";
     NamedFaces ribs;
-    ribs.add(name, cutter_.cut(start, gp_Vec(start, end).Normalized(), upStart, positioning_.ribStart,
-                               positioning_.ribEnd, name, xpath()));
+    ribs.add(name,
+             cutter_.cut(rib.point, rib.direction, rib.up, positioning_.ribStart, positioning_.ribEnd, name, xpath()));
     return ribs.shape();
   }
 
@@ -225,6 +240,20 @@ class ExplicitRib {
 };
 
 }  // namespace
+
+RibPlacement ribPlacement(const Configuration& configuration, const RibsDefinition& ribs, const StructureFrame& frame,
+                          long long number) {
+  const RibCutter cutter(configuration, frame, *ribs.structure);
+  std::vector<RibPlacement> all;
+  if (ribs.node->ribsPositioning)
+    all = RibSet(ribs, cutter).placements();
+  else if (ribs.node->ribExplicitPositioning)
+    all = {ExplicitRib(ribs, cutter).placement()};
+  if (number < 1 || number > static_cast<long long>(all.size()))
+    throw Error(ErrorCode::InvalidModel, "the ribs definition '" + ribs.uid + "' has no rib " + std::to_string(number) +
+                                             " (it has " + std::to_string(all.size()) + ")");
+  return all[static_cast<std::size_t>(number - 1)];
+}
 
 NamedShape ribFaces(const Configuration& configuration, const wing::WingServices& wing, const RibsDefinition& ribs) {
   const StructureFrame frame(configuration, wing, ribs.componentSegmentUid, ribs.wingUid);

@@ -1,10 +1,27 @@
 #pragma once
 
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
 #include "airshape/named_shape.h"
 #include "airshape/wing/wing_services.h"
 #include "rib_list.h"
 
 namespace airshape::structure {
+
+class StructureFrame;
+
+/// Where one rib lies (wing frame): its point on its reference line (on the chord surface),
+/// and the directions of its plane, along the rib from its start to its end and up.
+struct RibPlacement {
+  gp_Pnt point;
+  gp_Vec direction, up;
+};
+
+/// The placement of rib `number` (from 1) of a ribs definition, without cutting any rib.
+/// Throws Error when the definition has no such rib.
+RibPlacement ribPlacement(const Configuration& configuration, const RibsDefinition& ribs, const StructureFrame& frame,
+                          long long number);
 
 /// The ribs of a ribs definition (QUERY-components §1, `wing_rib`), each the part inside the
 /// component segment's solid of the plane the schema places it in, between its start and end

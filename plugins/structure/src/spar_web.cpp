@@ -39,12 +39,13 @@ PlacedPosition placed(const Configuration& configuration, const wing::WingServic
 }
 
 /// The ruled face between the lines along `up` through two spar points, reaching `reach`
-/// above and below them, carried `reach` beyond an end of the component segment.
-TopoDS_Face cutFace(const PlacedPosition& inner, const PlacedPosition& outer, const gp_Vec& up, double reach) {
-  gp_Pnt innerPoint = inner.point, outerPoint = outer.point;
-  const gp_Vec along(inner.point, outer.point);
-  if (inner.eta <= 1e-7) innerPoint.Translate(-reach * along.Normalized());
-  if (outer.eta >= 1.0 - 1e-7) outerPoint.Translate(reach * along.Normalized());
+/// above and below them, carried `reach` beyond the inner or outer point where asked.
+TopoDS_Face wallFace(const gp_Pnt& inner, const gp_Pnt& outer, bool beyondInner, bool beyondOuter, const gp_Vec& up,
+                     double reach) {
+  gp_Pnt innerPoint = inner, outerPoint = outer;
+  const gp_Vec along = gp_Vec(inner, outer).Normalized();
+  if (beyondInner) innerPoint.Translate(-reach * along);
+  if (beyondOuter) outerPoint.Translate(reach * along);
   const TopoDS_Edge innerLine =
       BRepBuilderAPI_MakeEdge(innerPoint.Translated(reach * up), innerPoint.Translated(-reach * up)).Edge();
   const TopoDS_Edge outerLine =
@@ -54,29 +55,42 @@ TopoDS_Face cutFace(const PlacedPosition& inner, const PlacedPosition& outer, co
 
 }  // namespace
 
-NamedShape sparWeb(const Configuration& configuration, const wing::WingServices& wing, const SparSegment& spar) {
+SparWall sparWall(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
+                  const SparSegment& spar, SparWall::Ends ends) {
   if (spar.positions.size() < 2)
     throw Error(ErrorCode::InvalidModel, "a spar segment needs at least two spar positions", {},
                 spar.xpath + "/sparPositionUIDs");
-  const StructureFrame frame(configuration, wing, spar.componentSegmentUid, spar.wingUid);
+  std::vector<PlacedPosition> placedPositions;
+  for (const SparPosition& position : spar.positions)
+    placedPositions.push_back(placed(configuration, wing, frame, spar, position));
   const double reach = frame.reach();
   const gp_Vec up = frame.toGlobal(gp_Vec(0, 0, 1)).Normalized();  // the wing's own z axis
-  NamedFaces web;
-  PlacedPosition inner = placed(configuration, wing, frame, spar, spar.positions.front());
-  for (std::size_t i = 1; i < spar.positions.size(); ++i) {
-    const PlacedPosition outer = placed(configuration, wing, frame, spar, spar.positions[i]);
+  const bool always = ends == SparWall::Ends::AlwaysCarried;
+  SparWall wall;
+  for (std::size_t i = 1; i < placedPositions.size(); ++i) {
+    const PlacedPosition &inner = placedPositions[i - 1], &outer = placedPositions[i];
     if (inner.point.Distance(outer.point) < 1e-9)
       throw Error(ErrorCode::InvalidModel,
                   "spar positions '" + spar.positions[i - 1].uid + "' and '" + spar.positions[i].uid + "' coincide", {},
                   spar.xpath);
-    std::vector<TopoDS_Face> inside;
+    const bool beyondInner = (always && i == 1) || inner.eta <= 1e-7;
+    const bool beyondOuter = (always && i + 1 == placedPositions.size()) || outer.eta >= 1.0 - 1e-7;
+    wall.faces.push_back(wallFace(inner.point, outer.point, beyondInner, beyondOuter, up, reach));
+  }
+  for (const PlacedPosition& position : placedPositions) wall.points.push_back(position.point);
+  return wall;
+}
+
+NamedShape sparWeb(const Configuration& configuration, const wing::WingServices& wing, const SparSegment& spar) {
+  const StructureFrame frame(configuration, wing, spar.componentSegmentUid, spar.wingUid);
+  const SparWall wall = sparWall(configuration, wing, frame, spar, SparWall::Ends::CarriedAtComponentSegmentEnds);
+  NamedFaces web;
+  for (const TopoDS_Face& face : wall.faces) {
     try {
-      inside = facesInside(cutFace(inner, outer, up, reach), frame.solid());
+      web.add(spar.uid + "/web", facesInside(face, frame.solid()));
     } catch (const Error& error) {
       throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
     }
-    web.add(spar.uid + "/web", inside);
-    inner = outer;
   }
   if (web.empty())
     throw Error(ErrorCode::InvalidModel, "the spar does not cross its component segment", {}, spar.xpath);

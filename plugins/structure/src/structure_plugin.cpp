@@ -1,7 +1,7 @@
 // The structure plugin: spars, ribs and cells of wings; frames, stringers, bulkheads, doors,
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
 // (airshape/wing/wing_services.h) and on the fuselages' component shapes. Spar webs, ribs,
-// cells, pressure bulkheads and walls are built; the other node types are claimed
+// cells, wing fuel tanks, pressure bulkheads, walls and cross beams are built; the other node types are claimed
 // (graph/component_graph.h) and wait for their builders.
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -16,6 +16,8 @@
 #include "rib_list.h"
 #include "spar_list.h"
 #include "spar_web.h"
+#include "wing_fuel_tank.h"
+#include "wing_fuel_tank_list.h"
 
 namespace airshape::structure {
 namespace {
@@ -32,12 +34,14 @@ void requireComponentSegmentStructure(const Configuration& configuration, const 
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
-      : BasicPlugin("structure", "0.4.0",
-                    "wing and fuselage structure: spar webs, ribs, cells, pressure bulkheads, walls, cross beams and "
+      : BasicPlugin("structure", "0.5.0",
+                    "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, pressure bulkheads, walls, "
+                    "cross beams and "
                     "struts (frames, stringers, doors, floor beams: no builder yet)",
                     {{"sparSegment", ""},
                      {"ribsDefinition", ""},
                      {"wingCell", ""},
+                     {"wingFuelTank", ""},
                      {"frame", ""},
                      {"stringer", ""},
                      {"pressureBulkhead", ""},
@@ -69,6 +73,9 @@ class StructurePlugin final : public plugin::BasicPlugin {
     shapes.add("wingCell", [wing](const Configuration& c, const std::string& uid) {
       requireComponentSegmentStructure(c, uid);
       return cellSkin(c, *wing, wingCellNamed(c, uid));
+    });
+    shapes.add("wingFuelTank", [wing](const Configuration& c, const std::string& uid) {
+      return wingFuelTankSolid(c, *wing, wingFuelTankNamed(c, uid));
     });
     shapes.add("pressureBulkhead",
                [](const Configuration& c, const std::string& uid) { return pressureBulkhead(c, uid); });
