@@ -99,6 +99,9 @@ def test_sections_and_segments_are_removed_and_added(config):
     boxes.append(box)
     assert len(wing.component_segments) == 1
     assert wing.volume == pytest.approx(volume, rel=1e-12)
+    inner, outer = wing.component_segments[0].fuel_tanks
+    assert (inner.uid, inner.type) == ("Wing_InnerTank", "tank")
+    assert 0 < inner.volume < outer.volume < wing.volume
     assert config.fuselages[0].volume == fuselage_volume
     assert config.cache_statistics()["builds_by_key"]["fuselage-geometry:Fuselage"] == 1
 
@@ -267,7 +270,7 @@ def test_engines_and_pylons_as_components():
 
 def test_every_family_of_the_example_as_components(config):
     tanks, ducts = config.tanks, config.ducts
-    assert [tank.uid for tank in tanks] == ["CentreTank"] and tanks[0].type == "tank"
+    assert [tank.uid for tank in tanks] == ["CentreTank", "Wing_InnerTank", "Wing_OuterTank"]
     # The centre tank: a cylinder of radius 0.6 and length 2.4 between half ellipsoids 0.3 deep.
     assert tanks[0].volume == pytest.approx(math.pi * 0.36 * 2.4 + 4 / 3 * math.pi * 0.36 * 0.3, rel=1e-6)
     assert sorted(duct.uid for duct in ducts) == ["APU_Ducts", "APU_Exhaust"]

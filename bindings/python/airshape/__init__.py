@@ -243,7 +243,7 @@ class Wing(_Component):
 
     @property
     def component_segments(self) -> List[ComponentSegment]:
-        """Its component segments, with their spars, ribs and cells."""
+        """Its component segments, with their spars, ribs, cells and fuel tanks."""
         return [ComponentSegment(self._config, child["uid"])
                 for child in self._config.query("component_children", uid=self.uid)
                 if child["type"] == "wing_component_segment"]
@@ -317,6 +317,11 @@ class ComponentSegment(Component):
     @property
     def cells(self) -> List[Component]:
         return self._children_of_type("wing_cell")
+
+    @property
+    def fuel_tanks(self) -> List[Component]:
+        """Its wing fuel tanks: the solids its spars and ribs enclose."""
+        return self._children_of_type("tank")
 
 
 class Rotor(Component):
@@ -522,7 +527,8 @@ class Configuration:
 
     @property
     def tanks(self) -> List[Component]:
-        """The fuel tanks, each the compound of its vessels (docs/tank.md)."""
+        """The fuel tanks, each the compound of its vessels (docs/tank.md), and the wing fuel
+        tanks of the component segments (docs/structure.md)."""
         return self._components_of_type("tank")
 
     @property
