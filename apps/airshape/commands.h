@@ -24,7 +24,9 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host);
 int runGordon(const Arguments& arguments, plugin::PluginHost& host);
 int runBuild(const Arguments& arguments, plugin::PluginHost& host);
 int runExport(const Arguments& arguments, plugin::PluginHost& host);
-/// Loads the export module and runs `export` there (export_module.cpp).
+int runView(const Arguments& arguments, plugin::PluginHost& host);
+/// Load the export module and run `export` or `view` there (export_module.cpp).
 int runExportModule(const Arguments& arguments, plugin::PluginHost& host);
+int runViewModule(const Arguments& arguments, plugin::PluginHost& host);
 
 }  // namespace airshape::cli

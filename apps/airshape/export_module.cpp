@@ -1,6 +1,7 @@
-// `airshape export` runs in a module of its own (libairshape_export_command.so, next to the
-// core library), loaded only for that command: it links OCCT's data-exchange toolkits,
-// which Debian builds with BIND_NOW, and loading them costs every process about 80 ms.
+// `airshape export` and `airshape view` run in a module of their own
+// (libairshape_export_command.so, next to the core library), loaded only for those commands:
+// it links OCCT's data-exchange toolkits, which Debian builds with BIND_NOW, and loading them
+// costs every process about 80 ms.
 #include <boost/dll/shared_library.hpp>
 
 #include "airshape/error.h"
@@ -9,8 +10,13 @@
 
 namespace airshape::cli {
 
-int runExportModule(const Arguments& arguments, plugin::PluginHost& host) {
-  // Loaded once and never unloaded: errors thrown in it are caught after it returns.
+namespace {
+
+using CommandEntry = int(const Arguments&, plugin::PluginHost&);
+
+/// A command's entry in the module, which is loaded once and never unloaded (errors thrown
+/// in it are caught after it returns).
+CommandEntry& entryInModule(const char* symbol) {
   static const boost::dll::shared_library module = [] {
     const boost::dll::fs::path path =
         boost::dll::fs::path(plugin::PluginHost::coreLibraryFolder()) / "libairshape_export_command.so";
@@ -19,7 +25,17 @@ int runExportModule(const Arguments& arguments, plugin::PluginHost& host) {
     if (error) throw Error(ErrorCode::PluginFailed, "cannot load the export module: " + error.message(), path.string());
     return loaded;
   }();
-  return module.get<int(const Arguments&, plugin::PluginHost&)>("airshape_run_export")(arguments, host);
+  return module.get<CommandEntry>(symbol);
+}
+
+}  // namespace
+
+int runExportModule(const Arguments& arguments, plugin::PluginHost& host) {
+  return entryInModule("airshape_run_export")(arguments, host);
+}
+
+int runViewModule(const Arguments& arguments, plugin::PluginHost& host) {
+  return entryInModule("airshape_run_view")(arguments, host);
 }
 
 }  // namespace airshape::cli

@@ -56,6 +56,8 @@ const std::map<std::string, Command>& commands() {
         "  .brep        OCCT BREP                           .stl        binary STL\n"
         "  .vtp         VTK PolyData, per-cell arrays 'component' and 'face'\n"
         "  .gltf .glb   glTF 2.0, one node per component    .obj        Wavefront OBJ\n"
+        "  .html .htm   a page that shows the aircraft in any browser, from disk, with no\n"
+        "               network: the viewer and the geometry in one file (docs/viewer.md)\n"
         "--components   only these uIDs (default: every component a plugin builds)\n"
         "--mirror       add the mirrored halves of components with a symmetry plane\n"
         "--fused        write one solid, the Boolean union of all (face names kept)\n"
@@ -78,6 +80,15 @@ const std::map<std::string, Command>& commands() {
         "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"
         "surface, writes it as one face and prints a JSON report: degrees, pole counts,\n"
         "time, and how far the input curves and crossings lie from the surface."}},
+      {"view",
+       {runViewModule, "airshape view FILE [--port P] [--no-browser]",
+        "Serves the aircraft to a browser on 127.0.0.1 (a free port unless --port; the address\n"
+        "is printed on stdout) and opens it in the desktop's browser unless --no-browser: the\n"
+        "aircraft shaded, orbit/pan/zoom, the component tree (click: highlight and measures;\n"
+        "double-click: show it alone), mirrored halves on or off, a length scale. When FILE\n"
+        "changes on disk the page reloads the geometry by itself; a file that no longer loads\n"
+        "is said in the page, which keeps the last good geometry. Ends on Ctrl-C or when the\n"
+        "page's 'stop the server' is pressed. See docs/viewer.md."}},
       {"plugins",
        {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
   };

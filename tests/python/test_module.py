@@ -139,6 +139,10 @@ def test_save_and_export_after_an_edit(config, tmp_path):
     assert reopened.wings["HTP"].volume == pytest.approx(config.wings["HTP"].volume, rel=1e-12)
     config.export(tmp_path / "htp.step", components=["HTP"])
     assert "PRODUCT('HTP'" in (tmp_path / "htp.step").read_text()
+    # The browser page (docs/viewer.md) carries the edited tail and its measures.
+    config.export(tmp_path / "htp.html", components=["HTP"], mirror=True)
+    page = (tmp_path / "htp.html").read_text()
+    assert '"name":"HTP (mirrored)"' in page and '"type":"wing"' in page
 
 
 def test_configurations_work_from_several_threads():

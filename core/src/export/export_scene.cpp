@@ -107,7 +107,7 @@ Error buildFailure(const Configuration& configuration, std::size_t index, const 
 SceneComponent copied(const std::string& name, const NamedShape& shape) {
   try {
     BRepBuilderAPI_Copy copy(shape.shape, false, false);
-    SceneComponent component{name, {copy.Shape(), {}}};
+    SceneComponent component{name, {copy.Shape(), {}}, ""};
     for (const auto& [faceName, face] : shape.faces)
       component.shape.faces.emplace_back(faceName, TopoDS::Face(copy.ModifiedShape(face)));
     return component;
@@ -175,6 +175,12 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
     scene.components.push_back(copied(scene.name + " (fused)", fuseNamedShapes(shapes)));
   } else {
     for (const auto& [name, shape] : solids) scene.components.push_back(copied(name, shape));
+    for (SceneComponent& component : scene.components) {
+      const std::string uid = component.name.substr(0, component.name.rfind(" (mirrored)"));
+      const long index = configuration.components().find(uid);
+      if (index >= 0)
+        component.type = configuration.components().components()[static_cast<std::size_t>(index)].typeName;
+    }
   }
   return scene;
 }

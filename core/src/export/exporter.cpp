@@ -14,6 +14,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/output_file.h"
+#include "airshape/viewer/page.h"
 #include "format_writers.h"
 #include "scene_mesh.h"
 
@@ -25,7 +26,7 @@ const std::map<std::string, Format>& formatsByExtension() {
   static const std::map<std::string, Format> formats = {
       {".step", Format::Step}, {".stp", Format::Step}, {".iges", Format::Iges}, {".igs", Format::Iges},
       {".brep", Format::Brep}, {".stl", Format::Stl},  {".vtp", Format::Vtp},   {".gltf", Format::Gltf},
-      {".glb", Format::Glb},   {".obj", Format::Obj}};
+      {".glb", Format::Glb},   {".obj", Format::Obj},  {".html", Format::Html}, {".htm", Format::Html}};
   return formats;
 }
 
@@ -62,6 +63,8 @@ void writeFormat(const ExportScene& scene, const std::string& path, Format forma
       return writeGltf(scene, path, target, true);
     case Format::Obj:
       return writeObj(scene, path, target);
+    case Format::Html:
+      return writeHtml(scene, path, target);
   }
 }
 
@@ -75,6 +78,9 @@ Format formatOfPath(const std::string& path) {
   if (format == formatsByExtension().end())
     throw Error(ErrorCode::InvalidArgument,
                 "unknown export format '" + extension + "' (known: " + knownExtensions() + ")", path);
+  if (format->second == Format::Html && !viewer::available())
+    throw Error(ErrorCode::NotImplemented,
+                "this build has no viewer: npm was missing when it was built (docs/viewer.md)", path);
   return format->second;
 }
 
@@ -96,6 +102,8 @@ std::string formatName(Format format) {
       return "GLB";
     case Format::Obj:
       return "OBJ";
+    case Format::Html:
+      return "HTML viewer page";
   }
   return "?";
 }

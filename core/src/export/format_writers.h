@@ -28,5 +28,11 @@ void writeStl(const ExportScene& scene, const std::string& path, const std::stri
 void writeVtp(const ExportScene& scene, const std::string& path, const std::string& target);
 void writeGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary);
 void writeObj(const ExportScene& scene, const std::string& path, const std::string& target);
+/// The bytes of the scene as GLB, written to `path` (a scratch file, removed again) because
+/// OCCT's glTF writer writes files only.
+std::string glbBytes(const ExportScene& scene, const std::string& path, const std::string& target);
+/// A page that opens from disk in a browser (docs/viewer.md): the scene as GLB inlined in the
+/// viewer, with each component's type and measures.
+void writeHtml(const ExportScene& scene, const std::string& path, const std::string& target);
 
 }  // namespace airshape::exporting

@@ -85,7 +85,7 @@ std::vector<SceneComponent> structuralModels(const Configuration& configuration,
         leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
       }
     }
-    if (parts.size() > 1) models.push_back({host + " structure", joined(parts, host)});
+    if (parts.size() > 1) models.push_back({host + " structure", joined(parts, host), ""});
   }
   return models;
 }

@@ -16,6 +16,7 @@ namespace airshape::exporting {
 struct SceneComponent {
   std::string name;  ///< the component's uID; "<uID> (mirrored)" for a mirrored half
   NamedShape shape;  ///< its own copy, so meshing it never touches the cached geometry
+  std::string type;  ///< its component type (QUERY-components §1.1); empty for a union or a structural model
 };
 
 /// What an export writes, in build order: the selected components' solids (built in

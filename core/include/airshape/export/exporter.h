@@ -13,10 +13,11 @@ class Configuration;
 namespace airshape::exporting {
 
 /// The file formats an export writes, chosen by the output's extension.
-enum class Format { Step, Iges, Brep, Stl, Vtp, Gltf, Glb, Obj };
+enum class Format { Step, Iges, Brep, Stl, Vtp, Gltf, Glb, Obj, Html };
 
 /// The format of an output path by its extension (.step/.stp, .iges/.igs, .brep, .stl,
-/// .vtp, .gltf, .glb, .obj, any case). Throws Error(InvalidArgument) for any other.
+/// .vtp, .gltf, .glb, .obj, .html/.htm, any case). Throws Error(InvalidArgument) for any
+/// other, and for .html when this build has no viewer (docs/viewer.md).
 Format formatOfPath(const std::string& path);
 /// "STEP", "IGES", ... for messages.
 std::string formatName(Format format);
