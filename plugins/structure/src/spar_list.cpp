@@ -2,7 +2,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/model/primary_model.h"
+#include "component_segments.h"
 
 namespace airshape::structure {
 
@@ -47,17 +47,13 @@ SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSpa
 }  // namespace
 
 SparSegment sparSegmentNamed(const Configuration& configuration, const std::string& uid) {
-  for (const model::ModelComponents& model : model::everyModel(configuration))
-    for (const schema::WingType* wing : model.wings) {
-      if (!wing->componentSegments) continue;
-      for (const auto& componentSegment : wing->componentSegments->componentSegment) {
-        if (!componentSegment.structure || !componentSegment.structure->spars) continue;
-        const schema::WingSparType& spars = *componentSegment.structure->spars;
-        if (!spars.sparSegments) continue;
-        for (const auto& segment : spars.sparSegments->sparSegment)
-          if (segment.uID == uid) return segmentOf(segment, spars, componentSegment, *wing);
-      }
-    }
+  for (const auto& [wing, componentSegment] : everyComponentSegment(configuration)) {
+    if (!componentSegment->structure || !componentSegment->structure->spars) continue;
+    const schema::WingSparType& spars = *componentSegment->structure->spars;
+    if (!spars.sparSegments) continue;
+    for (const auto& segment : spars.sparSegments->sparSegment)
+      if (segment.uID == uid) return segmentOf(segment, spars, *componentSegment, *wing);
+  }
   throw Error(ErrorCode::InvalidArgument, "no spar segment with uID '" + uid + "'");
 }
 
