@@ -44,6 +44,11 @@ def test_an_exported_page_opens_from_disk_and_shows_every_component(tmp_path):
         assert tree_names(browser) == components
         share, colours = drawn_share(browser.screenshot(), VIEW)
         assert share > 0.03 and colours > 50, (share, colours)
+        # The face under the pointer is named (the middle of the view: the fuselage at the wing).
+        browser.evaluate("document.querySelector('#view canvas').dispatchEvent(new PointerEvent('pointermove', "
+                         "{clientX: 450, clientY: 400, bubbles: true}))")
+        hovered = browser.evaluate("document.getElementById('hover').textContent")
+        assert re.fullmatch(r"(Fuselage|Wing|Wing \(mirrored\)) · \S+/\w+( \(mirrored\))?", hovered), hovered
         # Picking a component shows its measures; isolating it leaves it alone in the picture.
         browser.evaluate("[...document.querySelectorAll('#tree li')].find(li => li.dataset.name === 'Wing').click()")
         assert "type     wing" in browser.evaluate("document.getElementById('info').textContent")
@@ -52,6 +57,14 @@ def test_an_exported_page_opens_from_disk_and_shows_every_component(tmp_path):
                          ".dispatchEvent(new MouseEvent('dblclick'))")
         alone, _ = drawn_share(browser.screenshot(), VIEW)
         assert 0 < alone < whole
+        faces = browser.evaluate("Object.fromEntries(window.AIRSHAPE.components.map(c => [c.name, c.faces.length]))")
+    # The page's face lists follow the glTF primitives, one per face, as the .glb writes them.
+    glb_path = tmp_path / "airliner.glb"
+    airshape("export", AIRLINER, "-o", str(glb_path), "--mirror", "--quiet")
+    glb = glb_path.read_bytes()
+    document = json.loads(glb[20:20 + int.from_bytes(glb[12:16], "little")])
+    primitives = {mesh["name"]: len(mesh["primitives"]) for mesh in document["meshes"]}
+    assert faces == primitives
 
 
 def start_view(path):

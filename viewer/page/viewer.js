@@ -1,8 +1,8 @@
 // The airshape viewer: the aircraft lit and shaded, orbit/pan/zoom (three.js OrbitControls),
 // the component tree (show, hide, isolate, highlight), measures of the component picked, the
 // name under the pointer, mirrored halves on or off, and a length scale. window.AIRSHAPE says
-// what to show: {title, live, model (base64 GLB, or null when live), components: [{name, uid,
-// type, volume, area, box: {min, max}}]}. Live pages fetch /model.glb and /components.json and
+// what to show: {title, live, model (base64 GLB, or null when live), components: [{name, type,
+// volume, area, box: {min, max}, faces: [face names in the order of the mesh's primitives]}]}. Live pages fetch /model.glb and /components.json and
 // poll /version, reloading when the file changed and showing its error when it no longer loads.
 (function () {
   'use strict';
@@ -57,12 +57,28 @@
     document.getElementById('scale-label').textContent = length >= 1 ? length + ' m' : length * 1000 + ' mm';
   }
 
+  /// Whether an object is drawn: it and every parent visible (the raycaster does not ask).
+  function shown(object) {
+    for (let o = object; o; o = o.parent) if (!o.visible) return false;
+    return true;
+  }
+
   function nameOf(object) { return (object.userData && object.userData.name) || object.name; }
 
   /// The component an object belongs to: itself or the nearest parent named as a component.
   function componentOf(object) {
     for (let o = object; o; o = o.parent) if (objects.has(nameOf(o))) return nameOf(o);
     return null;
+  }
+
+  /// The name of the face a mesh shows: a component's meshes are its glTF primitives, one per
+  /// face, in the order of its `faces` list.
+  function faceOf(name, mesh) {
+    const component = components.find(c => c.name === name);
+    const object = objects.get(name);
+    if (!component || !component.faces || !object) return '';
+    const meshes = object.isMesh ? [object] : object.children.filter(o => o.isMesh);
+    return component.faces[meshes.indexOf(mesh)] || '';
   }
 
   function showModel(gltf) {
@@ -216,11 +232,11 @@
     const pointer = new THREE.Vector2(((event.clientX - rect.left) / rect.width) * 2 - 1,
                                       -((event.clientY - rect.top) / rect.height) * 2 + 1);
     raycaster.setFromCamera(pointer, camera);
-    const hit = raycaster.intersectObject(model, true).find(h => h.object.visible && h.object.isMesh);
+    const hit = raycaster.intersectObject(model, true).find(h => h.object.isMesh && shown(h.object));
     const name = hit && componentOf(hit.object);
     if (!name) { hover.hidden = true; return; }
-    const face = nameOf(hit.object);
-    hover.textContent = face && face !== name ? `${name} · ${face}` : name;
+    const face = faceOf(name, hit.object);
+    hover.textContent = face ? `${name} · ${face}` : name;
     hover.style.left = (event.clientX + 12) + 'px';
     hover.style.top = (event.clientY + 12) + 'px';
     hover.hidden = false;
