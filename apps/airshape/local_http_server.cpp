@@ -6,6 +6,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <sstream>
@@ -22,6 +23,8 @@ const char* reasonOf(int status) {
       return "OK";
     case 404:
       return "Not Found";
+    case 400:
+      return "Bad Request";
     case 405:
       return "Method Not Allowed";
     default:
@@ -82,8 +85,36 @@ std::optional<LocalHttpServer::Request> LocalHttpServer::next(int milliseconds) 
   Request request;
   std::istringstream line(head.substr(0, head.find("\r\n")));
   line >> request.method >> request.path;
-  request.path = request.path.substr(0, request.path.find('?'));
+  if (const std::size_t question = request.path.find('?'); question != std::string::npos) {
+    request.query = request.path.substr(question + 1);
+    request.path.erase(question);
+  }
   return request;
+}
+
+std::optional<std::string> LocalHttpServer::parameter(const std::string& query, const std::string& name) {
+  std::istringstream pairs(query);
+  std::string pair;
+  while (std::getline(pairs, pair, '&')) {
+    const std::size_t equals = pair.find('=');
+    if (pair.substr(0, equals) != name) continue;
+    const std::string encoded = equals == std::string::npos ? "" : pair.substr(equals + 1);
+    std::string value;
+    for (std::size_t i = 0; i < encoded.size(); ++i) {
+      if (encoded[i] == '+') {
+        value += ' ';
+      } else if (encoded[i] == '%' && i + 2 < encoded.size() &&
+                 std::isxdigit(static_cast<unsigned char>(encoded[i + 1])) &&
+                 std::isxdigit(static_cast<unsigned char>(encoded[i + 2]))) {
+        value += static_cast<char>(std::stoi(encoded.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        value += encoded[i];
+      }
+    }
+    return value;
+  }
+  return std::nullopt;
 }
 
 void LocalHttpServer::respond(const Response& response) {

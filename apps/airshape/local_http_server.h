@@ -12,7 +12,11 @@ class LocalHttpServer {
   struct Request {
     std::string method;  ///< "GET", "POST", ...
     std::string path;    ///< without the query
+    std::string query;   ///< after '?', as sent
   };
+
+  /// The value of a query parameter (percent-decoded), if the query has it.
+  static std::optional<std::string> parameter(const std::string& query, const std::string& name);
   struct Response {
     int status = 200;
     std::string contentType = "text/plain; charset=utf-8";

@@ -85,10 +85,10 @@ const std::map<std::string, Command>& commands() {
         "Serves the aircraft to a browser on 127.0.0.1 (a free port unless --port; the address\n"
         "is printed on stdout) and opens it in the desktop's browser unless --no-browser: the\n"
         "aircraft shaded, orbit/pan/zoom, the component tree (click: highlight and measures;\n"
-        "double-click: show it alone), mirrored halves on or off, a length scale. When FILE\n"
-        "changes on disk the page reloads the geometry by itself; a file that no longer loads\n"
-        "is said in the page, which keeps the last good geometry. Ends on Ctrl-C or when the\n"
-        "page's 'stop the server' is pressed. See docs/viewer.md."}},
+        "double-click: show it alone), mirrored halves on or off, a length scale, a slider per\n"
+        "control device. When FILE changes on disk the page reloads the geometry by itself; a\n"
+        "file that no longer loads is said in the page, which keeps the last good geometry.\n"
+        "Ends on Ctrl-C or when the page's 'stop the server' is pressed. See docs/viewer.md."}},
       {"plugins",
        {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
   };

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -12,10 +13,12 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 
 #include <boost/config.hpp>
 #include <nlohmann/json.hpp>
 
+#include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/export/export_scene.h"
 #include "airshape/export/viewer_content.h"
@@ -81,7 +84,33 @@ struct ViewedModel {
   std::string componentsJson = "[]";
   std::string error;                 ///< why the file does not load now ("" when it does)
   std::vector<std::string> leftOut;  ///< components of the last build that failed
+  /// The control devices (flaps, slats, spoilers): uID, type, control parameter range and the
+  /// parameter they are shown at, as JSON for the page's sliders.
+  std::string devicesJson = "[]";
+  std::map<std::string, double> deflections;  ///< devices away from rest, by uID
 };
+
+/// The moving components of a configuration with their ranges, at their parameters.
+std::string devicesOf(const Configuration& configuration, const std::map<std::string, double>& deflections) {
+  nlohmann::json devices = nlohmann::json::array();
+  for (const graph::Component& component : configuration.components().components()) {
+    const ComponentMotion* motion = configuration.shapes().findMotion(component.nodeType);
+    if (motion == nullptr || component.uid.empty()) continue;
+    try {
+      const auto [first, last] = motion->range(configuration, component.uid);
+      const auto deflected = deflections.find(component.uid);
+      const double rest = std::clamp(0.0, std::min(first, last), std::max(first, last));
+      devices.push_back({{"uid", component.uid},
+                         {"type", component.typeName},
+                         {"min", std::min(first, last)},
+                         {"max", std::max(first, last)},
+                         {"value", deflected == deflections.end() ? rest : deflected->second}});
+    } catch (const std::exception&) {
+      // a device that cannot move (broken path) gets no slider; building it says why
+    }
+  }
+  return devices.dump();
+}
 
 /// Builds every component with its mirrored half and keeps it as the model's next version.
 /// Throws Error when the file cannot be used or nothing in it can be built.
@@ -91,12 +120,15 @@ void build(const std::string& path, plugin::PluginHost& host, ViewedModel& model
   exporting::ExportOptions options;
   options.mirror = true;  // the page turns mirrored halves on and off
   options.skipFailed = true;
+  for (const auto& [uid, parameter] : model.deflections)
+    options.poses.push_back({uid, exporting::Pose::At::Parameter, parameter});
   const exporting::ExportScene scene = exporting::buildScene(configuration, options);
   if (scene.components.empty())
     throw Error(ErrorCode::NotImplemented, "nothing to show: no component could be built", path);
   model.glb = exporting::sceneGlb(scene, options);
   model.componentsJson = exporting::viewerComponentsJson(scene);
   model.leftOut = scene.leftOut;
+  model.devicesJson = devicesOf(configuration, model.deflections);
   model.error.clear();
   ++model.version;
   std::cerr << "view: built " << scene.components.size() << " components of " << path << " in " << std::fixed
@@ -114,17 +146,38 @@ void rebuild(const std::string& path, plugin::PluginHost& host, ViewedModel& mod
   }
 }
 
-LocalHttpServer::Response answer(const LocalHttpServer::Request& request, const ViewedModel& model,
-                                 const std::string& title, bool& quit) {
+/// POST /deflect?uid=U&parameter=P: shows device U at control parameter P (rebuilt now).
+LocalHttpServer::Response deflect(const LocalHttpServer::Request& request, const std::string& path,
+                                  plugin::PluginHost& host, ViewedModel& model) {
+  const auto uid = LocalHttpServer::parameter(request.query, "uid");
+  const auto text = LocalHttpServer::parameter(request.query, "parameter");
+  char* end = nullptr;
+  const double parameter = text ? std::strtod(text->c_str(), &end) : 0.0;
+  if (!uid || !text || text->empty() || *end != '\0')
+    return {400, "text/plain; charset=utf-8", "deflect: give uid and a numeric parameter\n"};
+  const nlohmann::json devices = nlohmann::json::parse(model.devicesJson);
+  const auto device = std::find_if(devices.begin(), devices.end(), [&](const auto& d) { return d["uid"] == *uid; });
+  if (device == devices.end()) return {400, "text/plain; charset=utf-8", "deflect: '" + *uid + "' is no device\n"};
+  if (parameter < (*device)["min"].get<double>() || parameter > (*device)["max"].get<double>())
+    return {400, "text/plain; charset=utf-8", "deflect: " + *text + " is outside the range of '" + *uid + "'\n"};
+  model.deflections[*uid] = parameter;
+  rebuild(path, host, model);
+  return {200, "application/json", nlohmann::json({{"version", model.version}}).dump()};
+}
+
+LocalHttpServer::Response answer(const LocalHttpServer::Request& request, const std::string& path,
+                                 plugin::PluginHost& host, ViewedModel& model, const std::string& title, bool& quit) {
   if (request.method == "POST" && request.path == "/quit") {
     quit = true;
     return {200, "text/plain; charset=utf-8", "the airshape view server ends\n"};
   }
-  if (request.method != "GET") return {405, "text/plain; charset=utf-8", "only GET, and POST /quit\n"};
+  if (request.method == "POST" && request.path == "/deflect") return deflect(request, path, host, model);
+  if (request.method != "GET") return {405, "text/plain; charset=utf-8", "only GET, and POST /deflect or /quit\n"};
   if (request.path == "/" || request.path == "/index.html")
     return {200, "text/html; charset=utf-8", viewer::livePage({title, "[]"})};
   if (request.path == "/model.glb") return {200, "model/gltf-binary", model.glb};
   if (request.path == "/components.json") return {200, "application/json", model.componentsJson};
+  if (request.path == "/devices") return {200, "application/json", model.devicesJson};
   if (request.path == "/version") {
     const nlohmann::json state = {{"version", model.version},
                                   {"error", model.error.empty() ? nlohmann::json() : nlohmann::json(model.error)},
@@ -169,7 +222,8 @@ int runView(const Arguments& arguments, plugin::PluginHost& host) {
 
   bool quit = false;
   while (!quit && !interrupted) {
-    if (const auto request = server.next(250)) server.respond(answer(*request, model, title, quit));
+    if (const auto request = server.next(250))
+      server.respond(answer(*request, options.input, host, model, title, quit));
     const FileStamp now = stampOf(options.input);
     if (now != seen) {
       seen = now;

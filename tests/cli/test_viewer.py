@@ -8,6 +8,7 @@ import re
 import shutil
 import subprocess
 import time
+import urllib.error
 import urllib.request
 
 import pytest
@@ -100,13 +101,25 @@ def test_the_live_page_follows_the_file_and_keeps_the_last_geometry(tmp_path):
             after = {c["name"]: c for c in get_json(url + "components.json")}
             assert after["Wing"]["volume"] > before["Wing"]["volume"]
             assert after["Fuselage"]["volume"] == pytest.approx(before["Fuselage"]["volume"], rel=1e-12)
+            # A control device's slider: let go at 1, the flap is built deflected and shown.
+            devices = {d["uid"]: d for d in get_json(url + "devices")}
+            assert devices["InnerFlap"]["min"] == 0 and devices["InnerFlap"]["max"] == 1
+            assert "Spoiler" in devices and "InnerFlap" not in tree_names(browser)
+            browser.evaluate("const s = document.querySelector('#devices input[data-uid=\"InnerFlap\"]'); "
+                             "s.value = 1; s.dispatchEvent(new Event('change'))")
+            browser.wait_for("document.body.dataset.version === '2'")
+            browser.wait_for("[...document.querySelectorAll('#tree li')].some(li => li.dataset.name === 'InnerFlap')")
+            assert {d["uid"]: d["value"] for d in get_json(url + "devices")}["InnerFlap"] == 1
+            bad = urllib.request.Request(url + "deflect?uid=InnerFlap&parameter=7", method="POST")
+            with pytest.raises(urllib.error.HTTPError, match="400"):
+                urllib.request.urlopen(bad, timeout=30)
             # A file that no longer loads: said in the page, the geometry stays.
             path.write_text("<cpacs")
             error = browser.wait_for("!document.getElementById('error').hidden && "
                                      "document.getElementById('error').textContent")
             assert "not well-formed XML" in error
-            assert tree_names(browser) == list(before)
-            assert get_json(url + "version")["version"] == 1
+            assert "InnerFlap" in tree_names(browser) and "Fuselage" in tree_names(browser)
+            assert get_json(url + "version")["version"] == 2
             # The page ends the server.
             browser.evaluate("[...document.querySelectorAll('button')].find(b => b.textContent === 'stop the server')"
                              ".click()")

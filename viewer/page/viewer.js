@@ -3,7 +3,8 @@
 // name under the pointer, mirrored halves on or off, and a length scale. window.AIRSHAPE says
 // what to show: {title, live, model (base64 GLB, or null when live), components: [{name, type,
 // volume, area, box: {min, max}, faces: [face names in the order of the mesh's primitives]}]}. Live pages fetch /model.glb and /components.json and
-// poll /version, reloading when the file changed and showing its error when it no longer loads.
+// poll /version, reloading when the file changed and showing its error when it no longer loads;
+// they have a slider per control device (GET /devices, POST /deflect).
 (function () {
   'use strict';
 
@@ -264,9 +265,40 @@
   }
 
   async function reload() {
-    const [glb, list] = await Promise.all([fetch('/model.glb').then(r => r.arrayBuffer()),
-                                           fetch('/components.json').then(r => r.json())]);
+    const [glb, list, devices] = await Promise.all([fetch('/model.glb').then(r => r.arrayBuffer()),
+                                                    fetch('/components.json').then(r => r.json()),
+                                                    fetch('/devices').then(r => r.json())]);
     load(glb, list);
+    showDevices(devices);
+  }
+
+  /// Live: a slider per control device over its control parameter's range; letting go of one
+  /// asks the server to rebuild the aircraft with the device there (the poll then reloads it).
+  function showDevices(devices) {
+    const box = document.getElementById('devices');
+    box.textContent = '';
+    box.hidden = devices.length === 0;
+    if (box.hidden) return;
+    const heading = document.createElement('h2');
+    heading.textContent = 'control devices';
+    box.appendChild(heading);
+    for (const device of devices) {
+      const row = document.createElement('label');
+      row.className = 'device';
+      const name = document.createElement('span');
+      name.textContent = device.uid;
+      const slider = document.createElement('input');
+      Object.assign(slider, { type: 'range', min: device.min, max: device.max, value: device.value,
+                              step: (device.max - device.min) / 100 || 0.01 });
+      slider.dataset.uid = device.uid;
+      const value = document.createElement('span');
+      value.textContent = Number(device.value).toFixed(2);
+      slider.addEventListener('input', () => { value.textContent = Number(slider.value).toFixed(2); });
+      slider.addEventListener('change', () => fetch(
+          `/deflect?uid=${encodeURIComponent(device.uid)}&parameter=${slider.value}`, { method: 'POST' }));
+      row.append(name, slider, value);
+      box.appendChild(row);
+    }
   }
 
   /// Live: asks for the version each second; a new one is fetched, an error shown above the
