@@ -78,9 +78,12 @@ class DistanceToSurface {
 
 int runGordon(const Arguments& arguments, plugin::PluginHost&) {
   std::string profilesPath, guidesPath, output;
+  bool accuracy = false;
   for (std::size_t i = 0; i < arguments.size(); ++i) {
     if ((arguments[i] == "-o" || arguments[i] == "--output") && i + 1 < arguments.size()) {
       output = arguments[++i];
+    } else if (arguments[i] == "--report") {
+      accuracy = true;
     } else if (profilesPath.empty()) {
       profilesPath = arguments[i];
     } else if (guidesPath.empty()) {
@@ -90,7 +93,8 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
     }
   }
   if (profilesPath.empty() || guidesPath.empty() || output.empty())
-    throw Error(ErrorCode::InvalidArgument, "usage: airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep");
+    throw Error(ErrorCode::InvalidArgument,
+                "usage: airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep [--report]");
 
   const Curves profiles = geometry::readBrepCurves(profilesPath);
   const Curves guides = geometry::readBrepCurves(guidesPath);
@@ -114,9 +118,6 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
   geometry::writeBrep(BRepBuilderAPI_MakeFace(gordon.surface, 1e-7).Face(), output);
 
   const auto& surface = gordon.surface;
-  DistanceToSurface distance(surface, 1e-5 * diagonal);
-  double crossingDistance = 0.0;
-  for (const gp_Pnt& crossing : gordon.crossings) crossingDistance = std::max(crossingDistance, distance(crossing));
   nlohmann::json report = {{"degree_u", surface->UDegree()},
                            {"degree_v", surface->VDegree()},
                            {"poles_u", surface->NbUPoles()},
@@ -125,15 +126,21 @@ int runGordon(const Arguments& arguments, plugin::PluginHost&) {
                            {"periodic_v", surface->IsVPeriodic()},
                            {"seconds", seconds},
                            {"bbox_diagonal", diagonal},
-                           {"max_profile_distance", distance.maxOver(profiles)},
-                           {"max_guide_distance", distance.maxOver(guides)},
-                           {"max_intersection_distance", crossingDistance},
                            {"max_crossing_gap", gordon.maxCrossingGap},
                            {"timings",
                             {{"intersection", gordon.timings.intersection},
                              {"reparametrisation", gordon.timings.reparametrisation},
                              {"skinning", gordon.timings.skinning},
                              {"combination", gordon.timings.combination}}}};
+  if (accuracy) {
+    // Sampling every input curve against the surface costs several times the surface itself.
+    DistanceToSurface distance(surface, 1e-5 * diagonal);
+    double crossingDistance = 0.0;
+    for (const gp_Pnt& crossing : gordon.crossings) crossingDistance = std::max(crossingDistance, distance(crossing));
+    report["max_profile_distance"] = distance.maxOver(profiles);
+    report["max_guide_distance"] = distance.maxOver(guides);
+    report["max_intersection_distance"] = crossingDistance;
+  }
   std::cout << report.dump() << '\n';
   return kSuccess;
 }

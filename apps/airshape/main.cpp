@@ -76,10 +76,11 @@ const std::map<std::string, Command>& commands() {
         "(status 1), or when no plugin builds any (status 0, said). 2: unusable input.\n"
         "Prints progress on stderr and a summary (volume and area per solid) on stdout."}},
       {"gordon",
-       {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep",
+       {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep [--report]",
         "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"
-        "surface, writes it as one face and prints a JSON report: degrees, pole counts,\n"
-        "time, and how far the input curves and crossings lie from the surface."}},
+        "surface, writes it as one face and prints a JSON report: degrees, pole counts, time,\n"
+        "how far profiles and guides are apart where they cross; with --report also how far\n"
+        "the input curves and crossings lie from the surface (sampled: several times slower)."}},
       {"view",
        {runViewModule, "airshape view FILE [--port P] [--no-browser]",
         "Serves the aircraft to a browser on 127.0.0.1 (a free port unless --port; the address\n"

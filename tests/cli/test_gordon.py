@@ -16,7 +16,8 @@ CLOSED = {"fuselage1", "fuselage2", "full_nacelle", "helibody"}  # profiles all 
 def test_network_lies_on_its_gordon_surface(tmp_path, network):
     shared_path("data", "curve-networks")
     out = tmp_path / "surface.brep"
-    result = airshape("gordon", os.path.join(network, "profiles.brep"), os.path.join(network, "guides.brep"), "-o", str(out))
+    result = airshape("gordon", os.path.join(network, "profiles.brep"), os.path.join(network, "guides.brep"), "-o", str(out),
+                      "--report")
     assert result.returncode == 0, result.stderr
     report = json.loads(result.stdout)
     diagonal = report["bbox_diagonal"]
@@ -27,6 +28,15 @@ def test_network_lies_on_its_gordon_surface(tmp_path, network):
     assert out.exists() and out.stat().st_size > 0
     if os.path.basename(network) in CLOSED:
         assert report["periodic_u"] or report["periodic_v"], "a closed network gives a periodic, seamless surface"
+
+
+def test_the_accuracy_report_is_asked_for(tmp_path):
+    network = shared_path("data", "curve-networks", "helibody")
+    result = airshape("gordon", os.path.join(network, "profiles.brep"), os.path.join(network, "guides.brep"),
+                      "-o", str(tmp_path / "surface.brep"))
+    report = json.loads(result.stdout)
+    assert result.returncode == 0 and report["poles_u"] > 0 and report["max_crossing_gap"] >= 0
+    assert "max_profile_distance" not in report, "sampling the curves is for --report"
 
 
 def test_bad_input_is_one_line_and_exit_2(tmp_path):
