@@ -131,8 +131,12 @@ int run(int argc, char** argv) {
   if (command == commands().end())
     throw Error(ErrorCode::InvalidArgument, "unknown command '" + word + "' (see airshape help)");
   plugin::PluginHost host;
-  host.loadDefaultPlugins();
-  for (const std::string& message : host.messages()) std::cerr << "airshape: plugin: " << message << '\n';
+  // Loading the plugins links OCCT's toolkits they use (tens of milliseconds): only for the
+  // commands that read CPACS files or list plugins.
+  if (word != "gordon") {
+    host.loadDefaultPlugins();
+    for (const std::string& message : host.messages()) std::cerr << "airshape: plugin: " << message << '\n';
+  }
   return command->second.run(arguments, host);
 }
 

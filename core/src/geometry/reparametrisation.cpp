@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include <GeomAdaptor_Curve.hxx>
+
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_approximation.h"
@@ -30,14 +32,14 @@ class ParameterMap {
     std::vector<gp_Pnt> points;
     for (std::size_t i = 0; i < values.size(); ++i) points.emplace_back(values[i] - linear(targets[i]), 0.0, 0.0);
     const bool closed = period_ > 0.0;
-    map_ = interpolateCurve(points, targets, 3, closed);
-    if (!isIncreasing()) map_ = interpolateCurve(points, targets, 1, closed);  // piecewise linear is monotone
+    use(interpolateCurve(points, targets, 3, closed));
+    if (!isIncreasing()) use(interpolateCurve(points, targets, 1, closed));  // piecewise linear is monotone
     if (!isIncreasing())
       throw Error(ErrorCode::InvalidArgument,
                   "curve " + std::to_string(curveIndex + 1) + ": the reparametrisation is not strictly increasing");
   }
 
-  double operator()(double s) const { return linear(s) + map_->Value(s).X(); }
+  double operator()(double s) const { return linear(s) + evaluator_.Value(s).X(); }
 
   /// The target parameter that maps onto `value` (bisection; σ is increasing).
   double inverse(double value) const {
@@ -64,7 +66,13 @@ class ParameterMap {
 
   double linear(double s) const { return period_ > 0.0 ? start_ + period_ * s : 0.0; }
 
+  void use(const Handle(Geom_BSplineCurve) & map) {
+    map_ = map;
+    evaluator_.Load(map_);
+  }
+
   Handle(Geom_BSplineCurve) map_;
+  GeomAdaptor_Curve evaluator_;  ///< evaluates through OCCT's span cache: σ is asked span by span
   double start_;
   double period_;
 };
@@ -151,9 +159,13 @@ struct Approximation {
 };
 
 /// Approximates f∘σ for one curve in `space`.
-Approximation approximate(const Geom_BSplineCurve& curve, const ParameterMap& map, const std::vector<double>& targets,
-                          const std::vector<double>& crossings, const KnotVector& space, bool closed,
-                          double tolerance) {
+Approximation approximate(const Handle(Geom_BSplineCurve) & input, const ParameterMap& map,
+                          const std::vector<double>& targets, const std::vector<double>& crossings,
+                          const KnotVector& space, bool closed, double tolerance) {
+  // Evaluated through OCCT's span cache (the samples go through the curves in order), several
+  // times quicker than evaluating the curve afresh at each parameter.
+  const Geom_BSplineCurve& curve = *input;
+  const GeomAdaptor_Curve samples(input);
   // Samples in every knot span, so that no control point goes without data.
   constexpr int kSamplesPerSpan = 6;
   std::vector<double> parameters;
@@ -163,7 +175,7 @@ Approximation approximate(const Geom_BSplineCurve& curve, const ParameterMap& ma
   if (!closed) parameters.push_back(1.0);
   PoleMatrix points(static_cast<Eigen::Index>(parameters.size()), 3);
   for (std::size_t i = 0; i < parameters.size(); ++i) {
-    const gp_Pnt p = curve.Value(valueAt(curve, map(parameters[i]), closed));
+    const gp_Pnt p = samples.Value(valueAt(curve, map(parameters[i]), closed));
     points.row(static_cast<Eigen::Index>(i)) << p.X(), p.Y(), p.Z();
   }
   InterpolationConstraints constraints;
@@ -176,9 +188,10 @@ Approximation approximate(const Geom_BSplineCurve& curve, const ParameterMap& ma
   Approximation result;
   result.curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
   // Checked halfway between the fitted samples, where an approximation strays most.
+  const GeomAdaptor_Curve fitted(result.curve);
   for (std::size_t i = 0; i + 1 < parameters.size(); ++i) {
     const double s = 0.5 * (parameters[i] + parameters[i + 1]);
-    const double d = result.curve->Value(s).Distance(curve.Value(valueAt(curve, map(s), closed)));
+    const double d = fitted.Value(s).Distance(samples.Value(valueAt(curve, map(s), closed)));
     result.deviation = std::max(result.deviation, d);
     if (d > tolerance) result.misses.push_back(s);
   }
@@ -220,7 +233,7 @@ ReparametrisedFamily reparametrise(const CurveFamily& family, double tolerance) 
     result.maxDeviation = 0.0;
     std::vector<double> splits;
     for (std::size_t c = 0; c < family.curves.size(); ++c) {
-      Approximation a = approximate(*family.curves[c], prepared.maps[c], prepared.targets, family.crossings[c], space,
+      Approximation a = approximate(family.curves[c], prepared.maps[c], prepared.targets, family.crossings[c], space,
                                     family.closed, tolerance);
       result.curves.push_back(a.curve);
       result.maxDeviation = std::max(result.maxDeviation, a.deviation);
