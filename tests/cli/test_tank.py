@@ -36,6 +36,16 @@ def tank(uid, vessels, transformation="", parent="Body"):
             f"<transformation>{transformation}</transformation><vessels>{vessels}</vessels></fuelTank>")
 
 
+# Walls inside a vessel (the structure plugin, through the tank plugin's services): positioned
+# in the vessel's frame, kept inside its solid.
+WALLED = ('<vessel uID="Walled"><name>v</name><transformation/><cylinderRadius>1</cylinderRadius>'
+          "<cylinderLength>2</cylinderLength><domeType>" + ellipsoid(0) + "</domeType><structure><walls>"
+          '<wallPositions><wallPosition uID="WP1"><x>1</x><y>-1</y><z>-0.2</z></wallPosition>'
+          '<wallPosition uID="WP2"><x>1</x><y>1</y><z>-0.2</z></wallPosition></wallPositions>'
+          '<wallSegments><wallSegment uID="Baffle"><phi>180</phi><wallPositionUIDs><wallPositionUID>WP1'
+          "</wallPositionUID><wallPositionUID>WP2</wallPositionUID></wallPositionUIDs></wallSegment></wallSegments>"
+          "</walls></structure></vessel>")
+
 TANKS = (
     tank("Spheres", vessel("Sphere", 1, 2, ellipsoid(1)) + vessel("Half", 1, 2, ellipsoid(0.5)) +
          vessel("Flat", 1, 2, ellipsoid(0)) + vessel("Long", 0.5, 1, ellipsoid(2))) +
@@ -46,7 +56,8 @@ TANKS = (
     tank("Lofted", lofted_vessel("Loft")) +
     tank("Broken", vessel("NoRadius", -1, 1, ellipsoid(1)) +
          vessel("TooWide", 1, 1, "<isotensoid><polarOpeningRadius>1.5</polarOpeningRadius></isotensoid>") +
-         '<vessel uID="Nothing"><name>v</name></vessel>'))
+         '<vessel uID="Nothing"><name>v</name></vessel>') +
+    tank("Baffled", WALLED))
 
 # A fuselage 10 m long placed 5 m aft holds a CPACS 3.5 tank of design parameters.
 INNER_TANK = ("<fuelTanks><genericFuelTanks><genericFuelTank uID=\"Inner\"><name>t</name><designParameters>"
@@ -83,6 +94,17 @@ def test_ellipsoid_domes_in_closed_form(tmp_path):
     assert math.isclose(half, 2 * math.pi + 4 / 3 * math.pi * 0.5, rel_tol=1e-6)
     assert math.isclose(flat, 2 * math.pi, rel_tol=1e-6)  # flat ends
     assert math.isclose(long_, math.pi * 0.25 + 4 / 3 * math.pi * 0.25 * 1.0, rel_tol=1e-6)  # domes 1 deep
+
+
+def test_a_wall_inside_a_vessel(tmp_path):
+    path = tmp_path / "tanks.xml"
+    write_tanks(path)
+    volume, area, box = measures(path, "Baffle")
+    # The plane x = 1 of the vessel (the cylinder runs from x = 0 to 2 between flat ends, from
+    # the parent's origin x = 5 on), from z = -0.2 downwards (phi 180°): a segment of the unit disc.
+    assert volume == 0 and math.isclose(area, math.acos(0.2) - 0.2 * math.sqrt(0.96), rel_tol=1e-6)
+    assert math.isclose(box["min"][0], 6, abs_tol=1e-6) and math.isclose(box["max"][0], 6, abs_tol=1e-6)
+    assert math.isclose(box["max"][2], -0.2, abs_tol=1e-6) and math.isclose(box["min"][2], -1, abs_tol=1e-6)
 
 
 def test_torispherical_dome_on_a_turned_tank(tmp_path):

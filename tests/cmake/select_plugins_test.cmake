@@ -1,7 +1,7 @@
 cmake_minimum_required(VERSION 3.20)
 # `cmake -P` test of airshape_select_plugins: a selective build brings in what a plugin
 # builds on, before it, and refuses an unknown name.
-set(AIRSHAPE_ALL_PLUGINS wing fuselage controlsurfaces structure nacelle rotor tank generic)
+set(AIRSHAPE_ALL_PLUGINS wing fuselage controlsurfaces tank structure nacelle rotor generic)
 set(AIRSHAPE_PLUGIN_FOLDER ${SOURCE}/plugins)
 include(${SOURCE}/cmake/AirshapePlugin.cmake)
 
@@ -10,7 +10,7 @@ if(NOT selected STREQUAL "wing;controlsurfaces")
   message(FATAL_ERROR "controlsurfaces selected '${selected}', expected 'wing;controlsurfaces'")
 endif()
 airshape_select_plugins(selected structure controlsurfaces nacelle)
-if(NOT selected STREQUAL "wing;fuselage;structure;controlsurfaces;nacelle")
+if(NOT selected STREQUAL "wing;fuselage;tank;structure;controlsurfaces;nacelle")
   message(FATAL_ERROR "structure, controlsurfaces, nacelle selected '${selected}'")
 endif()
 airshape_select_plugins(selected tank)

@@ -16,10 +16,14 @@
 namespace airshape::structure {
 
 FuselageFrame::FuselageFrame(const Configuration& configuration, const schema::FuselageType& fuselage)
+    : FuselageFrame(configuration, fuselage.uID, &fuselage, model::componentTransform(configuration, fuselage.uID)) {}
+
+FuselageFrame::FuselageFrame(const Configuration& configuration, const std::string& hostUid,
+                             const schema::FuselageType* body, const model::Transform& toGlobal)
     : configuration_(configuration),
-      fuselage_(fuselage),
-      toGlobal_(model::componentTransform(configuration, fuselage.uID)),
-      solid_(configuration.shapes().namedShapeOf(configuration, fuselage.uID).shape) {
+      body_(body),
+      toGlobal_(toGlobal),
+      solid_(configuration.shapes().namedShapeOf(configuration, hostUid).shape) {
   Bnd_Box box;
   BRepBndLib::Add(solid_, box);
   reach_ = std::sqrt(box.SquareExtent());
@@ -38,16 +42,19 @@ std::vector<TopoDS_Face> FuselageFrame::crossSection(const gp_Pnt& origin, const
 }
 
 TopoDS_Face FuselageFrame::sectionFace(const std::string& sectionUid, const std::string& where) const {
+  if (body_ == nullptr)
+    throw Error(ErrorCode::InvalidModel, "the vessel has no sections to place on (it is given by design parameters)",
+                {}, where);
   auto sectionOf = [&](const std::string& elementUid) -> std::string {
-    if (fuselage_.sections)
-      for (const auto& section : fuselage_.sections->section)
+    if (body_->sections)
+      for (const auto& section : body_->sections->section)
         if (section.elements)
           for (const auto& element : section.elements->element)
             if (element.uID == elementUid) return section.uID;
     return {};
   };
-  if (fuselage_.segments)
-    for (const auto& segment : fuselage_.segments->segment) {
+  if (body_->segments)
+    for (const auto& segment : body_->segments->segment) {
       const bool front = sectionOf(segment.fromElementUID) == sectionUid;
       if (!front && sectionOf(segment.toElementUID) != sectionUid) continue;
       const NamedShape& solid = configuration_.shapes().namedShapeOf(configuration_, segment.uID);

@@ -24,6 +24,11 @@ namespace airshape::structure {
 class FuselageFrame {
  public:
   FuselageFrame(const Configuration& configuration, const schema::FuselageType& fuselage);
+  /// Any body structure is positioned in, by its component uID (a fuselage, a tank's vessel):
+  /// placed by `toGlobal`, its solid the component's shape; `body` its sections and segments
+  /// (null for a vessel of design parameters, which has none to place positions on).
+  FuselageFrame(const Configuration& configuration, const std::string& hostUid, const schema::FuselageType* body,
+                const model::Transform& toGlobal);
 
   gp_Pnt toGlobal(const gp_Pnt& point) const;
   /// A direction in fuselage coordinates as a global direction.
@@ -53,7 +58,7 @@ class FuselageFrame {
 
  private:
   const Configuration& configuration_;
-  const schema::FuselageType& fuselage_;
+  const schema::FuselageType* body_;
   model::Transform toGlobal_;
   TopoDS_Shape solid_;
   double reach_ = 0.0;

@@ -16,7 +16,7 @@ FuselageElement<Node> findInFuselages(const Configuration& configuration, const 
     for (const schema::FuselageType* fuselage : model.fuselages) {
       if (!fuselage->structure) continue;
       for (const Node* node : listOf(*fuselage->structure))
-        if (node->uID == uid) return {node, fuselage, &*fuselage->structure};
+        if (node->uID == uid) return {node, fuselage, &*fuselage->structure, fuselage->uID, std::nullopt, nullptr};
     }
   return {};
 }
@@ -37,18 +37,45 @@ FuselageElement<schema::PressureBulkheadAssemblyPositionType> pressureBulkheadNa
   return found;
 }
 
-FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid) {
-  const auto found =
-      findInFuselages<schema::WallSegmentType>(configuration, uid, [](const schema::FuselageStructureType& structure) {
-        std::vector<const schema::WallSegmentType*> nodes;
-        if (structure.walls && structure.walls->wallSegments)
-          for (const auto& wall : structure.walls->wallSegments->wallSegment)
-            if (wall.uID) nodes.push_back(&wall);
-        return nodes;
-      });
-  if (found.node == nullptr)
-    throw Error(ErrorCode::NotImplemented,
-                "no fuselage wall segment with uID '" + uid + "' (walls of tank hulls are not built yet)");
+namespace {
+
+std::vector<const schema::WallSegmentType*> wallSegmentsOf(const schema::FuselageStructureType& structure) {
+  std::vector<const schema::WallSegmentType*> nodes;
+  if (structure.walls && structure.walls->wallSegments)
+    for (const auto& wall : structure.walls->wallSegments->wallSegment)
+      if (wall.uID) nodes.push_back(&wall);
+  return nodes;
+}
+
+/// The wall of this uID in the vessel that holds it (the component it lies in), if any.
+FuselageElement<schema::WallSegmentType> wallInVessel(const Configuration& configuration, const std::string& uid,
+                                                      const tank::TankServices& tanks) {
+  const long index = configuration.components().find(uid);
+  if (index < 0) return {};
+  const std::string& vessel = configuration.components().components()[static_cast<std::size_t>(index)].parentUid;
+  if (vessel.empty() || configuration.components().named(vessel).nodeType != "tankHull") return {};
+  const auto structure = tanks.vesselStructure(configuration, vessel);
+  if (!structure) return {};
+  for (const schema::WallSegmentType* wall : wallSegmentsOf(*structure))
+    if (wall->uID == uid) {
+      const auto body = tanks.vesselBody(configuration, vessel);
+      return {wall,
+              body.get(),
+              structure.get(),
+              vessel,
+              tanks.vesselPlacement(configuration, vessel),
+              std::make_shared<std::pair<decltype(body), decltype(structure)>>(body, structure)};
+    }
+  return {};
+}
+
+}  // namespace
+
+FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid,
+                                                          const tank::TankServices* tanks) {
+  auto found = findInFuselages<schema::WallSegmentType>(configuration, uid, wallSegmentsOf);
+  if (found.node == nullptr && tanks != nullptr) found = wallInVessel(configuration, uid, *tanks);
+  if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no wall segment with uID '" + uid + "'");
   return found;
 }
 

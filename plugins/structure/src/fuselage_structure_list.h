@@ -1,8 +1,12 @@
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <string>
 
+#include "airshape/model/placement.h"
 #include "airshape/schema/generated/cpacs_model.h"
+#include "airshape/tank/tank_services.h"
 
 namespace airshape {
 class Configuration;
@@ -10,12 +14,17 @@ class Configuration;
 
 namespace airshape::structure {
 
-/// An element of a fuselage's structure and the fuselage that holds it.
+/// An element of a fuselage's (or a tank vessel's) structure and what holds it.
 template <class Node>
 struct FuselageElement {
   const Node* node = nullptr;
-  const schema::FuselageType* fuselage = nullptr;
+  const schema::FuselageType* fuselage = nullptr;  ///< null in a vessel of design parameters
   const schema::FuselageStructureType* structure = nullptr;
+  /// The component it is positioned in: a fuselage, or a tank's vessel (then placed by
+  /// `vesselPlacement`, its structure kept alive by `owner`).
+  std::string hostUid;
+  std::optional<model::Transform> vesselPlacement;
+  std::shared_ptr<const void> owner;
 };
 
 /// The pressure bulkhead (fuselage/structure/pressureBulkheads) with this uID in any model.
@@ -25,7 +34,10 @@ FuselageElement<schema::PressureBulkheadAssemblyPositionType> pressureBulkheadNa
 
 /// The wall segment (fuselage/structure/walls) with this uID in any model. Throws Error when
 /// none has it.
-FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid);
+/// The wall segment with this uID in any fuselage, or in a tank's vessel (found through the
+/// tank plugin's services, when given). Throws Error when none has it.
+FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid,
+                                                          const tank::TankServices* tanks);
 
 /// The cargo or passenger cross beam with this uID in any model. Throws Error when none has it.
 FuselageElement<schema::CrossBeamAssemblyPositionType> crossBeamNamed(const Configuration& configuration,

@@ -51,6 +51,12 @@ class ConstructionGuard {
   std::string uid_;
 };
 
+/// The body a wall is positioned in: its fuselage, or its tank's vessel.
+FuselageFrame frameOf(const Configuration& configuration, const FuselageElement<schema::WallSegmentType>& wall) {
+  if (wall.vesselPlacement) return FuselageFrame(configuration, wall.hostUid, wall.fuselage, *wall.vesselPlacement);
+  return FuselageFrame(configuration, *wall.fuselage);
+}
+
 /// A wall position placed: its base point (global) and the element it lies on, if any.
 struct BasePoint {
   gp_Pnt point;
@@ -142,7 +148,7 @@ struct WallLayout {
 
 WallLayout layoutOf(const Configuration& configuration, const FuselageElement<schema::WallSegmentType>& wall) {
   const schema::WallSegmentType& node = *wall.node;
-  const FuselageFrame fuselage(configuration, *wall.fuselage);
+  const FuselageFrame fuselage = frameOf(configuration, wall);
   const std::string positionsPath = node.xpath + "/wallPositionUIDs";
   std::vector<BasePoint> bases;
   if (node.wallPositionUIDs)
@@ -222,11 +228,11 @@ std::vector<TopoDS_Face> cutBack(const std::vector<TopoDS_Face>& faces, const st
 
 }  // namespace
 
-NamedShape fuselageWall(const Configuration& configuration, const std::string& uid) {
-  const auto wall = wallSegmentNamed(configuration, uid);
+NamedShape fuselageWall(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
+  const auto wall = wallSegmentNamed(configuration, uid, tanks);
   const ConstructionGuard guard(uid, wall.node->xpath);
   const WallLayout layout = layoutOf(configuration, wall);
-  const FuselageFrame fuselage(configuration, *wall.fuselage);
+  const FuselageFrame fuselage = frameOf(configuration, wall);
   std::vector<TopoDS_Face> faces;
   try {
     faces = facesInside(compoundOf(layout.strips), fuselage.solid());
@@ -238,7 +244,7 @@ NamedShape fuselageWall(const Configuration& configuration, const std::string& u
     for (const std::string& bounding : wall.node->boundingElementUIDs->boundingElementUID) {
       FuselageElement<schema::WallSegmentType> other;
       try {
-        other = wallSegmentNamed(configuration, bounding);
+        other = wallSegmentNamed(configuration, bounding, tanks);
       } catch (const Error&) {
         throw Error(ErrorCode::NotImplemented,
                     "bounding element '" + bounding +

@@ -1,6 +1,7 @@
 // The structure plugin: spars, ribs and cells of wings; frames, stringers, bulkheads, doors,
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
-// (airshape/wing/wing_services.h) and on the fuselages' component shapes. Spar webs, ribs,
+// (airshape/wing/wing_services.h), on the fuselages' component shapes and, for walls in tank
+// vessels, on the tank plugin's public interface (airshape/tank/tank_services.h). Spar webs, ribs,
 // cells, wing fuel tanks, pressure bulkheads, walls and cross beams are built; the other node types are claimed
 // (graph/component_graph.h) and wait for their builders.
 #include "airshape/configuration.h"
@@ -54,10 +55,11 @@ class StructurePlugin final : public plugin::BasicPlugin {
                      {"window", ""},
                      {"intercostal", ""},
                      {"structuralMember", ""}},
-                    {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}}) {}
+                    {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}, {"tank", "0.2.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     wing_ = services.find<wing::WingServices>(wing::kWingServices);
+    tanks_ = services.find<tank::TankServices>(tank::kTankServices);
   }
 
   void registerShapeBuilders(ComponentShapes& shapes) const override {
@@ -81,11 +83,14 @@ class StructurePlugin final : public plugin::BasicPlugin {
                [](const Configuration& c, const std::string& uid) { return pressureBulkhead(c, uid); });
     shapes.add("crossBeam", [](const Configuration& c, const std::string& uid) { return crossBeam(c, uid); });
     shapes.add("crossBeamStrut", [](const Configuration& c, const std::string& uid) { return crossBeamStrut(c, uid); });
-    shapes.add("wallSegment", [](const Configuration& c, const std::string& uid) { return fuselageWall(c, uid); });
+    const std::shared_ptr<const tank::TankServices> tanks = tanks_;
+    shapes.add("wallSegment",
+               [tanks](const Configuration& c, const std::string& uid) { return fuselageWall(c, tanks.get(), uid); });
   }
 
  private:
   std::shared_ptr<const wing::WingServices> wing_;
+  std::shared_ptr<const tank::TankServices> tanks_;
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "airshape/error.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/xml/text.h"
+#include "tank_services.h"
 #include "vessel.h"
 
 namespace airshape::tank {
@@ -32,11 +33,15 @@ NamedShape tankShape(const Configuration& configuration, const fuselage::Fuselag
 class TankPlugin final : public plugin::BasicPlugin {
  public:
   TankPlugin()
-      : BasicPlugin("tank", "0.1.0", "fuel tanks and their vessels: lofted bodies or cylinders between domes",
+      : BasicPlugin("tank", "0.2.0", "fuel tanks and their vessels: lofted bodies or cylinders between domes",
                     {{"fuelTank", ""}, {"tankHull", ""}, {"hullSegment", ""}}, {{"fuselage", "0.3.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     fuselages_ = services.find<fuselage::FuselageServices>(fuselage::kFuselageServices);
+  }
+
+  void offerServices(plugin::ServiceRegistry& services) const override {
+    services.offer<TankServices>(kTankServices, makeTankServices());
   }
 
   void registerShapeBuilders(ComponentShapes& shapes) const override {

@@ -52,6 +52,7 @@ std::shared_ptr<const Vessel> readVessel(const Configuration& configuration, con
   vessel->cylinderRadius = schema::numberIn(*element, "cylinderRadius", vessel->xpath);
   vessel->cylinderLength = schema::numberIn(*element, "cylinderLength", vessel->xpath);
   vessel->dome = schema::readChild<schema::DomeTypeType>(*element, "domeType", vessel->xpath);
+  vessel->structure = schema::readChild<schema::FuselageStructureType>(*element, "structure", vessel->xpath);
   return vessel;
 }
 

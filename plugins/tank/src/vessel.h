@@ -31,6 +31,8 @@ struct Vessel {
   /// The design parameters (each absent where the element leaves it out).
   std::optional<double> cylinderRadius, cylinderLength;
   std::shared_ptr<const schema::DomeTypeType> dome;
+  /// Its structure (walls, frames), read into the 3.5 type of a fuselage's; null without one.
+  std::shared_ptr<const schema::FuselageStructureType> structure;
 };
 
 /// The vessel of this uID (a tankHull component, or a tank given by design parameters).
