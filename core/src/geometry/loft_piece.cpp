@@ -12,13 +12,6 @@ namespace {
 
 constexpr double kFaceTolerance = 1e-7;
 
-/// Whether a curve has shrunk to a point (a nose or tail tip).
-bool isPoint(const Geom_BSplineCurve& curve) {
-  for (int i = 2; i <= curve.NbPoles(); ++i)
-    if (curve.Pole(i).Distance(curve.Pole(1)) > 1e-7) return false;
-  return true;
-}
-
 /// The loft's boundary curve at u over [v0, v1], as a B-spline of its own.
 Handle(Geom_BSplineCurve) alongV(const Geom_BSplineSurface& loft, double u, double v0, double v1) {
   Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(loft.UIso(u));
@@ -27,6 +20,12 @@ Handle(Geom_BSplineCurve) alongV(const Geom_BSplineSurface& loft, double u, doub
 }
 
 }  // namespace
+
+bool isPointCurve(const Geom_BSplineCurve& curve) {
+  for (int i = 2; i <= curve.NbPoles(); ++i)
+    if (curve.Pole(i).Distance(curve.Pole(1)) > 1e-7) return false;
+  return true;
+}
 
 TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd) {
   double u0, u1, v0, v1;
@@ -54,7 +53,7 @@ TopoDS_Face loftClosingFace(const Handle(Geom_BSplineSurface) & loft, double vSt
 
 TopoDS_Face loftCap(const Handle(Geom_BSplineSurface) & loft, double v, bool closedProfiles) {
   const auto profile = Handle(Geom_BSplineCurve)::DownCast(loft->VIso(v));
-  if (isPoint(*profile)) return {};
+  if (isPointCurve(*profile)) return {};
   return profileCap(profile, closedProfiles);
 }
 

@@ -19,6 +19,9 @@ struct LoftPiece {
   std::string solidProblem;  ///< why there is no solid, when there is none
 };
 
+/// Whether a curve has shrunk to a point (a nose or tail tip): all its poles within 1e-7.
+bool isPointCurve(const Geom_BSplineCurve& curve);
+
 /// The skin of the loft over [vStart, vEnd] as one face, the whole u range.
 TopoDS_Face loftFace(const Handle(Geom_BSplineSurface) & loft, double vStart, double vEnd);
 

@@ -1,0 +1,77 @@
+// A loft of closed profiles built with shared edges (geometry/loft_shell.h) is a valid closed
+// solid with the same volume and area as the same faces sewn, nose points included.
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRep_Tool.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/brep_measures.h"
+#include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/loft_piece.h"
+#include "airshape/geometry/loft_shell.h"
+#include "airshape/geometry/skinning.h"
+
+namespace airshape::geometry {
+namespace {
+
+/// A loft through ellipses at x = 0, 1, 2, 3 with these half axes (0: a point).
+Handle(Geom_BSplineSurface) ellipseLoft(const std::vector<double>& radii, std::vector<double>& sites) {
+  constexpr int kPoints = 40;
+  std::vector<double> parameters;
+  for (int i = 0; i <= kPoints; ++i) parameters.push_back(static_cast<double>(i) / kPoints);
+  std::vector<Handle(Geom_BSplineCurve)> profiles;
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    std::vector<gp_Pnt> points;
+    for (int i = 0; i <= kPoints; ++i) {
+      const double a = 2.0 * M_PI * i / kPoints;
+      points.emplace_back(static_cast<double>(k), radii[k] * std::sin(a), 1.3 * radii[k] * std::cos(a));
+    }
+    points.back() = points.front();
+    profiles.push_back(interpolateCurve(points, parameters, 3, true));
+    sites.push_back(static_cast<double>(k) / static_cast<double>(radii.size() - 1));
+  }
+  return skinCurves(profiles, sites, skinningSpace(sites, 3, false));
+}
+
+/// The same faces sewn: the reference the shared-edge solid must match.
+TopoDS_Shape sewnLoft(const Handle(Geom_BSplineSurface) & loft, const std::vector<double>& sites) {
+  std::vector<TopoDS_Face> faces = {loftCap(loft, sites.front(), true), loftCap(loft, sites.back(), true)};
+  for (std::size_t k = 0; k + 1 < sites.size(); ++k) faces.push_back(loftFace(loft, sites[k], sites[k + 1]));
+  return sewnSolid(faces);
+}
+
+void expectSameSolidAsSewn(const std::vector<double>& radii) {
+  std::vector<double> sites;
+  const Handle(Geom_BSplineSurface) loft = ellipseLoft(radii, sites);
+  std::vector<TopoDS_Face> faces;
+  const TopoDS_Solid solid = closedLoftSolid(loft, sites, faces);
+  EXPECT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+  ASSERT_EQ(faces.size(), sites.size() + 1);
+  EXPECT_EQ(faces.front().IsNull(), radii.front() == 0.0);
+  EXPECT_EQ(faces.back().IsNull(), radii.back() == 0.0);
+  // Every profile edge bounds the two faces beside it: nothing is left open.
+  TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges;
+  TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_EDGE, TopAbs_FACE, facesOfEdges);
+  for (int i = 1; i <= facesOfEdges.Extent(); ++i) {
+    const TopoDS_Edge& edge = TopoDS::Edge(facesOfEdges.FindKey(i));
+    if (BRep_Tool::Degenerated(edge) || facesOfEdges(i).Extent() == 2) continue;
+    ASSERT_EQ(facesOfEdges(i).Extent(), 1);
+    EXPECT_TRUE(BRep_Tool::IsClosed(edge, TopoDS::Face(facesOfEdges(i).First()))) << "an edge of one face is its seam";
+  }
+  const TopoDS_Shape sewn = sewnLoft(loft, sites);
+  EXPECT_NEAR(volumeOf(solid), volumeOf(sewn), 1e-9 * volumeOf(sewn));
+  EXPECT_NEAR(areaOf(solid), areaOf(sewn), 1e-9 * areaOf(sewn));
+  EXPECT_GT(volumeOf(solid), 0.0);
+}
+
+TEST(LoftShell, AClosedLoftWithCapsIsTheSewnSolid) { expectSameSolidAsSewn({0.5, 1.0, 1.2, 0.8}); }
+
+TEST(LoftShell, ANoseShrunkToAPointHasNoCap) { expectSameSolidAsSewn({0.0, 1.0, 1.2, 0.8}); }
+
+}  // namespace
+}  // namespace airshape::geometry
