@@ -59,6 +59,20 @@ def test_an_exported_page_opens_from_disk_and_shows_every_component(tmp_path):
         alone, _ = drawn_share(browser.screenshot(), VIEW)
         assert 0 < alone < whole
         faces = browser.evaluate("Object.fromEntries(window.AIRSHAPE.components.map(c => [c.name, c.faces.length]))")
+        # Edges (section profiles, guide curves, borders) as lines, in the page's frame: the
+        # fuselage's lie in its box with CPACS (x, y, z) drawn as (x, z, -y), spanning it (up to
+        # where the skin bulges between sections).
+        fuselage = browser.evaluate("window.AIRSHAPE.components.find(c => c.name === 'Fuselage')")
+        points = [polyline[i:i + 3] for polyline in fuselage["edges"] for i in range(0, len(polyline), 3)]
+        low, high = fuselage["box"]["min"], fuselage["box"]["max"]
+        length = high[0] - low[0]
+        for axis, (lowest, highest) in enumerate([(low[0], high[0]), (low[2], high[2]), (-high[1], -low[1])]):
+            drawn = [p[axis] for p in points]
+            assert lowest - 1e-4 <= min(drawn) <= lowest + 0.02 * length, (axis, min(drawn), lowest)
+            assert highest - 0.02 * length <= max(drawn) <= highest + 1e-4, (axis, max(drawn), highest)
+        browser.evaluate("document.getElementById('show-all').click(); document.getElementById('edges').click()")
+        with_edges, _ = drawn_share(browser.screenshot(), VIEW)
+        assert with_edges > whole
     # The page's face lists follow the glTF primitives, one per face, as the .glb writes them.
     glb_path = tmp_path / "airliner.glb"
     airshape("export", AIRLINER, "-o", str(glb_path), "--mirror", "--quiet")

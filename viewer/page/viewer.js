@@ -2,9 +2,10 @@
 // the component tree (show, hide, isolate, highlight), measures of the component picked, the
 // name under the pointer, mirrored halves on or off, and a length scale. window.AIRSHAPE says
 // what to show: {title, live, model (base64 GLB, or null when live), components: [{name, type,
-// volume, area, box: {min, max}, faces: [face names in the order of the mesh's primitives]}]}. Live pages fetch /model.glb and /components.json and
-// poll /version, reloading when the file changed and showing its error when it no longer loads;
-// they have a slider per control device (GET /devices, POST /deflect).
+// volume, area, box: {min, max}, faces: [face names in the order of the mesh's primitives],
+// edges: [polylines x0, y0, z0, x1, ... in the page's frame]}]}. Live pages fetch /model.glb and
+// /components.json and poll /version, reloading when the file changed and showing its error
+// when it no longer loads; they have a slider per control device (GET /devices, POST /deflect).
 (function () {
   'use strict';
 
@@ -201,16 +202,26 @@
     for (const name of objects.keys()) if (name.endsWith(' (mirrored)')) setVisible(name, on);
   }
 
+  /// The components' B-rep edges (section profiles, guide curves, segment borders, seams) as
+  /// lines, each component's under its object so that hiding it hides them.
   function setEdges(on) {
     for (const line of edges) line.parent.remove(line);
     edges = [];
     if (on && model) {
-      const meshes = [];
-      model.traverse(object => { if (object.isMesh) meshes.push(object); });
-      for (const mesh of meshes) {
-        const line = new THREE.LineSegments(new THREE.EdgesGeometry(mesh.geometry, 30),
-                                            new THREE.LineBasicMaterial({ color: 0x1d2733 }));
-        mesh.add(line);
+      for (const component of components) {
+        const object = objects.get(component.name);
+        if (!object || !component.edges) continue;
+        const positions = [];
+        for (const polyline of component.edges)
+          for (let i = 3; i < polyline.length; i += 3)
+            positions.push(polyline[i - 3], polyline[i - 2], polyline[i - 1], polyline[i], polyline[i + 1], polyline[i + 2]);
+        const geometry = new THREE.BufferGeometry();
+        geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
+        const line = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: 0x1d2733 }));
+        // The polylines are in the page's frame: undo the object's own placement.
+        object.updateWorldMatrix(true, false);
+        line.applyMatrix4(object.matrixWorld.clone().invert());
+        object.add(line);
         edges.push(line);
       }
     }

@@ -8,8 +8,10 @@
 namespace airshape::exporting {
 
 /// What the browser viewer (docs/viewer.md) shows of each component of a scene besides its
-/// triangles, as a JSON array: name, type, volume [m³], area [m²], box (CPACS frame) and the
-/// names of its faces in the order of the glTF primitives. The scene must be triangulated.
+/// triangles, as a JSON array: name, type, volume [m³], area [m²], box (CPACS frame), the
+/// names of its faces in the order of the glTF primitives, and its B-rep edges (section
+/// profiles, guide curves, borders) as polylines in glTF's frame. The scene must be
+/// triangulated.
 std::string viewerComponentsJson(const ExportScene& scene);
 
 /// The scene as GLB bytes (glTF 2.0, y up, one node per component), triangulated as
