@@ -8,6 +8,7 @@
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Trsf.hxx>
 
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
@@ -72,6 +73,23 @@ void expectSameSolidAsSewn(const std::vector<double>& radii) {
 TEST(LoftShell, AClosedLoftWithCapsIsTheSewnSolid) { expectSameSolidAsSewn({0.5, 1.0, 1.2, 0.8}); }
 
 TEST(LoftShell, ANoseShrunkToAPointHasNoCap) { expectSameSolidAsSewn({0.0, 1.0, 1.2, 0.8}); }
+
+TEST(LoftShell, StretchesOfDifferentSurfacesShareTheirProfiles) {
+  // Two lofts that meet at the middle profile (a guided fuselage's rows of patches are such).
+  std::vector<double> frontSites, rearSites;
+  const auto front = ellipseLoft({0.5, 1.0}, frontSites), rear = ellipseLoft({1.0, 0.7}, rearSites);
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(1.0, 0.0, 0.0));
+  const auto moved = Handle(Geom_BSplineSurface)::DownCast(rear->Transformed(shift));
+  std::vector<TopoDS_Face> faces;
+  const TopoDS_Solid solid = closedLoftSolid({{front, 0.0, 1.0}, {moved, 0.0, 1.0}}, faces);
+  EXPECT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+  const TopoDS_Shape sewn = sewnSolid(
+      {loftFace(front, 0.0, 1.0), loftFace(moved, 0.0, 1.0), loftCap(front, 0.0, true), loftCap(moved, 1.0, true)});
+  EXPECT_NEAR(volumeOf(solid), volumeOf(sewn), 1e-9 * volumeOf(sewn));
+  // Stretches that do not meet are refused, so that the caller sews instead.
+  EXPECT_THROW(closedLoftSolid({{front, 0.0, 1.0}, {rear, 0.0, 1.0}}, faces), Error);
+}
 
 }  // namespace
 }  // namespace airshape::geometry

@@ -1,5 +1,7 @@
 #include "airshape/geometry/loft_shell.h"
 
+#include <cmath>
+
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -59,32 +61,57 @@ TopoDS_Face capOn(const TopoDS_Edge& profile, const TopoDS_Face& skin) {
   return cap;
 }
 
+/// Consecutive stretches must meet with the same parameters: the end profile of one is the
+/// start profile of the next at every u (one edge serves both), over the same u range.
+void checkStretchesMeet(const std::vector<LoftStretch>& stretches, double u0, double u1) {
+  constexpr int kSamples = 64;
+  for (std::size_t k = 0; k + 1 < stretches.size(); ++k) {
+    const LoftStretch &before = stretches[k], &after = stretches[k + 1];
+    double a0, a1, b0, b1;
+    after.surface->Bounds(a0, a1, b0, b1);
+    if (std::abs(a0 - u0) > 1e-12 || std::abs(a1 - u1) > 1e-12)
+      throw Error(ErrorCode::InvalidModel, "the stretches of the loft differ in their u range");
+    for (int i = 0; i <= kSamples; ++i) {
+      const double u = u0 + (u1 - u0) * i / kSamples;
+      if (before.surface->Value(u, before.vEnd).Distance(after.surface->Value(u, after.vStart)) > kBrepTolerance)
+        throw Error(ErrorCode::InvalidModel, "stretches of the loft do not meet at the same parameters");
+    }
+  }
+}
+
 }  // namespace
 
-TopoDS_Solid closedLoftSolid(const Handle(Geom_BSplineSurface) & loft, const std::vector<double>& sites,
-                             std::vector<TopoDS_Face>& faces) {
+TopoDS_Solid closedLoftSolid(const std::vector<LoftStretch>& stretches, std::vector<TopoDS_Face>& faces) {
+  if (stretches.empty()) throw Error(ErrorCode::InvalidModel, "a loft needs at least one stretch");
   double u0, u1, v0, v1;
-  loft->Bounds(u0, u1, v0, v1);
+  stretches.front().surface->Bounds(u0, u1, v0, v1);
+  checkStretchesMeet(stretches, u0, u1);
+  // The profiles where the stretches meet, and at both ends: one edge each.
   BRep_Builder builder;
   std::vector<TopoDS_Edge> profiles;
   std::vector<bool> degenerated;
   std::vector<TopoDS_Vertex> corners;
-  for (const double v : sites) {
-    corners.push_back(BRepBuilderAPI_MakeVertex(loft->Value(u0, v)).Vertex());
+  auto addProfile = [&](const Handle(Geom_BSplineSurface) & surface, double v) {
+    corners.push_back(BRepBuilderAPI_MakeVertex(surface->Value(u0, v)).Vertex());
     bool point = false;
-    profiles.push_back(profileEdge(loft, v, corners.back(), u0, u1, point));
+    profiles.push_back(profileEdge(surface, v, corners.back(), u0, u1, point));
     degenerated.push_back(point);
-  }
+  };
+  for (const LoftStretch& stretch : stretches) addProfile(stretch.surface, stretch.vStart);
+  addProfile(stretches.back().surface, stretches.back().vEnd);
+
   std::vector<TopoDS_Face> skins;
-  for (std::size_t k = 0; k + 1 < sites.size(); ++k) {
-    const double vStart = sites[k], vEnd = sites[k + 1];
-    // The face carries its stretch of the loft only (Segment keeps the parameters).
-    auto piece = Handle(Geom_BSplineSurface)::DownCast(loft->Copy());
+  for (std::size_t k = 0; k < stretches.size(); ++k) {
+    const LoftStretch& stretch = stretches[k];
+    const double vStart = stretch.vStart, vEnd = stretch.vEnd;
+    stretch.surface->Bounds(u0, u1, v0, v1);
+    // The face carries its stretch of the surface only (Segment keeps the parameters).
+    auto piece = Handle(Geom_BSplineSurface)::DownCast(stretch.surface->Copy());
     if (vStart > v0 || vEnd < v1) piece->Segment(u0, u1, vStart, vEnd);
     TopoDS_Face face;
     builder.MakeFace(face, piece, kBrepTolerance);
-    // The seam's curve is its stretch of the loft's line at u0 only (a file carries its poles).
-    auto seamCurve = Handle(Geom_BSplineCurve)::DownCast(loft->UIso(u0));
+    // The seam's curve is its stretch of the surface's line at u0 only (a file carries its poles).
+    auto seamCurve = Handle(Geom_BSplineCurve)::DownCast(stretch.surface->UIso(u0));
     if (vStart > v0 || vEnd < v1) seamCurve->Segment(vStart, vEnd);
     const TopoDS_Edge seam = BRepBuilderAPI_MakeEdge(seamCurve, corners[k], corners[k + 1], vStart, vEnd).Edge();
     builder.UpdateEdge(seam, lineAtU(u1), lineAtU(u0), face, kBrepTolerance);  // forward: the side at u1
@@ -120,6 +147,13 @@ TopoDS_Solid closedLoftSolid(const Handle(Geom_BSplineSurface) & loft, const std
   builder.MakeSolid(solid);
   builder.Add(solid, shell);
   return outwards(solid);
+}
+
+TopoDS_Solid closedLoftSolid(const Handle(Geom_BSplineSurface) & loft, const std::vector<double>& sites,
+                             std::vector<TopoDS_Face>& faces) {
+  std::vector<LoftStretch> stretches;
+  for (std::size_t k = 0; k + 1 < sites.size(); ++k) stretches.push_back({loft, sites[k], sites[k + 1]});
+  return closedLoftSolid(stretches, faces);
 }
 
 }  // namespace airshape::geometry

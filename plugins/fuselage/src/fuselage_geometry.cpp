@@ -366,9 +366,10 @@ double FuselageGeometry::surfaceArea() const {
 
 NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
   if (segments_.empty()) throw Error(ErrorCode::InvalidModel, "the fuselage has no segments, so no solid", {}, xpath_);
-  if (patchRows_.empty() && closedProfiles_) {
-    // One loft of closed profiles: its faces share their edges from the start, which is
-    // several times quicker than sewing them; sewing stays for what that cannot take.
+  if (closedProfiles_) {
+    // A loft (or a row of guide-curve patches per segment) of closed profiles: its faces
+    // share their edges from the start, several times quicker than sewing them; sewing stays
+    // for half profiles and for what that cannot take.
     try {
       return solidOfSharedEdges(fuselageUid);
     } catch (const Error&) {
@@ -403,7 +404,13 @@ NamedShape FuselageGeometry::solid(const std::string& fuselageUid) const {
 NamedShape FuselageGeometry::solidOfSharedEdges(const std::string& fuselageUid) const {
   std::vector<TopoDS_Face> faces;
   NamedShape solid;
-  solid.shape = geometry::closedLoftSolid(loft_, sectionSites_, faces);
+  if (patchRows_.empty()) {
+    solid.shape = geometry::closedLoftSolid(loft_, sectionSites_, faces);
+  } else {  // a row of guide-curve patches per segment
+    std::vector<geometry::LoftStretch> rows;
+    for (const auto& row : patchRows_) rows.push_back({row, 0.0, 1.0});
+    solid.shape = geometry::closedLoftSolid(rows, faces);
+  }
   if (!faces.front().IsNull()) solid.faces.emplace_back(fuselageUid + "/front", faces.front());
   for (std::size_t k = 0; k < segments_.size(); ++k) solid.faces.emplace_back(segments_[k].uid + "/skin", faces[k + 1]);
   if (!faces.back().IsNull()) solid.faces.emplace_back(fuselageUid + "/rear", faces.back());

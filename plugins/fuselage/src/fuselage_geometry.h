@@ -58,7 +58,7 @@ class FuselageGeometry {
   /// The whole fuselage as one solid: skins, symmetry faces, front and rear caps, named
   /// "<segment uID>/skin", "<segment uID>/symmetry", "<fuselage uID>/front" and "/rear".
   NamedShape solid(const std::string& fuselageUid) const;
-  /// The same for a loft of closed profiles, its faces sharing their edges from the start
+  /// The same for closed profiles, its faces sharing their edges from the start
   /// (geometry/loft_shell.h) instead of sewn. Throws where that cannot be built.
   NamedShape solidOfSharedEdges(const std::string& fuselageUid) const;
   /// One segment's solid (a fuselage segment's shape): its skin, symmetry face and caps,

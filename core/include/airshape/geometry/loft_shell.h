@@ -19,4 +19,16 @@ namespace airshape::geometry {
 TopoDS_Solid closedLoftSolid(const Handle(Geom_BSplineSurface) & loft, const std::vector<double>& sites,
                              std::vector<TopoDS_Face>& faces);
 
+/// A part [vStart, vEnd] of a surface closed in u: one skin face of a closed loft.
+struct LoftStretch {
+  Handle(Geom_BSplineSurface) surface;
+  double vStart = 0.0, vEnd = 1.0;
+};
+
+/// The same for a loft of stretches of different surfaces (a guided fuselage's rows of
+/// patches, one per segment): consecutive stretches must meet with the same parameters (the
+/// end profile of one the start profile of the next at every u, within the B-rep tolerance,
+/// over the same u range), else Error, so that the caller can sew instead.
+TopoDS_Solid closedLoftSolid(const std::vector<LoftStretch>& stretches, std::vector<TopoDS_Face>& faces);
+
 }  // namespace airshape::geometry
