@@ -204,9 +204,7 @@ void openInBrowser(const std::string& url) {
 
 int runView(const Arguments& arguments, plugin::PluginHost& host) {
   const ViewOptions options = parseViewOptions(arguments);
-  if (!viewer::available())
-    throw Error(ErrorCode::NotImplemented,
-                "this build has no viewer: npm was missing when it was built (docs/viewer.md)");
+  if (!viewer::available()) throw Error(ErrorCode::NotImplemented, viewer::kUnavailable);
   ViewedModel model;
   FileStamp seen = stampOf(options.input);
   build(options.input, host, model);  // a file that never loads is refused like any command's

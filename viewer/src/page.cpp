@@ -73,7 +73,7 @@ std::string scriptSafe(const std::string& json) {
 
 /// The page template with each {{NAME}} replaced once by its value (values are not searched).
 std::string filledPage(const PageContent& content, const std::string& config) {
-  if (!available()) throw std::runtime_error("this build has no viewer: npm was missing when it was built");
+  if (!available()) throw std::runtime_error(kUnavailable);
 #if AIRSHAPE_VIEWER_HAS_THREE
   const std::pair<std::string, std::string> values[] = {{"TITLE", htmlEscaped(content.title)},
                                                         {"CSS", joined(resources::page_css_parts)},

@@ -117,28 +117,35 @@ SceneComponent copied(const std::string& name, const NamedShape& shape) {
   }
 }
 
+/// A solid of the scene: its name (the uID, or "<uID> (mirrored)"), its component's type.
+struct SceneSolid {
+  std::string name;
+  NamedShape shape;
+  std::string type;
+};
+
 /// The solids of the selected components that were built, with their mirrored halves on
 /// request: moving components posed, those they lie in with their cut-outs.
-std::vector<std::pair<std::string, NamedShape>> sceneSolids(const Configuration& configuration,
-                                                            const std::vector<std::size_t>& selected,
-                                                            const std::vector<bool>& failed,
-                                                            const std::map<std::string, PosedComponent>& posed,
-                                                            const ExportOptions& options) {
+std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const std::vector<std::size_t>& selected,
+                                    const std::vector<bool>& failed, const std::map<std::string, PosedComponent>& posed,
+                                    const ExportOptions& options) {
   std::set<std::string> changed;  // posed, or hosting a posed one
   for (const auto& [uid, component] : posed) changed.insert({uid, component.host});
-  std::vector<std::pair<std::string, NamedShape>> solids;
+  std::vector<SceneSolid> solids;
   for (std::size_t index : selected) {
     if (failed[index]) continue;
-    const std::string& uid = configuration.components().components()[index].uid;
+    const graph::Component& component = configuration.components().components()[index];
+    const std::string& uid = component.uid;
     const bool asBuilt = changed.count(uid) == 0;
     const NamedShape shape =
         asBuilt ? configuration.shapes().namedShapeOf(configuration, uid) : posedSolid(configuration, uid, posed);
-    solids.emplace_back(uid, shape);
+    solids.push_back({uid, shape, component.typeName});
     if (!options.mirror || !hasMirror(configuration, uid)) continue;
     const std::string plane = model::resolvedSymmetry(configuration, uid);
-    solids.emplace_back(uid + " (mirrored)", asBuilt
-                                                 ? configuration.shapes().mirroredShapeOf(configuration, uid)
-                                                 : transformedNamedShape(shape, model::mirrorIn(plane), " (mirrored)"));
+    solids.push_back({uid + " (mirrored)",
+                      asBuilt ? configuration.shapes().mirroredShapeOf(configuration, uid)
+                              : transformedNamedShape(shape, model::mirrorIn(plane), " (mirrored)"),
+                      component.typeName});
   }
   return solids;
 }
@@ -171,15 +178,12 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
       options.progress(
           {selected.size(), selected.size(), std::chrono::duration<double>(Clock::now() - start).count(), "fusing"});
     std::vector<const NamedShape*> shapes;
-    for (const auto& solid : solids) shapes.push_back(&solid.second);
+    for (const SceneSolid& solid : solids) shapes.push_back(&solid.shape);
     scene.components.push_back(copied(scene.name + " (fused)", fuseNamedShapes(shapes)));
   } else {
-    for (const auto& [name, shape] : solids) scene.components.push_back(copied(name, shape));
-    for (SceneComponent& component : scene.components) {
-      const std::string uid = component.name.substr(0, component.name.rfind(" (mirrored)"));
-      const long index = configuration.components().find(uid);
-      if (index >= 0)
-        component.type = configuration.components().components()[static_cast<std::size_t>(index)].typeName;
+    for (const SceneSolid& solid : solids) {
+      scene.components.push_back(copied(solid.name, solid.shape));
+      scene.components.back().type = solid.type;
     }
   }
   return scene;

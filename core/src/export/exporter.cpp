@@ -79,8 +79,7 @@ Format formatOfPath(const std::string& path) {
     throw Error(ErrorCode::InvalidArgument,
                 "unknown export format '" + extension + "' (known: " + knownExtensions() + ")", path);
   if (format->second == Format::Html && !viewer::available())
-    throw Error(ErrorCode::NotImplemented,
-                "this build has no viewer: npm was missing when it was built (docs/viewer.md)", path);
+    throw Error(ErrorCode::NotImplemented, viewer::kUnavailable, path);
   return format->second;
 }
 

@@ -7,6 +7,10 @@ namespace airshape::viewer {
 /// Whether this build carries the viewer: three.js was fetched with npm when it was built.
 bool available();
 
+/// What to say when it does not.
+inline constexpr const char* kUnavailable =
+    "this build has no viewer: npm was missing when it was built (docs/viewer.md)";
+
 /// The three.js version the viewer carries ("" without it).
 std::string threeVersion();
 
