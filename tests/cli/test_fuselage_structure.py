@@ -1,4 +1,4 @@
-"""Fuselage structure (docs/structure.md): pressure bulkheads and walls in a unit cylinder the test
+"""Fuselage structure (docs/structure.md): pressure bulkheads, walls, cross beams and doors in a unit cylinder the test
 writes itself (radius 1, x from 0 to 10, sections at x = 0, 5 and 10), where every area has a
 closed form."""
 import json
@@ -36,9 +36,29 @@ def write(path, structure):
     path.write_text(HEADER + body + f"</fuselages></model></aircraft><profiles>{profiles}</profiles></vehicles></cpacs>")
 
 
+def stringer(uid, *positions):
+    """A stringer through (x, referenceZ, referenceAngle) positions, referenceY 0."""
+    return f'<stringer uID="{uid}">' + "".join(
+        f'<stringerPosition uID="{uid}P{i}"><structuralElementUID>E</structuralElementUID><positionX>{x}</positionX>'
+        f"<referenceY>0</referenceY><referenceZ>{z}</referenceZ><referenceAngle>{angle}</referenceAngle>"
+        "</stringerPosition>" for i, (x, z, angle) in enumerate(positions)) + "</stringer>"
+
+
+def door(uid, start_frame, end_frame, start_stringer, end_stringer):
+    return (f'<cargoDoor uID="{uid}"><doorElementUID>E</doorElementUID><startFrameUID>{start_frame}</startFrameUID>'
+            f"<endFrameUID>{end_frame}</endFrameUID><startStringerUID>{start_stringer}</startStringerUID>"
+            f"<endStringerUID>{end_stringer}</endStringerUID></cargoDoor>")
+
+
 def structure():
+    stringers = (stringer("Side", (0, 0, 90), (10, 0, 90)) + stringer("Top", (0, 0, 0), (10, 0, 0)) +
+                 stringer("Left", (5, 0, -45)) + stringer("Right", (5, 0, 45)) +
+                 stringer("Tilted", (3, 0, 90), (7, 0.5, 90)))
+    doors = (door("D1", "F0", "F1", "Side", "Top") + door("OverTheTop", "F1", "F0", "Right", "Left") +
+             door("Rising", "F0", "F1", "Tilted", "Top") + door("Astray", "F0", "F1", "Side", "Nowhere") +
+             door("Flat", "F1", "F1", "Side", "Top"))
     frames = (frame("F1", (7, 0)) + frame("Path", (4, -0.5), (4, 0), (4, 0.5)) +
-              frame("Riffled", (4, 0), (5, 0), (6, 0)))
+              frame("Riffled", (4, 0), (5, 0), (6, 0)) + frame("F0", (3, 0)))
     bulkheads = ('<pressureBulkheads><pressureBulkhead uID="B1"><frameUID>F1</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
                  '<pressureBulkhead uID="OnPath"><frameUID>Path</frameUID>'
@@ -59,8 +79,8 @@ def structure():
                      f"<crossBeamUID>Beam</crossBeamUID><positionYAtCrossBeam>{y}</positionYAtCrossBeam>"
                      f"<angleX>{angle}</angleX></cargoCrossBeamStrut>" for uid, y, angle in
                      (("Down", -0.3, 90), ("Leaning", -0.3, 60), ("Beyond", -0.95, 90)))
-    return (f"<frames>{frames}</frames>{bulkheads}{beams}<cargoCrossBeamStruts>{struts}</cargoCrossBeamStruts><walls><wallPositions>{positions}</wallPositions>"
-            f"<wallSegments>{walls}</wallSegments></walls>")
+    return (f"<stringers>{stringers}</stringers><frames>{frames}</frames>{bulkheads}{beams}<cargoCrossBeamStruts>{struts}</cargoCrossBeamStruts><walls><wallPositions>{positions}</wallPositions>"
+            f"<wallSegments>{walls}</wallSegments></walls><cargoDoors>{doors}</cargoDoors>")
 
 
 def test_bulkheads_and_walls_in_closed_form(tmp_path):
@@ -132,3 +152,30 @@ def test_fuselage_structure_errors_name_their_path(tmp_path):
     assert "wallPosition[7]/bulkheadUID" in broken["error"] and "'Nowhere'" in broken["error"]
     # A wall placed on itself is refused, not built forever.
     assert "wallPosition[8]/wallSegmentUID" in loop["error"] and "depends on itself" in loop["error"]
+
+
+def test_doors_are_the_skin_between_their_frames_and_stringers(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    d1, box, kind, volume, over, over_box, rising = ask(
+        path, {"op": "component_surface_area", "uid": "D1"}, {"op": "bounding_box", "uid": "D1"},
+        {"op": "component_type", "uid": "D1"}, {"op": "component_volume", "uid": "D1"},
+        {"op": "component_surface_area", "uid": "OverTheTop"}, {"op": "bounding_box", "uid": "OverTheTop"},
+        {"op": "component_surface_area", "uid": "Rising"})
+    # A quarter of the unit tube's skin from x = 3 to 7: from the side (−y) up to the top.
+    assert math.isclose(d1, 4 * math.pi / 2, rel_tol=REL) and kind == "cargo_door" and volume == 0
+    assert math.isclose(box["min"][0], 3, abs_tol=1e-6) and math.isclose(box["max"][0], 7, abs_tol=1e-6)
+    assert math.isclose(box["min"][1], -1, abs_tol=1e-5) and math.isclose(box["max"][1], 0, abs_tol=1e-5)
+    # From 45° on the +y side over the top to 45° on the −y side, the frames given back to front.
+    assert math.isclose(over, 4 * math.pi / 2, rel_tol=REL)
+    assert math.isclose(over_box["max"][1], math.sqrt(0.5), abs_tol=1e-5)
+    assert math.isclose(over_box["min"][1], -math.sqrt(0.5), abs_tol=1e-5)
+    # The tilted stringer's reference rises from z = 0 to 0.5 between the frames: the skin above
+    # z(x) up to the top, ∫ acos z dx = 8 [z acos z − √(1 − z²)] from 0 to 0.5.
+    expected = 8 * (0.5 * math.acos(0.5) - math.sqrt(0.75) + 1)
+    assert math.isclose(rising, expected, rel_tol=REL)
+    queries = [{"op": "component_surface_area", "uid": u} for u in ("Astray", "Flat")]
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    lost, flat = (json.loads(line)["error"] for line in result.stdout.splitlines())
+    assert "cargoDoor[4]/endStringerUID" in lost and "'Nowhere'" in lost
+    assert "cargoDoor[5]/endFrameUID" in flat and "one station" in flat

@@ -1,5 +1,7 @@
 #include "fuselage_frame.h"
 
+#include <Eigen/SVD>
+
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Bnd_Box.hxx>
@@ -24,12 +26,22 @@ FuselageFrame::FuselageFrame(const Configuration& configuration, const std::stri
       body_(body),
       toGlobal_(toGlobal),
       solid_(configuration.shapes().namedShapeOf(configuration, hostUid).shape) {
+  const std::string skin = "/skin";
+  for (const auto& [name, face] : configuration.shapes().namedShapeOf(configuration, hostUid).faces)
+    if (name.size() >= skin.size() && name.compare(name.size() - skin.size(), skin.size(), skin) == 0)
+      skin_.push_back(face);
   Bnd_Box box;
   BRepBndLib::Add(solid_, box);
   reach_ = std::sqrt(box.SquareExtent());
 }
 
 gp_Pnt FuselageFrame::toGlobal(const gp_Pnt& point) const { return model::apply(toGlobal_, point); }
+
+gp_Pnt FuselageFrame::toLocal(const gp_Pnt& point) const { return model::apply(toGlobal_.inverse(), point); }
+
+double FuselageFrame::localReach() const { return reach_ / toGlobal_.linear().jacobiSvd().singularValues().minCoeff(); }
+
+std::vector<TopoDS_Face> FuselageFrame::skinFaces() const { return skin_; }
 
 gp_Dir FuselageFrame::toGlobal(const gp_Dir& direction) const {
   const Eigen::Vector3d d = toGlobal_.linear() * Eigen::Vector3d(direction.X(), direction.Y(), direction.Z());

@@ -31,11 +31,17 @@ class FuselageFrame {
                 const model::Transform& toGlobal);
 
   gp_Pnt toGlobal(const gp_Pnt& point) const;
+  /// A global point in fuselage coordinates.
+  gp_Pnt toLocal(const gp_Pnt& point) const;
   /// A direction in fuselage coordinates as a global direction.
   gp_Dir toGlobal(const gp_Dir& direction) const;
   const TopoDS_Shape& solid() const { return solid_; }
   /// The diagonal of the solid's bounding box: longer than any line across the fuselage.
   double reach() const { return reach_; }
+  /// The same length measured in fuselage coordinates (however the fuselage is scaled).
+  double localReach() const;
+  /// The faces of the fuselage's skin (its shape's faces named `.../skin`; no end caps).
+  std::vector<TopoDS_Face> skinFaces() const;
 
   /// The station of a frame of one frame position: the plane x = positionX of the fuselage's
   /// coordinates (global). Throws Error naming the frame for frames of several positions (a
@@ -61,6 +67,7 @@ class FuselageFrame {
   const schema::FuselageType* body_;
   model::Transform toGlobal_;
   TopoDS_Shape solid_;
+  std::vector<TopoDS_Face> skin_;
   double reach_ = 0.0;
 };
 

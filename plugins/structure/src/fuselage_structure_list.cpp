@@ -110,6 +110,29 @@ FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(
   return found;
 }
 
+FuselageElement<schema::DoorAssemblyPositionType> doorNamed(const Configuration& configuration,
+                                                            const std::string& uid) {
+  const auto found = findInFuselages<schema::DoorAssemblyPositionType>(
+      configuration, uid, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::DoorAssemblyPositionType*> nodes;
+        if (structure.cargoDoors)
+          for (const auto& door : structure.cargoDoors->cargoDoor) nodes.push_back(&door);
+        if (structure.paxDoors)
+          for (const auto& door : structure.paxDoors->paxDoor) nodes.push_back(&door);
+        return nodes;
+      });
+  if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no fuselage door with uID '" + uid + "'");
+  return found;
+}
+
+const schema::StringerType& stringerNamed(const schema::FuselageStructureType& structure, const std::string& uid,
+                                          const std::string& where) {
+  if (structure.stringers)
+    for (const auto& stringer : structure.stringers->stringer)
+      if (stringer.uID == uid) return stringer;
+  throw Error(ErrorCode::InvalidModel, "stringerUID '" + uid + "' names no stringer of this fuselage", {}, where);
+}
+
 const schema::FrameType& frameNamed(const schema::FuselageStructureType& structure, const std::string& uid,
                                     const std::string& where) {
   if (structure.frames)

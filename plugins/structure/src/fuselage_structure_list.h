@@ -48,6 +48,14 @@ FuselageElement<schema::CrossBeamAssemblyPositionType> crossBeamNamed(const Conf
 FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(const Configuration& configuration,
                                                                                 const std::string& uid);
 
+/// The cargo or passenger door with this uID in any model. Throws Error when none has it.
+FuselageElement<schema::DoorAssemblyPositionType> doorNamed(const Configuration& configuration, const std::string& uid);
+
+/// The stringer of a fuselage structure with this uID; throws Error naming `where` when none has
+/// it.
+const schema::StringerType& stringerNamed(const schema::FuselageStructureType& structure, const std::string& uid,
+                                          const std::string& where);
+
 /// The frame of a fuselage structure with this uID; throws Error naming `where` when none has it.
 const schema::FrameType& frameNamed(const schema::FuselageStructureType& structure, const std::string& uid,
                                     const std::string& where);

@@ -2,7 +2,7 @@
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
 // (airshape/wing/wing_services.h), on the fuselages' component shapes and, for walls in tank
 // vessels, on the tank plugin's public interface (airshape/tank/tank_services.h). Spar webs, ribs,
-// cells, wing fuel tanks, pressure bulkheads, walls and cross beams are built; the other node types are claimed
+// cells, wing fuel tanks, pressure bulkheads, doors, walls and cross beams are built; the other node types are claimed
 // (graph/component_graph.h) and wait for their builders.
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -11,6 +11,7 @@
 #include "cell_list.h"
 #include "cell_skin.h"
 #include "cross_beam.h"
+#include "fuselage_door.h"
 #include "fuselage_wall.h"
 #include "pressure_bulkhead.h"
 #include "rib_faces.h"
@@ -36,9 +37,8 @@ class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
       : BasicPlugin("structure", "0.5.0",
-                    "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, pressure bulkheads, walls, "
-                    "cross beams and "
-                    "struts (frames, stringers, doors, floor beams: no builder yet)",
+                    "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, pressure bulkheads, doors, "
+                    "walls, cross beams and struts (frames, stringers, floor beams: no builder yet)",
                     {{"sparSegment", ""},
                      {"ribsDefinition", ""},
                      {"wingCell", ""},
@@ -81,6 +81,7 @@ class StructurePlugin final : public plugin::BasicPlugin {
     });
     shapes.add("pressureBulkhead",
                [](const Configuration& c, const std::string& uid) { return pressureBulkhead(c, uid); });
+    shapes.add("door", [](const Configuration& c, const std::string& uid) { return fuselageDoor(c, uid); });
     shapes.add("crossBeam", [](const Configuration& c, const std::string& uid) { return crossBeam(c, uid); });
     shapes.add("crossBeamStrut", [](const Configuration& c, const std::string& uid) { return crossBeamStrut(c, uid); });
     const std::shared_ptr<const tank::TankServices> tanks = tanks_;

@@ -1,0 +1,114 @@
+#include "fuselage_door.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Pln.hxx>
+
+#include "airshape/configuration.h"
+#include "airshape/error.h"
+#include "fuselage_frame.h"
+#include "fuselage_structure_list.h"
+#include "named_faces.h"
+#include "stringer_path.h"
+
+namespace airshape::structure {
+
+namespace {
+
+/// The angle of a direction about the fuselage's x axis in the stringers' convention (0 up,
+/// a quarter turn towards −y).
+double angleAboutX(const gp_Vec& direction) { return std::atan2(-direction.Y(), direction.Z()); }
+
+/// An angle brought into (−π, π].
+double wrapped(double angle) {
+  while (angle > M_PI) angle -= 2.0 * M_PI;
+  while (angle <= -M_PI) angle += 2.0 * M_PI;
+  return angle;
+}
+
+/// Whether a point (fuselage coordinates) lies between the two stringers the shorter way round,
+/// seen from the midpoint of their reference points at its station.
+bool betweenStringers(const FuselageFrame& fuselage, const StringerPath& first, const StringerPath& last,
+                      const gp_Pnt& point, const std::string& where) {
+  const StringerPath::Ray a = first.rayAt(point.X());
+  const StringerPath::Ray b = last.rayAt(point.X());
+  const gp_Pnt centre(0.5 * (a.origin.XYZ() + b.origin.XYZ()));
+  auto angleOnSkin = [&](const StringerPath::Ray& ray) {
+    const gp_Pnt hit =
+        fuselage.skinAhead(fuselage.toGlobal(ray.origin), fuselage.toGlobal(gp_Dir(ray.direction)), where);
+    return angleAboutX(gp_Vec(centre, fuselage.toLocal(hit)));
+  };
+  const double start = angleOnSkin(a);
+  const double width = wrapped(angleOnSkin(b) - start);
+  const double turn = wrapped(angleAboutX(gp_Vec(centre, point)) - start);
+  return width >= 0.0 ? turn > 0.0 && turn < width : turn < 0.0 && turn > width;
+}
+
+/// The frame's station (fuselage x); `field` names the reference in the door.
+double frameStation(const FuselageFrame& fuselage, const FuselageElement<schema::DoorAssemblyPositionType>& door,
+                    const std::string& frameUid, const std::string& field) {
+  return fuselage.stationX(frameNamed(*door.structure, frameUid, door.node->xpath + "/" + field));
+}
+
+}  // namespace
+
+NamedShape fuselageDoor(const Configuration& configuration, const std::string& uid) {
+  const auto door = doorNamed(configuration, uid);
+  const schema::DoorAssemblyPositionType& node = *door.node;
+  const FuselageFrame fuselage(configuration, *door.fuselage);
+  const double startX = frameStation(fuselage, door, node.startFrameUID, "startFrameUID");
+  const double endX = frameStation(fuselage, door, node.endFrameUID, "endFrameUID");
+  const double fromX = std::min(startX, endX), toX = std::max(startX, endX);
+  if (toX - fromX <= 1e-9 * std::max(1.0, std::abs(toX)))
+    throw Error(ErrorCode::InvalidModel, "the door's start and end frames lie at one station", {},
+                node.xpath + "/endFrameUID");
+  const StringerPath first(stringerNamed(*door.structure, node.startStringerUID, node.xpath + "/startStringerUID"));
+  const StringerPath last(stringerNamed(*door.structure, node.endStringerUID, node.xpath + "/endStringerUID"));
+
+  // The skin split by the two frame planes and the two stringers' swept surfaces, which run a
+  // little beyond the frames so that the cuts meet.
+  TopTools_ListOfShape arguments, tools;
+  for (const TopoDS_Face& face : fuselage.skinFaces()) arguments.Append(face);
+  const double reach = fuselage.reach();
+  for (const double x : {fromX, toX})
+    tools.Append(BRepBuilderAPI_MakeFace(gp_Pln(fuselage.toGlobal(gp_Pnt(x, 0, 0)), fuselage.toGlobal(gp_Dir(1, 0, 0))),
+                                         -reach, reach, -reach, reach)
+                     .Face());
+  const double margin = 0.05 * (toX - fromX);
+  for (const StringerPath* stringer : {&first, &last})
+    for (const TopoDS_Face& face : stringer->surface(fuselage, fromX - margin, toX + margin, fuselage.localReach()))
+      tools.Append(face);
+  BRepAlgoAPI_Splitter splitter;
+  splitter.SetArguments(arguments);
+  splitter.SetTools(tools);
+  splitter.SetRunParallel(true);
+  splitter.SetNonDestructive(true);  // the fuselage's skin is shared, cached geometry
+  splitter.Build();
+  if (!splitter.IsDone() || splitter.HasErrors())
+    throw Error(ErrorCode::InvalidModel, "the fuselage's skin cannot be cut at the door's frames and stringers", {},
+                node.xpath);
+
+  std::vector<TopoDS_Face> pieces;
+  for (TopExp_Explorer face(splitter.Shape(), TopAbs_FACE); face.More(); face.Next()) {
+    GProp_GProps area;
+    BRepGProp::SurfaceProperties(face.Current(), area);
+    const gp_Pnt centre = fuselage.toLocal(area.CentreOfMass());
+    if (centre.X() > fromX && centre.X() < toX && betweenStringers(fuselage, first, last, centre, node.xpath))
+      pieces.push_back(TopoDS::Face(face.Current()));
+  }
+  NamedFaces shape;
+  shape.add(uid + "/door", pieces);
+  if (shape.empty())
+    throw Error(ErrorCode::InvalidModel, "the door's frames and stringers enclose no part of the skin", {}, node.xpath);
+  return shape.shape();
+}
+
+}  // namespace airshape::structure
