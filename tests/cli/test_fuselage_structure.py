@@ -37,9 +37,12 @@ def write(path, structure):
 
 
 def stringer(uid, *positions):
-    """A stringer through (x, referenceZ, referenceAngle) positions, referenceY 0."""
+    """A stringer through (x, referenceZ, referenceAngle) positions, referenceY 0; an x that is
+    a string is a section element's uID."""
+    def station(x):
+        return f"<sectionElementUID>{x}</sectionElementUID>" if isinstance(x, str) else f"<positionX>{x}</positionX>"
     return f'<stringer uID="{uid}">' + "".join(
-        f'<stringerPosition uID="{uid}P{i}"><structuralElementUID>E</structuralElementUID><positionX>{x}</positionX>'
+        f'<stringerPosition uID="{uid}P{i}"><structuralElementUID>E</structuralElementUID>{station(x)}'
         f"<referenceY>0</referenceY><referenceZ>{z}</referenceZ><referenceAngle>{angle}</referenceAngle>"
         "</stringerPosition>" for i, (x, z, angle) in enumerate(positions)) + "</stringer>"
 
@@ -53,7 +56,7 @@ def door(uid, start_frame, end_frame, start_stringer, end_stringer):
 def structure():
     stringers = (stringer("Side", (0, 0, 90), (10, 0, 90)) + stringer("Top", (0, 0, 0), (10, 0, 0)) +
                  stringer("Left", (5, 0, -45)) + stringer("Right", (5, 0, 45)) +
-                 stringer("Tilted", (3, 0, 90), (7, 0.5, 90)))
+                 stringer("Tilted", (3, 0, 90), (7, 0.5, 90)) + stringer("AtSections", ("TubeE1", 0, 90), ("TubeE2", 0, 90)))
     doors = (door("D1", "F0", "F1", "Side", "Top") + door("OverTheTop", "F1", "F0", "Right", "Left") +
              door("Rising", "F0", "F1", "Tilted", "Top") + door("Astray", "F0", "F1", "Side", "Nowhere") +
              door("Flat", "F1", "F1", "Side", "Top"))
@@ -144,11 +147,10 @@ def test_cross_beams_and_struts_are_their_axes(tmp_path):
 def test_fuselage_structure_errors_name_their_path(tmp_path):
     path = tmp_path / "tube.xml"
     write(path, structure())
-    queries = [{"op": "component_surface_area", "uid": u} for u in ("OnRiffles", "Broken", "Loop", "Beyond")]
+    queries = [{"op": "component_surface_area", "uid": u} for u in ("Broken", "Loop", "Beyond")]
     result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
-    riffled, broken, loop, beyond = (json.loads(line) for line in result.stdout.splitlines())
+    broken, loop, beyond = (json.loads(line) for line in result.stdout.splitlines())
     assert "cargoCrossBeamStrut[3]/positionYAtCrossBeam" in beyond["error"]
-    assert "frames/frame[3]/framePosition[2]" in riffled["error"] and "different stations" in riffled["error"]
     assert "wallPosition[7]/bulkheadUID" in broken["error"] and "'Nowhere'" in broken["error"]
     # A wall placed on itself is refused, not built forever.
     assert "wallPosition[8]/wallSegmentUID" in loop["error"] and "depends on itself" in loop["error"]
@@ -179,3 +181,29 @@ def test_doors_are_the_skin_between_their_frames_and_stringers(tmp_path):
     lost, flat = (json.loads(line)["error"] for line in result.stdout.splitlines())
     assert "cargoDoor[4]/endStringerUID" in lost and "'Nowhere'" in lost
     assert "cargoDoor[5]/endFrameUID" in flat and "one station" in flat
+
+
+def test_frames_and_stringers_are_lines_on_the_skin(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    ring, ring_area, tilted, riffled, riffled_box, at_sections = ask(
+        path, {"op": "bounding_box", "uid": "F1"}, {"op": "component_surface_area", "uid": "F1"},
+        {"op": "bounding_box", "uid": "Tilted"}, {"op": "component_surface_area", "uid": "OnRiffles"},
+        {"op": "bounding_box", "uid": "OnRiffles"}, {"op": "bounding_box", "uid": "AtSections"})
+    # A frame of one position: the unit circle at x = 7.
+    assert ring_area == 0 and math.isclose(ring["min"][0], 7, abs_tol=1e-6) and math.isclose(ring["max"][0], 7, abs_tol=1e-6)
+    assert all(math.isclose(ring["max"][k], 1, abs_tol=1e-5) and math.isclose(ring["min"][k], -1, abs_tol=1e-5)
+               for k in (1, 2))
+    # The tilted stringer: on the −y side from z = 0 at x = 3 up to z = 0.5 at x = 7.
+    assert math.isclose(tilted["min"][0], 3, abs_tol=1e-6) and math.isclose(tilted["max"][0], 7, abs_tol=1e-6)
+    assert math.isclose(tilted["min"][2], 0, abs_tol=1e-6) and math.isclose(tilted["max"][2], 0.5, abs_tol=1e-6)
+    assert math.isclose(tilted["min"][1], -1, abs_tol=1e-5)
+    assert math.isclose(tilted["max"][1], -math.sqrt(0.75), abs_tol=1e-5)
+    # Positions at the section elements of x = 5 and 10.
+    assert math.isclose(at_sections["min"][0], 5, abs_tol=1e-6) and math.isclose(at_sections["max"][0], 10, abs_tol=1e-6)
+    assert math.isclose(at_sections["min"][1], -1, abs_tol=1e-5) and math.isclose(at_sections["max"][2], 0, abs_tol=1e-6)
+    # A riffled frame (positions at x = 4, 5, 6, all straight up from the axis): its bulkhead is
+    # the surface the rays sweep inside the skin, here the strip y = 0, 4 <= x <= 6, 0 <= z <= 1.
+    assert math.isclose(riffled, 2, rel_tol=REL)
+    assert math.isclose(riffled_box["min"][0], 4, abs_tol=1e-6) and math.isclose(riffled_box["max"][0], 6, abs_tol=1e-6)
+    assert math.isclose(riffled_box["max"][2], 1, abs_tol=1e-5) and math.isclose(riffled_box["min"][2], 0, abs_tol=1e-6)

@@ -244,6 +244,19 @@ def test_structure_of_a_component_segment(tmp_path):
     assert model.stat().st_size > web.stat().st_size
 
 
+def test_structure_of_a_fuselage():
+    config = airshape.Configuration.open(AIRLINER)
+    kinds = {element.uid: element.type for element in config.fuselages[0].structure}
+    assert kinds["Cargo_Door"] == "cargo_door" and kinds["Rear_Bulkhead"] == "pressure_bulkhead"
+    assert kinds["Stringer_Side"] == "stringer" and kinds["Frame_Door_Front"] == "frame"
+    door = config.component("Cargo_Door")
+    # The skin between the frames at x = 7 and 9, on the −y side below the stringer at 90°.
+    assert door.volume == 0 and door.surface_area > 0
+    assert door.bounding_box["min"][0] == pytest.approx(7, abs=1e-6)
+    assert door.bounding_box["max"][0] == pytest.approx(9, abs=1e-6) and door.bounding_box["max"][1] < 0
+    assert config.component("Stringer_Side").surface_area == 0
+
+
 def test_rotors_of_a_rotorcraft():
     # Rectangular blades, chord 0.3, from 0.5 m to 4.5 m off the hub (tests/cli/test_rotor.py).
     config = airshape.Configuration.open(os.path.join(SOURCE, "tests", "data", "rotorcraft-two-blades.xml"))

@@ -458,6 +458,14 @@ class Fuselage(_Component):
     def circumference(self, segment: Union[int, str], eta: float) -> float:
         return self._op("circumference", segment=segment, eta=eta)
 
+    @property
+    def structure(self) -> List["Component"]:
+        """Its structure elements (frames, stringers, pressure bulkheads, doors, walls, cross
+        beams, ...) as components, in document order (docs/structure.md)."""
+        return [_component(self._config, child["uid"], child["type"])
+                for child in self._config.query("component_children", uid=self.uid)
+                if child["type"] != "fuselage_segment"]
+
 
 class _Components(Sequence):
     """Wings, fuselages or rotors, by 0-based index or by uID."""

@@ -17,7 +17,7 @@
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
-#include "stringer_path.h"
+#include "position_rays.h"
 
 namespace airshape::structure {
 
@@ -38,10 +38,10 @@ double wrapped(double angle) {
 /// seen from the midpoint of their reference points at its station.
 bool betweenStringers(const FuselageFrame& fuselage, const StringerPath& first, const StringerPath& last,
                       const gp_Pnt& point, const std::string& where) {
-  const StringerPath::Ray a = first.rayAt(point.X());
-  const StringerPath::Ray b = last.rayAt(point.X());
+  const PositionRay a = first.rayAt(point.X());
+  const PositionRay b = last.rayAt(point.X());
   const gp_Pnt centre(0.5 * (a.origin.XYZ() + b.origin.XYZ()));
-  auto angleOnSkin = [&](const StringerPath::Ray& ray) {
+  auto angleOnSkin = [&](const PositionRay& ray) {
     const gp_Pnt hit =
         fuselage.skinAhead(fuselage.toGlobal(ray.origin), fuselage.toGlobal(gp_Dir(ray.direction)), where);
     return angleAboutX(gp_Vec(centre, fuselage.toLocal(hit)));
@@ -70,8 +70,10 @@ NamedShape fuselageDoor(const Configuration& configuration, const std::string& u
   if (toX - fromX <= 1e-9 * std::max(1.0, std::abs(toX)))
     throw Error(ErrorCode::InvalidModel, "the door's start and end frames lie at one station", {},
                 node.xpath + "/endFrameUID");
-  const StringerPath first(stringerNamed(*door.structure, node.startStringerUID, node.xpath + "/startStringerUID"));
-  const StringerPath last(stringerNamed(*door.structure, node.endStringerUID, node.xpath + "/endStringerUID"));
+  const StringerPath first(fuselage,
+                           stringerNamed(*door.structure, node.startStringerUID, node.xpath + "/startStringerUID"));
+  const StringerPath last(fuselage,
+                          stringerNamed(*door.structure, node.endStringerUID, node.xpath + "/endStringerUID"));
 
   // The skin split by the two frame planes and the two stringers' swept surfaces, which run a
   // little beyond the frames so that the cuts meet.

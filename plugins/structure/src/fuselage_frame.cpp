@@ -4,7 +4,9 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -27,12 +29,23 @@ FuselageFrame::FuselageFrame(const Configuration& configuration, const std::stri
       toGlobal_(toGlobal),
       solid_(configuration.shapes().namedShapeOf(configuration, hostUid).shape) {
   const std::string skin = "/skin";
-  for (const auto& [name, face] : configuration.shapes().namedShapeOf(configuration, hostUid).faces)
+  const NamedShape& host = configuration.shapes().namedShapeOf(configuration, hostUid);
+  for (const auto& [name, face] : host.faces)
     if (name.size() >= skin.size() && name.compare(name.size() - skin.size(), skin.size(), skin) == 0)
       skin_.push_back(face);
+  if (skin_.empty())
+    for (TopExp_Explorer face(solid_, TopAbs_FACE); face.More(); face.Next())
+      skin_.push_back(TopoDS::Face(face.Current()));
   Bnd_Box box;
   BRepBndLib::Add(solid_, box);
   reach_ = std::sqrt(box.SquareExtent());
+}
+
+FuselageFrame FuselageFrame::ofHost(const Configuration& configuration, const std::string& hostUid,
+                                    const schema::FuselageType* body,
+                                    const std::optional<model::Transform>& vesselPlacement) {
+  if (vesselPlacement) return FuselageFrame(configuration, hostUid, body, *vesselPlacement);
+  return FuselageFrame(configuration, *body);
 }
 
 gp_Pnt FuselageFrame::toGlobal(const gp_Pnt& point) const { return model::apply(toGlobal_, point); }
@@ -78,17 +91,40 @@ TopoDS_Face FuselageFrame::sectionFace(const std::string& sectionUid, const std:
               where);
 }
 
+double FuselageFrame::positionX(const schema::StringerFramePositionType& position) const {
+  if (position.positionX) return *position.positionX;
+  const std::string where = position.xpath + "/sectionElementUID";
+  const std::string& uid = position.sectionElementUID.value_or("");
+  auto centreX = [&](const std::string& sectionUid) {
+    GProp_GProps area;
+    BRepGProp::SurfaceProperties(sectionFace(sectionUid, where), area);
+    return toLocal(area.CentreOfMass()).X();
+  };
+  if (body_ != nullptr && body_->sections)
+    for (const auto& section : body_->sections->section) {
+      if (section.elements)
+        for (const auto& element : section.elements->element)
+          if (element.uID == uid) return centreX(section.uID);
+      if (section.uID == uid) {
+        configuration_.warnAboutGeometry(
+            {Problem::Severity::Warning, where, "names a section, not a section element: read as its section's"});
+        return centreX(section.uID);
+      }
+    }
+  throw Error(ErrorCode::InvalidModel, "sectionElementUID '" + uid + "' names no section element of the body", {},
+              where);
+}
+
 double FuselageFrame::stationX(const schema::FrameType& frame) const {
-  if (frame.framePosition.size() != 1)
-    throw Error(ErrorCode::NotImplemented,
-                "frames of " + std::to_string(frame.framePosition.size()) +
-                    " frame positions are not built yet (one position: a plane station)",
-                {}, frame.xpath);
-  const schema::StringerFramePositionType& position = frame.framePosition[0];
-  if (!position.positionX)
-    throw Error(ErrorCode::NotImplemented, "frame positions placed by a section element are not built yet", {},
-                position.xpath);
-  return *position.positionX;
+  if (frame.framePosition.size() == 0)
+    throw Error(ErrorCode::InvalidModel, "the frame has no frame position", {}, frame.xpath);
+  const double x = positionX(frame.framePosition[0]);
+  for (const schema::StringerFramePositionType& position : frame.framePosition)
+    if (std::abs(positionX(position) - x) > 1e-9 * std::max(1.0, std::abs(x)))
+      throw Error(ErrorCode::NotImplemented,
+                  "the frame's positions lie at different stations (a riffled frame): it has no plane station", {},
+                  position.xpath);
+  return x;
 }
 
 gp_Pln FuselageFrame::station(const schema::FrameType& frame) const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,11 @@ class FuselageFrame {
   FuselageFrame(const Configuration& configuration, const std::string& hostUid, const schema::FuselageType* body,
                 const model::Transform& toGlobal);
 
+  /// The body a structure element is positioned in: its fuselage, or (with a placement) a
+  /// tank's vessel.
+  static FuselageFrame ofHost(const Configuration& configuration, const std::string& hostUid,
+                              const schema::FuselageType* body, const std::optional<model::Transform>& vesselPlacement);
+
   gp_Pnt toGlobal(const gp_Pnt& point) const;
   /// A global point in fuselage coordinates.
   gp_Pnt toLocal(const gp_Pnt& point) const;
@@ -40,15 +46,19 @@ class FuselageFrame {
   double reach() const { return reach_; }
   /// The same length measured in fuselage coordinates (however the fuselage is scaled).
   double localReach() const;
-  /// The faces of the fuselage's skin (its shape's faces named `.../skin`; no end caps).
+  /// The faces of the fuselage's skin (its shape's faces named `.../skin`, no end caps; all the
+  /// faces of a body that names none so, as a tank's vessel).
   std::vector<TopoDS_Face> skinFaces() const;
 
-  /// The station of a frame of one frame position: the plane x = positionX of the fuselage's
-  /// coordinates (global). Throws Error naming the frame for frames of several positions (a
-  /// frame path across the fuselage) or positions placed by a section element: not built yet.
-  gp_Pln station(const schema::FrameType& frame) const;
-  /// The frame's positionX (fuselage coordinates), under the same conditions.
+  /// A stringer or frame position's station: its positionX, or the x (fuselage coordinates) of
+  /// the centre of the section its section element belongs to. Throws Error naming the position
+  /// for an element the body does not have.
+  double positionX(const schema::StringerFramePositionType& position) const;
+  /// The station of a frame whose positions all lie at one x (fuselage coordinates); throws Error
+  /// naming the frame for a frame without positions and the position for a riffled frame.
   double stationX(const schema::FrameType& frame) const;
+  /// The plane x = stationX(frame) (global), through the first position's reference point.
+  gp_Pln station(const schema::FrameType& frame) const;
   /// Where the ray from `from` along `direction` (global) first meets the fuselage's skin;
   /// throws Error naming `where` when it meets none.
   gp_Pnt skinAhead(const gp_Pnt& from, const gp_Dir& direction, const std::string& where) const;

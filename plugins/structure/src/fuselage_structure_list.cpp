@@ -47,19 +47,21 @@ std::vector<const schema::WallSegmentType*> wallSegmentsOf(const schema::Fuselag
   return nodes;
 }
 
-/// The wall of this uID in the vessel that holds it (the component it lies in), if any.
-FuselageElement<schema::WallSegmentType> wallInVessel(const Configuration& configuration, const std::string& uid,
-                                                      const tank::TankServices& tanks) {
+/// The element of this uID (`listOf` picks the candidates from a structure) in the vessel that
+/// holds it (the component it lies in), if any.
+template <class Node, class ListOf>
+FuselageElement<Node> inVessel(const Configuration& configuration, const std::string& uid,
+                               const tank::TankServices& tanks, ListOf listOf) {
   const long index = configuration.components().find(uid);
   if (index < 0) return {};
   const std::string& vessel = configuration.components().components()[static_cast<std::size_t>(index)].parentUid;
   if (vessel.empty() || configuration.components().named(vessel).nodeType != "tankHull") return {};
   const auto structure = tanks.vesselStructure(configuration, vessel);
   if (!structure) return {};
-  for (const schema::WallSegmentType* wall : wallSegmentsOf(*structure))
-    if (wall->uID == uid) {
+  for (const Node* node : listOf(*structure))
+    if (node->uID == uid) {
       const auto body = tanks.vesselBody(configuration, vessel);
-      return {wall,
+      return {node,
               body.get(),
               structure.get(),
               vessel,
@@ -69,12 +71,20 @@ FuselageElement<schema::WallSegmentType> wallInVessel(const Configuration& confi
   return {};
 }
 
+/// The element of this uID in any fuselage, or else in a tank's vessel (when `tanks` is given).
+template <class Node, class ListOf>
+FuselageElement<Node> inFuselagesOrVessels(const Configuration& configuration, const std::string& uid,
+                                           const tank::TankServices* tanks, ListOf listOf) {
+  auto found = findInFuselages<Node>(configuration, uid, listOf);
+  if (found.node == nullptr && tanks != nullptr) found = inVessel<Node>(configuration, uid, *tanks, listOf);
+  return found;
+}
+
 }  // namespace
 
 FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid,
                                                           const tank::TankServices* tanks) {
-  auto found = findInFuselages<schema::WallSegmentType>(configuration, uid, wallSegmentsOf);
-  if (found.node == nullptr && tanks != nullptr) found = wallInVessel(configuration, uid, *tanks);
+  const auto found = inFuselagesOrVessels<schema::WallSegmentType>(configuration, uid, tanks, wallSegmentsOf);
   if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no wall segment with uID '" + uid + "'");
   return found;
 }
@@ -122,6 +132,33 @@ FuselageElement<schema::DoorAssemblyPositionType> doorNamed(const Configuration&
         return nodes;
       });
   if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no fuselage door with uID '" + uid + "'");
+  return found;
+}
+
+FuselageElement<schema::FrameType> frameElementNamed(const Configuration& configuration, const std::string& uid,
+                                                     const tank::TankServices* tanks) {
+  const auto found = inFuselagesOrVessels<schema::FrameType>(configuration, uid, tanks,
+                                                             [](const schema::FuselageStructureType& structure) {
+                                                               std::vector<const schema::FrameType*> nodes;
+                                                               if (structure.frames)
+                                                                 for (const auto& frame : structure.frames->frame)
+                                                                   nodes.push_back(&frame);
+                                                               return nodes;
+                                                             });
+  if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no fuselage frame with uID '" + uid + "'");
+  return found;
+}
+
+FuselageElement<schema::StringerType> stringerElementNamed(const Configuration& configuration, const std::string& uid,
+                                                           const tank::TankServices* tanks) {
+  const auto found = inFuselagesOrVessels<schema::StringerType>(
+      configuration, uid, tanks, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::StringerType*> nodes;
+        if (structure.stringers)
+          for (const auto& stringer : structure.stringers->stringer) nodes.push_back(&stringer);
+        return nodes;
+      });
+  if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no fuselage stringer with uID '" + uid + "'");
   return found;
 }
 

@@ -32,8 +32,6 @@ struct FuselageElement {
 FuselageElement<schema::PressureBulkheadAssemblyPositionType> pressureBulkheadNamed(const Configuration& configuration,
                                                                                     const std::string& uid);
 
-/// The wall segment (fuselage/structure/walls) with this uID in any model. Throws Error when
-/// none has it.
 /// The wall segment with this uID in any fuselage, or in a tank's vessel (found through the
 /// tank plugin's services, when given). Throws Error when none has it.
 FuselageElement<schema::WallSegmentType> wallSegmentNamed(const Configuration& configuration, const std::string& uid,
@@ -50,6 +48,16 @@ FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(
 
 /// The cargo or passenger door with this uID in any model. Throws Error when none has it.
 FuselageElement<schema::DoorAssemblyPositionType> doorNamed(const Configuration& configuration, const std::string& uid);
+
+/// The frame with this uID in any fuselage, or in a tank's vessel (found through the tank
+/// plugin's services, when given). Throws Error when none has it.
+FuselageElement<schema::FrameType> frameElementNamed(const Configuration& configuration, const std::string& uid,
+                                                     const tank::TankServices* tanks);
+
+/// The stringer with this uID in any fuselage or tank vessel, as frameElementNamed. Throws Error
+/// when none has it.
+FuselageElement<schema::StringerType> stringerElementNamed(const Configuration& configuration, const std::string& uid,
+                                                           const tank::TankServices* tanks);
 
 /// The stringer of a fuselage structure with this uID; throws Error naming `where` when none has
 /// it.

@@ -51,12 +51,6 @@ class ConstructionGuard {
   std::string uid_;
 };
 
-/// The body a wall is positioned in: its fuselage, or its tank's vessel.
-FuselageFrame frameOf(const Configuration& configuration, const FuselageElement<schema::WallSegmentType>& wall) {
-  if (wall.vesselPlacement) return FuselageFrame(configuration, wall.hostUid, wall.fuselage, *wall.vesselPlacement);
-  return FuselageFrame(configuration, *wall.fuselage);
-}
-
 /// A wall position placed: its base point (global) and the element it lies on, if any.
 struct BasePoint {
   gp_Pnt point;
@@ -148,7 +142,8 @@ struct WallLayout {
 
 WallLayout layoutOf(const Configuration& configuration, const FuselageElement<schema::WallSegmentType>& wall) {
   const schema::WallSegmentType& node = *wall.node;
-  const FuselageFrame fuselage = frameOf(configuration, wall);
+  const FuselageFrame fuselage =
+      FuselageFrame::ofHost(configuration, wall.hostUid, wall.fuselage, wall.vesselPlacement);
   const std::string positionsPath = node.xpath + "/wallPositionUIDs";
   std::vector<BasePoint> bases;
   if (node.wallPositionUIDs)
@@ -232,7 +227,8 @@ NamedShape fuselageWall(const Configuration& configuration, const tank::TankServ
   const auto wall = wallSegmentNamed(configuration, uid, tanks);
   const ConstructionGuard guard(uid, wall.node->xpath);
   const WallLayout layout = layoutOf(configuration, wall);
-  const FuselageFrame fuselage = frameOf(configuration, wall);
+  const FuselageFrame fuselage =
+      FuselageFrame::ofHost(configuration, wall.hostUid, wall.fuselage, wall.vesselPlacement);
   std::vector<TopoDS_Face> faces;
   try {
     faces = facesInside(compoundOf(layout.strips), fuselage.solid());

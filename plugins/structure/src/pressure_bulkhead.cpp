@@ -14,33 +14,25 @@
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
+#include "position_rays.h"
 
 namespace airshape::structure {
 
 namespace {
 
-constexpr double kDegrees = M_PI / 180.0;
-
-/// A bulkhead on a frame of several positions at one station: each position's ray (from its
-/// reference point at its angle about the x axis, 0° up) meets the skin; the frame runs along the
-/// skin from the first of these points to the last, and the bulkhead is the part of the cross
-/// section that the chord between them cuts off on the side of the points in between.
+/// A bulkhead on a frame of several positions at one station: each position's ray
+/// (position_rays.h) meets the skin; the frame runs along the skin from the first of these points
+/// to the last, and the bulkhead is the part of the cross section that the chord between them
+/// cuts off on the side of the points in between.
 std::vector<TopoDS_Face> sectionPart(const FuselageFrame& fuselage, const schema::FrameType& frame) {
   const auto& positions = frame.framePosition;
   if (positions.size() < 3)
     throw Error(ErrorCode::NotImplemented, "bulkheads on frames of two positions are not built yet", {}, frame.xpath);
-  const double x = positions[0].positionX.value_or(0.0);
   std::vector<gp_Pnt> hits;
   for (const auto& position : positions) {
-    if (!position.positionX || std::abs(*position.positionX - x) > 1e-9 * std::max(1.0, std::abs(x)))
-      throw Error(ErrorCode::NotImplemented,
-                  "bulkheads on frames whose positions lie at different stations (riffled bulkheads) are not built "
-                  "yet",
-                  {}, position.xpath);
-    const double angle = position.referenceAngle * kDegrees;
-    hits.push_back(fuselage.skinAhead(fuselage.toGlobal(gp_Pnt(x, position.referenceY, position.referenceZ)),
-                                      fuselage.toGlobal(gp_Dir(0.0, -std::sin(angle), std::cos(angle))),
-                                      position.xpath));
+    const PositionRay ray = PositionRay::of(fuselage, position);
+    hits.push_back(
+        fuselage.skinAhead(fuselage.toGlobal(ray.origin), fuselage.toGlobal(gp_Dir(ray.direction)), position.xpath));
   }
   const gp_Dir normal = fuselage.toGlobal(gp_Dir(1, 0, 0));
   const gp_Vec chord(hits.front(), hits.back());
@@ -65,7 +57,13 @@ NamedShape pressureBulkhead(const Configuration& configuration, const std::strin
   const FuselageFrame fuselage(configuration, *bulkhead.fuselage);
   std::vector<TopoDS_Face> faces;
   try {
-    if (frame.framePosition.size() > 1) {
+    if (isRiffled(fuselage, frame)) {
+      BRep_Builder builder;
+      TopoDS_Compound sweep;
+      builder.MakeCompound(sweep);
+      for (const TopoDS_Face& face : frameSweep(fuselage, frame, fuselage.localReach())) builder.Add(sweep, face);
+      faces = facesInside(sweep, fuselage.solid());
+    } else if (frame.framePosition.size() > 1) {
       faces = sectionPart(fuselage, frame);
     } else {
       const gp_Pln station = fuselage.station(frame);

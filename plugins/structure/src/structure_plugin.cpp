@@ -2,8 +2,8 @@
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
 // (airshape/wing/wing_services.h), on the fuselages' component shapes and, for walls in tank
 // vessels, on the tank plugin's public interface (airshape/tank/tank_services.h). Spar webs, ribs,
-// cells, wing fuel tanks, pressure bulkheads, doors, walls and cross beams are built; the other node types are claimed
-// (graph/component_graph.h) and wait for their builders.
+// cells, wing fuel tanks, frames and stringers (as lines), pressure bulkheads, doors, walls and cross beams are built;
+// the other node types are claimed (graph/component_graph.h) and wait for their builders.
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/plugin/basic_plugin.h"
@@ -16,6 +16,7 @@
 #include "pressure_bulkhead.h"
 #include "rib_faces.h"
 #include "rib_list.h"
+#include "skin_lines.h"
 #include "spar_list.h"
 #include "spar_web.h"
 #include "wing_fuel_tank.h"
@@ -36,26 +37,27 @@ void requireComponentSegmentStructure(const Configuration& configuration, const 
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
-      : BasicPlugin("structure", "0.5.0",
-                    "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, pressure bulkheads, doors, "
-                    "walls, cross beams and struts (frames, stringers, floor beams: no builder yet)",
-                    {{"sparSegment", ""},
-                     {"ribsDefinition", ""},
-                     {"wingCell", ""},
-                     {"wingFuelTank", ""},
-                     {"frame", ""},
-                     {"stringer", ""},
-                     {"pressureBulkhead", ""},
-                     {"door", ""},
-                     {"crossBeam", ""},
-                     {"crossBeamStrut", ""},
-                     {"longFloorBeam", ""},
-                     {"wallSegment", ""},
-                     {"floorPanel", ""},
-                     {"window", ""},
-                     {"intercostal", ""},
-                     {"structuralMember", ""}},
-                    {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}, {"tank", "0.2.0", "1.0.0"}}) {}
+      : BasicPlugin(
+            "structure", "0.5.0",
+            "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, frames and stringers (lines), "
+            "pressure bulkheads, doors, walls, cross beams and struts (floor beams: no builder yet)",
+            {{"sparSegment", ""},
+             {"ribsDefinition", ""},
+             {"wingCell", ""},
+             {"wingFuelTank", ""},
+             {"frame", ""},
+             {"stringer", ""},
+             {"pressureBulkhead", ""},
+             {"door", ""},
+             {"crossBeam", ""},
+             {"crossBeamStrut", ""},
+             {"longFloorBeam", ""},
+             {"wallSegment", ""},
+             {"floorPanel", ""},
+             {"window", ""},
+             {"intercostal", ""},
+             {"structuralMember", ""}},
+            {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}, {"tank", "0.2.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     wing_ = services.find<wing::WingServices>(wing::kWingServices);
@@ -85,6 +87,10 @@ class StructurePlugin final : public plugin::BasicPlugin {
     shapes.add("crossBeam", [](const Configuration& c, const std::string& uid) { return crossBeam(c, uid); });
     shapes.add("crossBeamStrut", [](const Configuration& c, const std::string& uid) { return crossBeamStrut(c, uid); });
     const std::shared_ptr<const tank::TankServices> tanks = tanks_;
+    shapes.add("frame",
+               [tanks](const Configuration& c, const std::string& uid) { return frameLine(c, tanks.get(), uid); });
+    shapes.add("stringer",
+               [tanks](const Configuration& c, const std::string& uid) { return stringerLine(c, tanks.get(), uid); });
     shapes.add("wallSegment",
                [tanks](const Configuration& c, const std::string& uid) { return fuselageWall(c, tanks.get(), uid); });
   }

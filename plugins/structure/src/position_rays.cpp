@@ -1,0 +1,118 @@
+#include "position_rays.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepFill.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+
+#include "airshape/error.h"
+#include "fuselage_frame.h"
+
+namespace airshape::structure {
+
+namespace {
+
+constexpr double kDegrees = M_PI / 180.0;
+
+TopoDS_Edge rayEdge(const FuselageFrame& fuselage, const PositionRay& ray, double length) {
+  // Both ends carried to the global frame, so that the ruled surfaces between the rays are the
+  // same whatever the fuselage's transformation.
+  return BRepBuilderAPI_MakeEdge(fuselage.toGlobal(ray.origin),
+                                 fuselage.toGlobal(ray.origin.Translated(ray.direction * length)))
+      .Edge();
+}
+
+/// Whether four points lie in one plane to `tolerance`.
+bool planar(const std::vector<gp_Pnt>& corners, double tolerance) {
+  const gp_Vec normal = gp_Vec(corners[0], corners[1]).Crossed(gp_Vec(corners[0], corners[2]));
+  if (normal.Magnitude() <= tolerance * tolerance) return false;
+  return std::abs(gp_Vec(corners[0], corners[3]).Dot(normal.Normalized())) <= tolerance;
+}
+
+}  // namespace
+
+PositionRay PositionRay::of(const FuselageFrame& fuselage, const schema::StringerFramePositionType& position) {
+  const double angle = position.referenceAngle * kDegrees;
+  return {gp_Pnt(fuselage.positionX(position), position.referenceY, position.referenceZ),
+          gp_Vec(0.0, -std::sin(angle), std::cos(angle))};
+}
+
+PositionRay PositionRay::between(const PositionRay& a, const PositionRay& b, double share) {
+  return {gp_Pnt(a.origin.XYZ() * (1.0 - share) + b.origin.XYZ() * share),
+          a.direction * (1.0 - share) + b.direction * share};
+}
+
+TopoDS_Face ruledBetween(const FuselageFrame& fuselage, const PositionRay& a, const PositionRay& b, double length) {
+  // Rays in one plane (equal angles, or one station) bound a plane face: the skin's section by a
+  // plane is found much faster than by a general ruled surface.
+  std::vector<gp_Pnt> corners;
+  for (const gp_Pnt& corner :
+       {a.origin, a.origin.Translated(a.direction * length), b.origin.Translated(b.direction * length), b.origin})
+    if (corners.empty() || !corner.IsEqual(corners.back(), 1e-9 * length)) corners.push_back(corner);
+  if (corners.size() == 3 || planar(corners, 1e-9 * length)) {
+    BRepBuilderAPI_MakePolygon outline;
+    for (const gp_Pnt& corner : corners) outline.Add(fuselage.toGlobal(corner));
+    outline.Close();
+    BRepBuilderAPI_MakeFace face(outline.Wire(), true);
+    if (face.IsDone()) return face.Face();
+  }
+  return BRepFill::Face(rayEdge(fuselage, a, length), rayEdge(fuselage, b, length));
+}
+
+StringerPath::StringerPath(const FuselageFrame& fuselage, const schema::StringerType& stringer) {
+  for (const schema::StringerFramePositionType& position : stringer.stringerPosition)
+    positions_.push_back(PositionRay::of(fuselage, position));
+  if (positions_.empty()) throw Error(ErrorCode::InvalidModel, "the stringer has no position", {}, stringer.xpath);
+  std::stable_sort(positions_.begin(), positions_.end(),
+                   [](const PositionRay& a, const PositionRay& b) { return a.origin.X() < b.origin.X(); });
+}
+
+PositionRay StringerPath::rayAt(double x) const {
+  for (std::size_t k = 1; k < positions_.size(); ++k) {
+    const PositionRay& before = positions_[k - 1];
+    const PositionRay& after = positions_[k];
+    if (x < before.origin.X() || x > after.origin.X()) continue;
+    const double run = after.origin.X() - before.origin.X();
+    return run > 0.0 ? PositionRay::between(before, after, (x - before.origin.X()) / run) : after;
+  }
+  PositionRay ray = x <= firstX() ? positions_.front() : positions_.back();
+  ray.origin.SetX(x);
+  return ray;
+}
+
+std::vector<TopoDS_Face> StringerPath::surface(const FuselageFrame& fuselage, double fromX, double toX,
+                                               double length) const {
+  // The stations where the surface bends: the ends and the positions between them.
+  std::vector<double> stations{fromX};
+  for (const PositionRay& position : positions_)
+    if (position.origin.X() > fromX && position.origin.X() < toX) stations.push_back(position.origin.X());
+  stations.push_back(toX);
+  std::vector<TopoDS_Face> faces;
+  for (std::size_t k = 1; k < stations.size(); ++k)
+    if (stations[k] > stations[k - 1])
+      faces.push_back(ruledBetween(fuselage, rayAt(stations[k - 1]), rayAt(stations[k]), length));
+  return faces;
+}
+
+std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema::FrameType& frame, double length) {
+  std::vector<TopoDS_Face> faces;
+  for (std::size_t k = 1; k < frame.framePosition.size(); ++k)
+    faces.push_back(ruledBetween(fuselage, PositionRay::of(fuselage, frame.framePosition[k - 1]),
+                                 PositionRay::of(fuselage, frame.framePosition[k]), length));
+  return faces;
+}
+
+bool isRiffled(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  if (frame.framePosition.size() == 0) return false;
+  const double x = fuselage.positionX(frame.framePosition[0]);
+  for (const schema::StringerFramePositionType& position : frame.framePosition)
+    if (std::abs(fuselage.positionX(position) - x) > 1e-9 * std::max(1.0, std::abs(x))) return true;
+  return false;
+}
+
+}  // namespace airshape::structure
