@@ -4,6 +4,8 @@ closed form."""
 import json
 import math
 
+import pytest
+
 from conftest import airshape, query_answers as ask
 from test_fuselage import HEADER, circle, fuselage
 
@@ -77,12 +79,21 @@ def structure():
              wall("Shelf", -90, "P5", "P6", extra="<boundingElementUIDs><boundingElementUID>Upright</boundingElementUID></boundingElementUIDs>") +
              wall("Broken", 0, "P1", "Lost") + wall("Loop", 0, "P1", "Self"))
     beams = ('<cargoCrossBeams><cargoCrossBeam uID="Beam"><structuralElementUID>E</structuralElementUID>'
-             "<frameUID>F1</frameUID><positionZ>-0.5</positionZ></cargoCrossBeam></cargoCrossBeams>")
+             "<frameUID>F1</frameUID><positionZ>-0.5</positionZ></cargoCrossBeam>"
+             '<cargoCrossBeam uID="Beam0"><structuralElementUID>E</structuralElementUID>'
+             "<frameUID>F0</frameUID><positionZ>-0.5</positionZ></cargoCrossBeam></cargoCrossBeams>")
+    floor_beams = "<longFloorBeams>" + "".join(
+        f'<longFloorBeam uID="{uid}">' + "".join(
+            f'<longFloorBeamPosition uID="{uid}P{i}"><structuralElementUID>E</structuralElementUID>'
+            f"<crossBeamUID>{beam}</crossBeamUID><positionY>{y}</positionY></longFloorBeamPosition>"
+            for i, (beam, y) in enumerate(positions)) + "</longFloorBeam>"
+        for uid, positions in (("Keel", (("Beam0", -0.3), ("Beam", 0.2))), ("Outside", (("Beam0", 0), ("Beam", 0.9))))
+    ) + "</longFloorBeams>"
     struts = "".join(f'<cargoCrossBeamStrut uID="{uid}"><structuralElementUID>E</structuralElementUID><frameUID>F1</frameUID>'
                      f"<crossBeamUID>Beam</crossBeamUID><positionYAtCrossBeam>{y}</positionYAtCrossBeam>"
                      f"<angleX>{angle}</angleX></cargoCrossBeamStrut>" for uid, y, angle in
-                     (("Down", -0.3, 90), ("Leaning", -0.3, 60), ("Beyond", -0.95, 90)))
-    return (f"<stringers>{stringers}</stringers><frames>{frames}</frames>{bulkheads}{beams}<cargoCrossBeamStruts>{struts}</cargoCrossBeamStruts><walls><wallPositions>{positions}</wallPositions>"
+                     (("Down", -0.3, 90), ("Leaning", -0.3, 60), ("Beyond", -0.95, 90))) + "</cargoCrossBeamStruts>" + floor_beams
+    return (f"<stringers>{stringers}</stringers><frames>{frames}</frames>{bulkheads}{beams}<cargoCrossBeamStruts>{struts}<walls><wallPositions>{positions}</wallPositions>"
             f"<wallSegments>{walls}</wallSegments></walls><cargoDoors>{doors}</cargoDoors>")
 
 
@@ -142,6 +153,19 @@ def test_cross_beams_and_struts_are_their_axes(tmp_path):
     t = (-b + math.sqrt(b * b - 4 * (0.09 + 0.25 - 1))) / 2
     assert math.isclose(leaning["min"][1], -0.3 + t * d[0], abs_tol=1e-5)
     assert math.isclose(leaning["min"][2], -0.5 + t * d[1], abs_tol=1e-5) and kind == "cross_beam_strut"
+
+
+def test_long_floor_beams_run_through_their_cross_beams(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    box, area, kind = ask(path, {"op": "bounding_box", "uid": "Keel"}, {"op": "component_surface_area", "uid": "Keel"},
+                          {"op": "component_type", "uid": "Keel"})
+    # From y = −0.3 on the beam at x = 3 to y = 0.2 on the beam at x = 7, both at z = −0.5.
+    assert area == 0 and kind == "long_floor_beam"
+    assert box["min"] == pytest.approx([3, -0.3, -0.5], abs=1e-6) and box["max"] == pytest.approx([7, 0.2, -0.5], abs=1e-6)
+    result = airshape("query", str(path), stdin=json.dumps({"op": "bounding_box", "uid": "Outside"}) + "\n")
+    error = json.loads(result.stdout)["error"]
+    assert "longFloorBeam[2]/longFloorBeamPosition[2]/positionY" in error and "beyond the ends" in error
 
 
 def test_fuselage_structure_errors_name_their_path(tmp_path):

@@ -10,6 +10,7 @@
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
+#include <vector>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -53,6 +54,19 @@ TopoDS_Shape beamAxis(const Configuration& configuration,
   return cut.Shape();
 }
 
+/// The point of a cross beam at `y` (fuselage coordinates), which must lie on the beam;
+/// otherwise throws Error naming `where`.
+gp_Pnt pointOnBeam(const Configuration& configuration, const FuselageFrame& fuselage,
+                   const FuselageElement<schema::CrossBeamAssemblyPositionType>& beam, double y,
+                   const std::string& where) {
+  const schema::FrameType& frame = frameNamed(*beam.structure, beam.node->frameUID, beam.node->xpath + "/frameUID");
+  const gp_Pnt point = fuselage.toGlobal(gp_Pnt(fuselage.stationX(frame), y, beam.node->positionZ));
+  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(point).Vertex(), beamAxis(configuration, beam));
+  if (!distance.IsDone() || distance.Value() > 1e-6)
+    throw Error(ErrorCode::InvalidModel, "the position lies beyond the ends of its cross beam", {}, where);
+  return point;
+}
+
 }  // namespace
 
 NamedShape crossBeam(const Configuration& configuration, const std::string& uid) {
@@ -63,16 +77,10 @@ NamedShape crossBeamStrut(const Configuration& configuration, const std::string&
   const auto strut = crossBeamStrutNamed(configuration, uid);
   const schema::CrossBeamStrutAssemblyPositionType& node = *strut.node;
   const auto beam = crossBeamNamed(configuration, node.crossBeamUID);
-  const schema::FrameType& beamFrame = frameNamed(*beam.structure, beam.node->frameUID, beam.node->xpath + "/frameUID");
   const schema::FrameType& frame = frameNamed(*strut.structure, node.frameUID, node.xpath + "/frameUID");
   const FuselageFrame fuselage(configuration, *strut.fuselage);
-  // Where the strut leaves its beam, which it must lie on.
   const gp_Pnt onBeam =
-      fuselage.toGlobal(gp_Pnt(fuselage.stationX(beamFrame), node.positionYAtCrossBeam, beam.node->positionZ));
-  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(onBeam).Vertex(), beamAxis(configuration, beam));
-  if (!distance.IsDone() || distance.Value() > 1e-6)
-    throw Error(ErrorCode::InvalidModel, "positionYAtCrossBeam lies beyond the ends of its cross beam", {},
-                node.xpath + "/positionYAtCrossBeam");
+      pointOnBeam(configuration, fuselage, beam, node.positionYAtCrossBeam, node.xpath + "/positionYAtCrossBeam");
   // Along the beam's plane turned by angleX − 90° about the x axis, from straight down.
   const double turn = (node.angleX.value_or(90.0) - 90.0) * M_PI / 180.0;
   const gp_Dir down = fuselage.toGlobal(gp_Dir(0.0, std::sin(turn), -std::cos(turn)));
@@ -80,6 +88,25 @@ NamedShape crossBeamStrut(const Configuration& configuration, const std::string&
       fuselage.toGlobal(gp_Pnt(fuselage.stationX(frame), node.positionYAtCrossBeam, beam.node->positionZ));
   const gp_Pnt onFrame = fuselage.skinAhead(start, down, node.xpath);
   return edgesOf(BRepBuilderAPI_MakeEdge(onBeam, onFrame).Edge());
+}
+
+NamedShape longFloorBeam(const Configuration& configuration, const std::string& uid) {
+  const auto floorBeam = longFloorBeamNamed(configuration, uid);
+  const auto& positions = floorBeam.node->longFloorBeamPosition;
+  if (positions.size() < 2)
+    throw Error(ErrorCode::InvalidModel, "a long floor beam needs at least two positions", {}, floorBeam.node->xpath);
+  const FuselageFrame fuselage(configuration, *floorBeam.fuselage);
+  std::vector<gp_Pnt> points;
+  for (const schema::LongFloorBeamPositionType& position : positions)
+    points.push_back(pointOnBeam(configuration, fuselage, crossBeamNamed(configuration, position.crossBeamUID),
+                                 position.positionY, position.xpath + "/positionY"));
+  BRep_Builder builder;
+  TopoDS_Compound axis;
+  builder.MakeCompound(axis);
+  for (std::size_t k = 1; k < points.size(); ++k)
+    if (!points[k].IsEqual(points[k - 1], 1e-9 * fuselage.reach()))
+      builder.Add(axis, BRepBuilderAPI_MakeEdge(points[k - 1], points[k]).Edge());
+  return edgesOf(axis);
 }
 
 }  // namespace airshape::structure

@@ -21,4 +21,9 @@ NamedShape crossBeam(const Configuration& configuration, const std::string& uid)
 /// fuselage's x axis (90°: straight down; less leans towards −y). An edge shape, no faces.
 NamedShape crossBeamStrut(const Configuration& configuration, const std::string& uid);
 
+/// A long floor beam as its axis: straight lines through its positions, each on its cross beam
+/// at positionY. An edge shape, no faces. Throws Error naming the position that lies beyond its
+/// cross beam's ends.
+NamedShape longFloorBeam(const Configuration& configuration, const std::string& uid);
+
 }  // namespace airshape::structure

@@ -120,6 +120,19 @@ FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(
   return found;
 }
 
+FuselageElement<schema::LongFloorBeamType> longFloorBeamNamed(const Configuration& configuration,
+                                                              const std::string& uid) {
+  const auto found = findInFuselages<schema::LongFloorBeamType>(
+      configuration, uid, [](const schema::FuselageStructureType& structure) {
+        std::vector<const schema::LongFloorBeamType*> nodes;
+        if (structure.longFloorBeams)
+          for (const auto& beam : structure.longFloorBeams->longFloorBeam) nodes.push_back(&beam);
+        return nodes;
+      });
+  if (found.node == nullptr) throw Error(ErrorCode::InvalidArgument, "no long floor beam with uID '" + uid + "'");
+  return found;
+}
+
 FuselageElement<schema::DoorAssemblyPositionType> doorNamed(const Configuration& configuration,
                                                             const std::string& uid) {
   const auto found = findInFuselages<schema::DoorAssemblyPositionType>(

@@ -46,6 +46,10 @@ FuselageElement<schema::CrossBeamAssemblyPositionType> crossBeamNamed(const Conf
 FuselageElement<schema::CrossBeamStrutAssemblyPositionType> crossBeamStrutNamed(const Configuration& configuration,
                                                                                 const std::string& uid);
 
+/// The long floor beam with this uID in any model. Throws Error when none has it.
+FuselageElement<schema::LongFloorBeamType> longFloorBeamNamed(const Configuration& configuration,
+                                                              const std::string& uid);
+
 /// The cargo or passenger door with this uID in any model. Throws Error when none has it.
 FuselageElement<schema::DoorAssemblyPositionType> doorNamed(const Configuration& configuration, const std::string& uid);
 

@@ -40,7 +40,7 @@ class StructurePlugin final : public plugin::BasicPlugin {
       : BasicPlugin(
             "structure", "0.5.0",
             "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, frames and stringers (lines), "
-            "pressure bulkheads, doors, walls, cross beams and struts (floor beams: no builder yet)",
+            "pressure bulkheads, doors, walls, cross beams, struts and long floor beams",
             {{"sparSegment", ""},
              {"ribsDefinition", ""},
              {"wingCell", ""},
@@ -85,6 +85,7 @@ class StructurePlugin final : public plugin::BasicPlugin {
                [](const Configuration& c, const std::string& uid) { return pressureBulkhead(c, uid); });
     shapes.add("door", [](const Configuration& c, const std::string& uid) { return fuselageDoor(c, uid); });
     shapes.add("crossBeam", [](const Configuration& c, const std::string& uid) { return crossBeam(c, uid); });
+    shapes.add("longFloorBeam", [](const Configuration& c, const std::string& uid) { return longFloorBeam(c, uid); });
     shapes.add("crossBeamStrut", [](const Configuration& c, const std::string& uid) { return crossBeamStrut(c, uid); });
     const std::shared_ptr<const tank::TankServices> tanks = tanks_;
     shapes.add("frame",
