@@ -222,11 +222,31 @@ def test_cells_are_skin_patches_in_closed_form(tmp_path):
     assert "eta given as a bare number" in result.stderr
 
 
+def simpson(f, a, b, steps=200):
+    h = (b - a) / steps
+    return h / 3 * sum((1 if k in (0, steps) else 4 if k % 2 else 2) * f(a + k * h) for k in range(steps + 1))
+
+
+def test_a_cell_follows_the_kinks_of_its_spar(tmp_path):
+    # The spar runs ξ 0.2 → 0.4 → 0.2 along the span; the cell lies behind it up to ξ 0.6
+    # between η 0.2 and 0.8 (y 1 to 4), so its outline bends at the spar's kink at y = 2.5.
+    positions = position("K0", 0, 0.2) + position("K1", 0.5, 0.4) + position("K2", 1, 0.2)
+    behind = cell("Behind", 0.2, 0.8, "<sparUID>Kinked</sparUID>", "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")
+    path = with_spars(tmp_path, positions, segment("Kinked", "K0", "K1", "K2"), cells(behind))
+    area, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Behind"}))
+
+    def spar_xsi(y):
+        return 0.2 + 0.2 * (y / 2.5 if y <= 2.5 else (5 - y) / 2.5)
+
+    expected = sum(simpson(lambda y: skin_length(spar_xsi(y), 0.6, steps=400), a, b) for a, b in ((1, 2.5), (2.5, 4)))
+    assert area == pytest.approx(expected, rel=1e-6)
+
+
 def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage and vessel walls, cross beams and struts are built
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 473, output[-3000:]
+    assert passed >= 475, output[-3000:]
 
 
 def two_segment_wing(tmp_path, shells):

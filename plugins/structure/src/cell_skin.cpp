@@ -46,6 +46,15 @@ class CellCorners {
     return frame_.chordPoint("", csEta, xsiAt(*chordwise, inner, csEta, chordwisePath));
   }
 
+  /// The spar's corners between a cell's inner and outer corner on a chordwise border that a
+  /// spar gives, from `from` to `to` (none for a border of xsi values).
+  std::vector<gp_Pnt> alongSpar(bool leadingEdge, const gp_Pnt& from, const gp_Pnt& to) const {
+    const auto& chordwise = leadingEdge ? cell_.node->positioningLeadingEdge : cell_.node->positioningTrailingEdge;
+    if (!chordwise || !chordwise->sparUID || (chordwise->xsi1 && chordwise->xsi2)) return {};
+    const Polyline spar = frame_.sparLine(sparSegmentNamed(configuration_, *chordwise->sparUID));
+    return spar.cornersBetween(spar.nearestShare(from), spar.nearestShare(to));
+  }
+
  private:
   /// A corner on a rib border: where the rib's plane crosses the chord surface's line of the
   /// leading (trailing) edge's xsi, or the spar's midplane line.
@@ -142,9 +151,17 @@ NamedShape cellSkin(const Configuration& configuration, const wing::WingServices
   if (boundedByContourCoordinates(cell)) return contourCellSkin(configuration, wing, cell);
   const StructureFrame frame(configuration, wing, cell.componentSegmentUid, cell.wingUid);
   const CellCorners corners(configuration, wing, cell, frame);
-  const std::vector<gp_Pnt> loop = {corners.at(true, true), corners.at(false, true), corners.at(false, false),
-                                    corners.at(true, false)};
-  // The four vertical planes through the corners bound a prism reaching across the wing.
+  // The outline: the four corners, following a spar's kinks between them where a spar gives
+  // the leading or trailing edge.
+  const gp_Pnt innerFront = corners.at(true, true), outerFront = corners.at(false, true);
+  const gp_Pnt outerBack = corners.at(false, false), innerBack = corners.at(true, false);
+  std::vector<gp_Pnt> loop{innerFront};
+  for (const gp_Pnt& kink : corners.alongSpar(true, innerFront, outerFront)) loop.push_back(kink);
+  loop.push_back(outerFront);
+  loop.push_back(outerBack);
+  for (const gp_Pnt& kink : corners.alongSpar(false, outerBack, innerBack)) loop.push_back(kink);
+  loop.push_back(innerBack);
+  // The vertical planes through the outline bound a prism reaching across the wing.
   const double reach = frame.reach();
   auto level = [&](double height) {
     BRepBuilderAPI_MakePolygon polygon;

@@ -53,6 +53,29 @@ std::optional<double> Polyline::crossing(const gp_Pnt& origin, const gp_Vec& nor
   return std::nullopt;
 }
 
+double Polyline::nearestShare(const gp_Pnt& point) const {
+  double best = 0.0, bestDistance = point.SquareDistance(points_.front());
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
+    const gp_Vec piece(points_[i], points_[i + 1]);
+    const double squared = piece.SquareMagnitude();
+    const double t = squared > 0.0 ? std::clamp(gp_Vec(points_[i], point).Dot(piece) / squared, 0.0, 1.0) : 0.0;
+    const double distance = point.SquareDistance(points_[i].Translated(t * piece));
+    if (distance < bestDistance)
+      bestDistance = distance, best = (lengths_[i] + t * (lengths_[i + 1] - lengths_[i])) / length_;
+  }
+  return best;
+}
+
+std::vector<gp_Pnt> Polyline::cornersBetween(double from, double to) const {
+  const double low = std::min(from, to) * length_, high = std::max(from, to) * length_;
+  const double margin = 1e-9 * length_;
+  std::vector<gp_Pnt> corners;
+  for (std::size_t i = 1; i + 1 < points_.size(); ++i)
+    if (lengths_[i] > low + margin && lengths_[i] < high - margin) corners.push_back(points_[i]);
+  if (from > to) std::reverse(corners.begin(), corners.end());
+  return corners;
+}
+
 Polyline Polyline::joined(const Polyline& next) const {
   std::vector<gp_Pnt> points = points_;
   points.insert(points.end(), next.points_.begin() + 1, next.points_.end());

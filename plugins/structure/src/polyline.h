@@ -23,6 +23,10 @@ class Polyline {
   /// The share of the length where the line first crosses the plane through `origin` normal
   /// to `normal`, if it does.
   std::optional<double> crossing(const gp_Pnt& origin, const gp_Vec& normal) const;
+  /// The share of the length of the line's point nearest to `point`.
+  double nearestShare(const gp_Pnt& point) const;
+  /// The line's corners strictly between two shares, in order from `from` to `to`.
+  std::vector<gp_Pnt> cornersBetween(double from, double to) const;
   /// The line followed by another that starts where it ends.
   Polyline joined(const Polyline& next) const;
 
