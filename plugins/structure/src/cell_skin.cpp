@@ -5,7 +5,9 @@
 #include <string>
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepGProp.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
+#include <GProp_GProps.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
@@ -161,19 +163,27 @@ NamedShape cellSkin(const Configuration& configuration, const wing::WingServices
   loop.push_back(outerBack);
   for (const gp_Pnt& kink : corners.alongSpar(false, outerBack, innerBack)) loop.push_back(kink);
   loop.push_back(innerBack);
-  // The vertical planes through the outline bound a prism reaching across the wing.
+  // Through each point of the outline a line along the chord surface's normal there (taken a
+  // little inside the cell, so that a border on a kink between segments takes the normal of the
+  // cell's own side); these lines sweep a prism reaching across the wing. On a wing without
+  // dihedral the lines are vertical.
+  std::vector<double> etas;
+  for (const gp_Pnt& point : loop) etas.push_back(frame.etaOf(point));
+  const double middle =
+      0.5 * (*std::min_element(etas.begin(), etas.end()) + *std::max_element(etas.begin(), etas.end()));
+  std::vector<gp_Vec> normals;
+  for (const double eta : etas) normals.push_back(frame.midplaneNormal(eta + (middle > eta ? 1e-6 : -1e-6)));
   const double reach = frame.reach();
-  auto level = [&](double height) {
+  auto level = [&](double side) {
     BRepBuilderAPI_MakePolygon polygon;
-    for (const gp_Pnt& corner : loop) polygon.Add(frame.toGlobal(gp_Pnt(corner.X(), corner.Y(), height)));
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * normals[k])));
     polygon.Close();
     return polygon.Wire();
   };
-  double low = loop.front().Z(), high = low;
-  for (const gp_Pnt& corner : loop) low = std::min(low, corner.Z()), high = std::max(high, corner.Z());
   BRepOffsetAPI_ThruSections prism(true, true);
-  prism.AddWire(level(low - reach));
-  prism.AddWire(level(high + reach));
+  prism.AddWire(level(-1.0));
+  prism.AddWire(level(1.0));
   prism.Build();
   if (!prism.IsDone()) throw Error(ErrorCode::InvalidModel, "the cell's corners enclose nothing", {}, cell.xpath);
 
@@ -185,8 +195,18 @@ NamedShape cellSkin(const Configuration& configuration, const wing::WingServices
   } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, cell.xpath);
   }
+  // A wing that folds back over itself (a joined or box wing) can bring skin of other segments
+  // into the prism: only pieces within the cell's span count.
+  const double low = *std::min_element(etas.begin(), etas.end()), high = *std::max_element(etas.begin(), etas.end());
+  std::vector<TopoDS_Face> withinSpan;
+  for (const TopoDS_Face& face : inside) {
+    GProp_GProps area;
+    BRepGProp::SurfaceProperties(face, area);
+    const double eta = frame.etaOf(frame.toWing(area.CentreOfMass()));
+    if (eta > low - 1e-6 && eta < high + 1e-6) withinSpan.push_back(face);
+  }
   NamedFaces patch;
-  patch.add(cell.uid + "/skin", inside);
+  patch.add(cell.uid + "/skin", withinSpan);
   if (patch.empty()) throw Error(ErrorCode::InvalidModel, "the cell covers no skin", {}, cell.xpath);
   return patch.shape();
 }
