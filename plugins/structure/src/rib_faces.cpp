@@ -185,7 +185,7 @@ class ExplicitRib {
       throw Error(ErrorCode::InvalidModel, "the rib's start and end point coincide", {}, xpath());
     gp_Vec upStart = upAt(start, end, true), upEnd = upAt(start, end, false);
     if (upStart.SquareMagnitude() == 0.0 && upEnd.SquareMagnitude() == 0.0)
-      upStart = upEnd = frame_.midplaneNormal(frame_.etaOf(start));
+      upStart = upEnd = upBetweenEdges(start, end);
     else if (upStart.SquareMagnitude() == 0.0)
       upStart = upEnd;
     else if (upEnd.SquareMagnitude() == 0.0)
@@ -211,6 +211,17 @@ class ExplicitRib {
 
  private:
   std::string xpath() const { return ribs_.xpath + "/ribExplicitPositioning"; }
+
+  /// The up direction of a rib from edge to edge: in the plane of the section both its ends lie
+  /// in (the component segment's root or tip, or a section between its segments), otherwise
+  /// the mid-plane's normal at its start.
+  gp_Vec upBetweenEdges(const gp_Pnt& start, const gp_Pnt& end) const {
+    const double eta = frame_.etaOf(start);
+    if (std::abs(frame_.etaOf(end) - eta) < 1e-9)
+      for (const double section : frame_.sectionEtas())
+        if (std::abs(section - eta) < 1e-9) return frame_.thicknessDirection(section, 0.5);
+    return frame_.midplaneNormal(eta);
+  }
 
   /// The up direction a spar gives at the rib's start (or end): along the line where the plane
   /// across the rib (through the midplane normal) meets the spar's web; the wing's z axis at a

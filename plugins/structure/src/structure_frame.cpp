@@ -65,6 +65,22 @@ gp_Vec StructureFrame::midplaneNormal(double eta) const {
   return toWing(wing_.midplaneNormal(configuration_, componentSegmentUid_, std::clamp(eta, 0.0, 1.0))).Normalized();
 }
 
+std::vector<double> StructureFrame::sectionEtas() const {
+  std::vector<double> etas{0.0};
+  const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+  for (std::size_t k = 0; k + 1 < segments.size(); ++k)
+    etas.push_back(wing_.componentSegmentEta(configuration_, componentSegmentUid_, segments[k], 1.0));
+  etas.push_back(1.0);
+  return etas;
+}
+
+gp_Vec StructureFrame::thicknessDirection(double eta, double xsi) const {
+  using Surface = wing::WingServices::Surface;
+  const gp_Pnt upper = wing_.componentSegmentPoint(configuration_, componentSegmentUid_, eta, xsi, Surface::Upper);
+  const gp_Pnt lower = wing_.componentSegmentPoint(configuration_, componentSegmentUid_, eta, xsi, Surface::Lower);
+  return toWing(gp_Vec(lower, upper));
+}
+
 gp_Vec StructureFrame::etaDirection(double eta) const {
   const Polyline edge = leadingEdge();
   std::vector<gp_Pnt> seenFromFront;

@@ -33,6 +33,12 @@ class StructureFrame {
   double etaOf(const gp_Pnt& point) const;
   /// The unit normal of the chord surface at eta (towards the upper skin), in the wing frame.
   gp_Vec midplaneNormal(double eta) const;
+  /// The component segment etas of the sections it runs through (0, those between its wing
+  /// segments, 1).
+  std::vector<double> sectionEtas() const;
+  /// From the lower to the upper skin at component segment (eta, xsi), in the wing frame (not
+  /// normalised): in a section's plane, square to its chord.
+  gp_Vec thicknessDirection(double eta, double xsi) const;
   /// The direction in which eta grows at eta (wing frame, unit): the leading edge seen from
   /// the front (x dropped), along which the component segment's eta is measured.
   gp_Vec etaDirection(double eta) const;
