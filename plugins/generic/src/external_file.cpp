@@ -4,16 +4,15 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
+
+#include <boost/dll/shared_library.hpp>
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <IGESControl_Reader.hxx>
-#include <Interface_Static.hxx>
-#include <STEPControl_Reader.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/plugin/plugin_host.h"
 
 namespace airshape::generic {
 
@@ -24,21 +23,22 @@ std::string lowerCase(std::string text) {
   return text;
 }
 
-/// Reads with a STEP or IGES reader into metres. OCCT's unit of the session is a global
-/// setting: it is set for the read (before and after constructing the reader, whose
-/// constructor initialises it) and restored after, under a lock.
-template <class Reader>
-TopoDS_Shape readInMetres(const std::string& path) {
-  static std::mutex settings;
-  const std::lock_guard<std::mutex> lock(settings);
-  const std::string before = Interface_Static::CVal("xstep.cascade.unit");
-  Interface_Static::SetCVal("xstep.cascade.unit", "M");
-  Reader reader;
-  Interface_Static::SetCVal("xstep.cascade.unit", "M");
-  const bool read = reader.ReadFile(path.c_str()) == IFSelect_RetDone;
-  if (read) reader.TransferRoots();
-  Interface_Static::SetCVal("xstep.cascade.unit", before.c_str());
-  return read ? reader.OneShape() : TopoDS_Shape();
+/// A STEP or IGES file's shape in metres, read by the exchange module (exchange_reader.cpp),
+/// which is loaded on first use and kept.
+TopoDS_Shape readExchangeFile(const std::string& kind, const std::string& path) {
+  using Entry = void(const std::string&, const std::string&, TopoDS_Shape&);
+  static const boost::dll::shared_library module = [] {
+    const boost::dll::fs::path file =
+        boost::dll::fs::path(plugin::PluginHost::coreLibraryFolder()) / "libairshape_generic_exchange.so";
+    boost::dll::fs::error_code error;
+    boost::dll::shared_library loaded(file, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local, error);
+    if (error)
+      throw Error(ErrorCode::PluginFailed, "cannot load the STEP and IGES reader: " + error.message(), file.string());
+    return loaded;
+  }();
+  TopoDS_Shape shape;
+  module.get<Entry>("airshape_read_exchange_file")(kind, path, shape);
+  return shape;
 }
 
 }  // namespace
@@ -55,8 +55,7 @@ TopoDS_Shape readExternalFile(const Configuration& configuration, const std::str
     throw Error(ErrorCode::InvalidModel, "the linked file '" + path.string() + "' cannot be read", {}, xpath);
   return *configuration.cache().obtain<TopoDS_Shape>("external-file:" + kind + ":" + path.string(), [&] {
     TopoDS_Shape shape;
-    if (kind == "step") shape = readInMetres<STEPControl_Reader>(path.string());
-    if (kind == "iges") shape = readInMetres<IGESControl_Reader>(path.string());
+    if (kind == "step" || kind == "iges") shape = readExchangeFile(kind, path.string());
     if (kind == "brep") {
       BRep_Builder builder;
       if (!BRepTools::Read(shape, path.string().c_str(), builder)) shape.Nullify();
