@@ -351,7 +351,7 @@ def test_cells_bounded_by_ribs(tmp_path):
     assert area == pytest.approx(2.0 * skin_length(0.2, 0.6), rel=1e-6)
     assert box["min"][1] == pytest.approx(0.5, abs=1e-6) and box["max"][1] == pytest.approx(2.5, abs=1e-6)
     missing, = ask(path, {"op": "component_surface_area", "uid": "Beyond"})
-    assert "positioningOuterBorder" in missing["error"] and "has no plane rib 7" in missing["error"]
+    assert "positioningOuterBorder" in missing["error"] and "has no rib 7" in missing["error"]
 
 
 def test_spar_positions_on_ribs(tmp_path):
@@ -370,4 +370,4 @@ def test_spar_positions_on_ribs(tmp_path):
                             {"op": "bounding_box", "uid": "Middle"}, {"op": "component_surface_area", "uid": "Broken"})
     assert area["ok"] == pytest.approx(4.0 * height(0.4), rel=1e-7)
     assert box["ok"]["min"][0] == pytest.approx(1.8, abs=1e-6) and box["ok"]["min"][1] == pytest.approx(0.5, abs=1e-6)
-    assert "sparPosition[7]/sparPositionRib" in broken["error"] and "no plane rib 9" in broken["error"]
+    assert "sparPosition[7]/sparPositionRib" in broken["error"] and "has no rib 9" in broken["error"]

@@ -95,27 +95,41 @@ std::vector<gp_Pnt> RibCutter::side(const std::string& border, const gp_Pnt& ori
   return points;
 }
 
-std::vector<TopoDS_Face> RibCutter::cut(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,
-                                        const std::string& ribStart, const std::string& ribEnd, const std::string& name,
-                                        const std::string& where) const {
+TopoDS_Face RibCutter::outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,
+                               const std::string& ribStart, const std::string& ribEnd, const std::string& name,
+                               const std::string& where) const {
   const gp_Vec normal = frame_.toGlobal(direction).Crossed(frame_.toGlobal(up));
   const gp_Pln plane(frame_.toGlobal(point), gp_Dir(normal));
   const std::vector<gp_Pnt> front = side(ribStart, point, -direction, up, plane, where + "/ribStart");
   const std::vector<gp_Pnt> back = side(ribEnd, point, direction, up, plane, where + "/ribEnd");
-  BRepBuilderAPI_MakePolygon outline;
-  for (const gp_Pnt& p : front) outline.Add(p);
-  for (auto p = back.rbegin(); p != back.rend(); ++p) outline.Add(*p);
-  outline.Close();
-  BRepBuilderAPI_MakeFace cutFace(plane, outline.Wire(), true);
-  if (!cutFace.IsDone()) throw Error(ErrorCode::InvalidModel, "the outline of " + name + " is not plane", {}, where);
-  std::vector<TopoDS_Face> faces;
+  BRepBuilderAPI_MakePolygon polygon;
+  for (const gp_Pnt& p : front) polygon.Add(p);
+  for (auto p = back.rbegin(); p != back.rend(); ++p) polygon.Add(*p);
+  polygon.Close();
+  BRepBuilderAPI_MakeFace face(plane, polygon.Wire(), true);
+  if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "the outline of " + name + " is not plane", {}, where);
+  return face.Face();
+}
+
+std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<TopoDS_Face>& outlines,
+                                                        const std::vector<std::string>& names,
+                                                        const std::string& where) const {
+  std::vector<std::vector<TopoDS_Face>> ribs;
   try {
-    faces = facesInside(cutFace.Face(), frame_.solid());
+    ribs = facesInsideEach(outlines, frame_.solid());
   } catch (const Error&) {
-    throw Error(ErrorCode::InvalidModel, name + " cannot be cut out of its component segment", {}, where);
+    throw Error(ErrorCode::InvalidModel, "the ribs cannot be cut out of their component segment", {}, where);
   }
-  if (faces.empty()) throw Error(ErrorCode::InvalidModel, name + " does not cross its component segment", {}, where);
-  return faces;
+  for (std::size_t i = 0; i < ribs.size(); ++i)
+    if (ribs[i].empty())
+      throw Error(ErrorCode::InvalidModel, names[i] + " does not cross its component segment", {}, where);
+  return ribs;
+}
+
+std::vector<TopoDS_Face> RibCutter::cut(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,
+                                        const std::string& ribStart, const std::string& ribEnd, const std::string& name,
+                                        const std::string& where) const {
+  return cutAll({outline(point, direction, up, ribStart, ribEnd, name, where)}, {name}, where).front();
 }
 
 }  // namespace airshape::structure

@@ -44,6 +44,16 @@ class RibCutter {
                                const std::string& ribStart, const std::string& ribEnd, const std::string& name,
                                const std::string& where) const;
 
+  /// A rib's plane face between its start and end border, reaching beyond the wing (global
+  /// frame): what `cut` cuts out of the component segment's solid.
+  TopoDS_Face outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up, const std::string& ribStart,
+                      const std::string& ribEnd, const std::string& name, const std::string& where) const;
+
+  /// Several ribs' outlines cut out of the component segment's solid at once, named `names`
+  /// (for the errors of ribs that do not cross it).
+  std::vector<std::vector<TopoDS_Face>> cutAll(const std::vector<TopoDS_Face>& outlines,
+                                               const std::vector<std::string>& names, const std::string& where) const;
+
   const StructureFrame& frame() const { return frame_; }
 
  private:

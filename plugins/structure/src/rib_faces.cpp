@@ -81,13 +81,17 @@ class RibSet {
   }
 
   NamedShape build() const {
-    NamedFaces ribs;
-    const std::vector<RibPlacement> all = placements();
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      const std::string name = ribs_.uid + "/rib " + std::to_string(i + 1);
-      ribs.add(name, cutter_.cut(all[i].point, all[i].direction, all[i].up, positioning_.ribStart, positioning_.ribEnd,
-                                 name, xpath()));
+    // All ribs cut out of the component segment at once: one Boolean operation for the set.
+    std::vector<TopoDS_Face> outlines;
+    std::vector<std::string> names;
+    for (const RibPlacement& rib : placements()) {
+      names.push_back(ribs_.uid + "/rib " + std::to_string(names.size() + 1));
+      outlines.push_back(cutter_.outline(rib.point, rib.direction, rib.up, positioning_.ribStart, positioning_.ribEnd,
+                                         names.back(), xpath()));
     }
+    const std::vector<std::vector<TopoDS_Face>> cut = cutter_.cutAll(outlines, names, xpath());
+    NamedFaces ribs;
+    for (std::size_t i = 0; i < cut.size(); ++i) ribs.add(names[i], cut[i]);
     return ribs.shape();
   }
 

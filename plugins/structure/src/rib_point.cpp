@@ -2,12 +2,10 @@
 
 #include <set>
 
-#include <BRep_Tool.hxx>
-#include <GeomLib_IsPlanarSurface.hxx>
-
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "rib_cutter.h"
+#include "rib_faces.h"
 #include "rib_list.h"
 #include "spar_list.h"
 
@@ -15,23 +13,16 @@ namespace airshape::structure {
 
 gp_Pln ribPlane(const Configuration& configuration, const StructureFrame& frame, const std::string& ribsUid,
                 long long number, const std::string& where) {
-  const std::string name = ribsUid + "/rib " + std::to_string(number);
   try {
-    for (const auto& [faceName, face] : configuration.shapes().namedShapeOf(configuration, ribsUid).faces) {
-      if (faceName != name) continue;
-      GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face));
-      if (!planar.IsPlanar()) break;
-      const gp_Pln global = planar.Plan();
-      const gp_Pnt origin = frame.toWing(global.Location());
-      const gp_Vec u(origin, frame.toWing(global.Location().Translated(gp_Vec(global.XAxis().Direction()))));
-      const gp_Vec v(origin, frame.toWing(global.Location().Translated(gp_Vec(global.YAxis().Direction()))));
-      return gp_Pln(origin, gp_Dir(u.Crossed(v)));
-    }
+    // Placed without cutting the ribs out of the wing, which costs seconds for a long set.
+    const RibPlacement rib = ribPlacement(configuration, ribsDefinitionNamed(configuration, ribsUid), frame, number);
+    const gp_Vec normal = rib.direction.Crossed(rib.up);
+    if (normal.Magnitude() < 1e-12) throw Error(ErrorCode::InvalidModel, "the rib has no plane");
+    return gp_Pln(rib.point, gp_Dir(normal));
   } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;
     throw Error(error.code(), error.message(), {}, where);
   }
-  throw Error(ErrorCode::InvalidModel, "ribs definition '" + ribsUid + "' has no plane rib " + std::to_string(number),
-              {}, where);
 }
 
 namespace {
