@@ -3,13 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
-#include <BRepAlgoAPI_Section.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
-#include <BRep_Tool.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Vertex.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -61,19 +56,40 @@ gp_Pnt RibCutter::pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
 
 std::vector<gp_Pnt> RibCutter::sparSection(const std::string& spar, const gp_Pln& plane,
                                            const std::string& where) const {
-  const TopoDS_Shape* web = nullptr;
+  // The spar's web is a vertical plane piece between each two of its positions (spar_web.cpp),
+  // carried on beyond the component segment's ends: where the plane meets it is a straight
+  // line, found without cutting the web (a Boolean section of the web cost 20 ms a rib).
+  SparSegment segment;
+  std::vector<gp_Pnt> points;
+  std::vector<double> etas;
   try {
-    web = &configuration_.shapes().shapeOf(configuration_, sparSegmentNamed(configuration_, spar).uid);
+    segment = sparSegmentNamed(configuration_, spar);
+    for (const SparPosition& position : segment.positions) {
+      const gp_Pnt point = frame_.positionPoint(position);
+      points.push_back(frame_.toGlobal(point));
+      etas.push_back(frame_.etaOf(point));
+    }
   } catch (const Error& error) {
     throw Error(error.code(), "spar '" + spar + "': " + error.message(), {}, where);
   }
-  BRepAlgoAPI_Section section(*web, BRepBuilderAPI_MakeFace(plane).Face(), false);
-  section.Build();
-  std::vector<gp_Pnt> points;
-  for (TopExp_Explorer vertex(section.Shape(), TopAbs_VERTEX); vertex.More(); vertex.Next())
-    points.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())));
-  if (points.size() < 2) throw Error(ErrorCode::InvalidModel, "a rib does not meet spar '" + spar + "'", {}, where);
-  return points;
+  const gp_Vec up = frame_.toGlobal(gp_Vec(0, 0, 1)).Normalized();
+  const gp_Vec normal(plane.Axis().Direction());
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const gp_Vec piece(points[i - 1], points[i]);
+    const double across = piece.Dot(normal);
+    if (std::abs(across) < 1e-12 * piece.Magnitude()) continue;  // the piece runs along the plane
+    const double t = gp_Vec(points[i - 1], plane.Location()).Dot(normal) / across;
+    const bool carriedBefore = i == 1 && etas.front() <= 1e-7,
+               carriedAfter = i + 1 == points.size() && etas.back() >= 1.0 - 1e-7;
+    if ((t < -1e-9 && !carriedBefore) || (t > 1.0 + 1e-9 && !carriedAfter)) continue;
+    const gp_Pnt crossing = points[i - 1].Translated(t * piece);
+    gp_Vec along = normal.Crossed(piece.Crossed(up));
+    if (along.Magnitude() < 1e-12) continue;
+    along.Normalize();
+    if (along.Dot(up) < 0.0) along.Reverse();
+    return {crossing.Translated(-reach_ * along), crossing.Translated(reach_ * along)};
+  }
+  throw Error(ErrorCode::InvalidModel, "a rib does not meet spar '" + spar + "'", {}, where);
 }
 
 std::vector<gp_Pnt> RibCutter::side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards,

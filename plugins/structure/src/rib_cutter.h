@@ -33,8 +33,9 @@ class RibCutter {
                  const schema::Child<schema::CurvePointType>& curve, const std::optional<std::string>& sparPosition,
                  const std::string& where) const;
 
-  /// Where the plane (global frame) meets a spar's web: its points, global frame. Throws
-  /// Error naming `where` when it does not.
+  /// Where the plane (global frame) meets a spar's web: two points of that line, the lower
+  /// first, each `reach` away from where it crosses the spar's line (global frame). Throws
+  /// Error naming `where` when it does not meet it.
   std::vector<gp_Pnt> sparSection(const std::string& spar, const gp_Pln& plane, const std::string& where) const;
 
   /// The faces of the rib in the plane through `point` along `direction` (from its start to
