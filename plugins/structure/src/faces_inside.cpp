@@ -1,5 +1,7 @@
 #include "faces_inside.h"
 
+#include <memory>
+
 #include <BRepAlgoAPI_Common.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -9,40 +11,44 @@
 
 namespace airshape::structure {
 
-std::vector<TopoDS_Face> facesInside(const TopoDS_Shape& faces, const TopoDS_Shape& solid) {
-  TopTools_ListOfShape arguments, tools;
-  arguments.Append(faces);
+namespace {
+
+/// The Boolean common of the arguments with the solid, built; throws Error when it fails.
+std::unique_ptr<BRepAlgoAPI_Common> commonWith(const TopTools_ListOfShape& arguments, const TopoDS_Shape& solid) {
+  TopTools_ListOfShape tools;
   tools.Append(solid);
-  BRepAlgoAPI_Common common;
-  common.SetArguments(arguments);
-  common.SetTools(tools);
-  common.SetRunParallel(true);
-  common.SetNonDestructive(true);  // the solid is shared, cached geometry
-  common.Build();
-  if (!common.IsDone() || common.HasErrors()) throw Error(ErrorCode::InvalidModel, "the Boolean common failed");
+  auto common = std::make_unique<BRepAlgoAPI_Common>();
+  common->SetArguments(arguments);
+  common->SetTools(tools);
+  common->SetRunParallel(true);
+  common->SetNonDestructive(true);  // the solid is shared, cached geometry
+  common->Build();
+  if (!common->IsDone() || common->HasErrors()) throw Error(ErrorCode::InvalidModel, "the Boolean common failed");
+  return common;
+}
+
+}  // namespace
+
+std::vector<TopoDS_Face> facesInside(const TopoDS_Shape& faces, const TopoDS_Shape& solid) {
+  TopTools_ListOfShape arguments;
+  arguments.Append(faces);
+  const auto common = commonWith(arguments, solid);
   std::vector<TopoDS_Face> inside;
-  for (TopExp_Explorer face(common.Shape(), TopAbs_FACE); face.More(); face.Next())
+  for (TopExp_Explorer face(common->Shape(), TopAbs_FACE); face.More(); face.Next())
     inside.push_back(TopoDS::Face(face.Current()));
   return inside;
 }
 
 std::vector<std::vector<TopoDS_Face>> facesInsideEach(const std::vector<TopoDS_Face>& faces,
                                                       const TopoDS_Shape& solid) {
-  TopTools_ListOfShape arguments, tools;
+  TopTools_ListOfShape arguments;
   for (const TopoDS_Face& face : faces) arguments.Append(face);
-  tools.Append(solid);
-  BRepAlgoAPI_Common common;
-  common.SetArguments(arguments);
-  common.SetTools(tools);
-  common.SetRunParallel(true);
-  common.SetNonDestructive(true);  // the solid is shared, cached geometry
-  common.Build();
-  if (!common.IsDone() || common.HasErrors()) throw Error(ErrorCode::InvalidModel, "the Boolean common failed");
+  const auto common = commonWith(arguments, solid);
   std::vector<std::vector<TopoDS_Face>> inside;
   for (const TopoDS_Face& face : faces) {
     std::vector<TopoDS_Face> parts;
-    for (const TopoDS_Shape& part : common.Modified(face)) parts.push_back(TopoDS::Face(part));
-    if (parts.empty() && !common.IsDeleted(face)) parts.push_back(face);  // wholly inside, unchanged
+    for (const TopoDS_Shape& part : common->Modified(face)) parts.push_back(TopoDS::Face(part));
+    if (parts.empty() && !common->IsDeleted(face)) parts.push_back(face);  // wholly inside, unchanged
     inside.push_back(parts);
   }
   return inside;
