@@ -87,12 +87,14 @@ BuildReport buildOne(const Configuration& configuration, const plugin::PluginHos
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const BRepCheck_Analyzer analyzer(solid);
     const bool valid = analyzer.IsValid();
-    // Structure (spar webs, ribs, ...) is surfaces: its measure is its area, not a volume.
-    const bool isSolid = TopExp_Explorer(solid, TopAbs_SOLID).More();
-    if (isSolid)
+    // Structure is surfaces (spar webs, ribs: measured by their area, not a volume) or lines
+    // (frames, stringers, beams: by their length).
+    if (TopExp_Explorer(solid, TopAbs_SOLID).More())
       line << (valid ? "valid solid" : "INVALID solid") << ", volume " << geometry::enclosedVolume(solid);
-    else
+    else if (TopExp_Explorer(solid, TopAbs_FACE).More() || !TopExp_Explorer(solid, TopAbs_EDGE).More())
       line << (valid ? "valid faces" : "INVALID faces") << ", area " << geometry::areaOf(solid);
+    else
+      line << (valid ? "valid lines" : "INVALID lines") << ", length " << geometry::lengthOf(solid);
     line << ", " << std::fixed << std::setprecision(3) << seconds << " s";
     if (!valid) line << " (BRepCheck: " << flawsOf(solid, analyzer) << ")";
     return {line.str(), valid};
