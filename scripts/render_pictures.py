@@ -19,6 +19,7 @@ import numpy as np
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 AIRSHAPE = os.path.join(SOURCE, "build", "bin", "airshape")
 EXAMPLE = os.path.join(SOURCE, "tests", "data", "wing-cst-structure.xml")
+AIRLINER = os.path.join(SOURCE, "examples", "generic-airliner.xml")
 COLOURS = [(0.85, 0.33, 0.10), (0.00, 0.45, 0.74), (0.47, 0.67, 0.19), (0.93, 0.69, 0.13)]
 WIDTH, HEIGHT = 900, 420
 
@@ -107,16 +108,28 @@ def write_png(image, path):
                   chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
-def main():
+def exported(source, components, deflection):
+    """The groups of an OBJ export of some components of a file."""
     with tempfile.TemporaryDirectory() as folder:
         obj = os.path.join(folder, "structure.obj")
-        subprocess.run([AIRSHAPE, "export", EXAMPLE, "--components", "Rect,Front,Rear,Ribs,UpperCell",
-                        "--deflection", "0.0005", "-q", "-o", obj], check=True)
-        groups = read_obj(obj)
+        subprocess.run([AIRSHAPE, "export", source, "--components", ",".join(components), "--deflection",
+                        str(deflection), "-q", "-o", obj], check=True)
+        return read_obj(obj)
+
+
+def main():
     images = os.path.join(SOURCE, "docs", "images")
+    groups = exported(EXAMPLE, ["Rect", "Front", "Rear", "Ribs", "UpperCell"], 0.0005)
     for name, opaque in (("spars", ["Front", "Rear"]), ("ribs", ["Ribs"]), ("cells", ["UpperCell"]),
                          ("all", ["Front", "Rear", "Ribs", "UpperCell"])):
         write_png(render(groups, opaque), os.path.join(images, f"structure-{name}.png"))
+    # The example aircraft's fuselage structure and wing fuel tanks, in their ghosted body.
+    groups = exported(AIRLINER, ["Fuselage", "Rear_Bulkhead", "Cargo_Door"], 0.05)
+    write_png(render(groups, ["Rear_Bulkhead", "Cargo_Door"], azimuth=-60, elevation=15),
+              os.path.join(images, "structure-fuselage.png"))
+    groups = exported(AIRLINER, ["Wing", "Wing_InnerTank", "Wing_OuterTank"], 0.02)
+    write_png(render(groups, ["Wing_InnerTank", "Wing_OuterTank"], azimuth=-20, elevation=50),
+              os.path.join(images, "structure-tanks.png"))
     return 0
 
 
