@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -52,6 +55,23 @@ bool betweenStringers(const FuselageFrame& fuselage, const StringerPath& first, 
   return width >= 0.0 ? turn > 0.0 && turn < width : turn < 0.0 && turn > width;
 }
 
+/// Whether a face's box reaches between two stations (fuselage x): the skin faces a door can
+/// lie on, the only ones worth splitting.
+bool reachesStations(const FuselageFrame& fuselage, const TopoDS_Face& face, double fromX, double toX) {
+  Bnd_Box box;
+  BRepBndLib::Add(face, box);
+  double xMin = 0, yMin = 0, zMin = 0, xMax = 0, yMax = 0, zMax = 0;
+  box.Get(xMin, yMin, zMin, xMax, yMax, zMax);
+  double low = std::numeric_limits<double>::max(), high = std::numeric_limits<double>::lowest();
+  for (const double x : {xMin, xMax})
+    for (const double y : {yMin, yMax})
+      for (const double z : {zMin, zMax}) {
+        const double local = fuselage.toLocal(gp_Pnt(x, y, z)).X();
+        low = std::min(low, local), high = std::max(high, local);
+      }
+  return high >= fromX && low <= toX;
+}
+
 /// The frame's station (fuselage x); `field` names the reference in the door.
 double frameStation(const FuselageFrame& fuselage, const FuselageElement<schema::DoorAssemblyPositionType>& door,
                     const std::string& frameUid, const std::string& field) {
@@ -78,7 +98,8 @@ NamedShape fuselageDoor(const Configuration& configuration, const std::string& u
   // The skin split by the two frame planes and the two stringers' swept surfaces, which run a
   // little beyond the frames so that the cuts meet.
   TopTools_ListOfShape arguments, tools;
-  for (const TopoDS_Face& face : fuselage.skinFaces()) arguments.Append(face);
+  for (const TopoDS_Face& face : fuselage.skinFaces())
+    if (reachesStations(fuselage, face, fromX, toX)) arguments.Append(face);
   const double reach = fuselage.reach();
   for (const double x : {fromX, toX})
     tools.Append(BRepBuilderAPI_MakeFace(gp_Pln(fuselage.toGlobal(gp_Pnt(x, 0, 0)), fuselage.toGlobal(gp_Dir(1, 0, 0))),
