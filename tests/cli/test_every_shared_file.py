@@ -18,6 +18,7 @@ KNOWN = [
     # Structure not built yet, or defined so that it cannot be (docs/structure.md).
     "not built yet",
     "a rib does not meet spar",
+    "does not cross its component segment",  # D150 HTP_R1: a root rib square to a swept spar runs inboard of the root
     "the cell covers no skin",
     "no run of segments joins elements",
     "is not one given by eta and xsi",
