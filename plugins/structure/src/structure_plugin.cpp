@@ -38,7 +38,7 @@ class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
       : BasicPlugin(
-            "structure", "0.5.0",
+            "structure", "0.6.0",
             "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, frames and stringers (lines), "
             "pressure bulkheads, doors, walls, cross beams, struts and long floor beams",
             {{"sparSegment", ""},
