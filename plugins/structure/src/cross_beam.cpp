@@ -1,19 +1,19 @@
 #include "cross_beam.h"
 
 #include <cmath>
+#include <vector>
 
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
-#include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
-#include <vector>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "compounds.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 
@@ -21,28 +21,13 @@ namespace airshape::structure {
 
 namespace {
 
-/// The edges of `shape` gathered into an edge shape.
-NamedShape edgesOf(const TopoDS_Shape& shape) {
-  BRep_Builder builder;
-  TopoDS_Compound compound;
-  builder.MakeCompound(compound);
-  for (TopExp_Explorer edge(shape, TopAbs_EDGE); edge.More(); edge.Next()) builder.Add(compound, edge.Current());
-  NamedShape named;
-  named.shape = compound;
-  return named;
-}
-
 /// The cross beam's axis in the global frame.
 TopoDS_Shape beamAxis(const Configuration& configuration,
                       const FuselageElement<schema::CrossBeamAssemblyPositionType>& beam) {
   const schema::FrameType& frame = frameNamed(*beam.structure, beam.node->frameUID, beam.node->xpath + "/frameUID");
   const FuselageFrame fuselage(configuration, *beam.fuselage);
   const gp_Pln station = fuselage.station(frame);
-  BRep_Builder builder;
-  TopoDS_Compound section;
-  builder.MakeCompound(section);
-  for (const TopoDS_Face& face : fuselage.crossSection(station.Location(), station.Axis().Direction()))
-    builder.Add(section, face);
+  const TopoDS_Compound section = compoundOf(fuselage.crossSection(station.Location(), station.Axis().Direction()));
   const gp_Pln level(fuselage.toGlobal(gp_Pnt(0, 0, beam.node->positionZ)), fuselage.toGlobal(gp_Dir(0, 0, 1)));
   BRepAlgoAPI_Section cut(section, BRepBuilderAPI_MakeFace(level, -fuselage.reach(), fuselage.reach(),
                                                            -fuselage.reach(), fuselage.reach()));
@@ -100,13 +85,11 @@ NamedShape longFloorBeam(const Configuration& configuration, const std::string& 
   for (const schema::LongFloorBeamPositionType& position : positions)
     points.push_back(pointOnBeam(configuration, fuselage, crossBeamNamed(configuration, position.crossBeamUID),
                                  position.positionY, position.xpath + "/positionY"));
-  BRep_Builder builder;
-  TopoDS_Compound axis;
-  builder.MakeCompound(axis);
+  std::vector<TopoDS_Shape> pieces;
   for (std::size_t k = 1; k < points.size(); ++k)
     if (!points[k].IsEqual(points[k - 1], 1e-9 * fuselage.reach()))
-      builder.Add(axis, BRepBuilderAPI_MakeEdge(points[k - 1], points[k]).Edge());
-  return edgesOf(axis);
+      pieces.push_back(BRepBuilderAPI_MakeEdge(points[k - 1], points[k]).Edge());
+  return edgesOf(compoundOf(pieces));
 }
 
 }  // namespace airshape::structure

@@ -24,12 +24,10 @@ FuselageFrame::FuselageFrame(const Configuration& configuration, const schema::F
 
 FuselageFrame::FuselageFrame(const Configuration& configuration, const std::string& hostUid,
                              const schema::FuselageType* body, const model::Transform& toGlobal)
-    : configuration_(configuration),
-      body_(body),
-      toGlobal_(toGlobal),
-      solid_(configuration.shapes().namedShapeOf(configuration, hostUid).shape) {
-  const std::string skin = "/skin";
+    : configuration_(configuration), body_(body), toGlobal_(toGlobal) {
   const NamedShape& host = configuration.shapes().namedShapeOf(configuration, hostUid);
+  solid_ = host.shape;
+  const std::string skin = "/skin";
   for (const auto& [name, face] : host.faces)
     if (name.size() >= skin.size() && name.compare(name.size() - skin.size(), skin.size(), skin) == 0)
       skin_.push_back(face);
@@ -54,7 +52,7 @@ gp_Pnt FuselageFrame::toLocal(const gp_Pnt& point) const { return model::apply(t
 
 double FuselageFrame::localReach() const { return reach_ / toGlobal_.linear().jacobiSvd().singularValues().minCoeff(); }
 
-std::vector<TopoDS_Face> FuselageFrame::skinFaces() const { return skin_; }
+const std::vector<TopoDS_Face>& FuselageFrame::skinFaces() const { return skin_; }
 
 gp_Dir FuselageFrame::toGlobal(const gp_Dir& direction) const {
   const Eigen::Vector3d d = toGlobal_.linear() * Eigen::Vector3d(direction.X(), direction.Y(), direction.Z());
@@ -115,16 +113,22 @@ double FuselageFrame::positionX(const schema::StringerFramePositionType& positio
               where);
 }
 
+const schema::StringerFramePositionType* FuselageFrame::offFirstStation(const schema::FrameType& frame) const {
+  if (frame.framePosition.size() == 0) return nullptr;
+  const double x = positionX(frame.framePosition[0]);
+  for (const schema::StringerFramePositionType& position : frame.framePosition)
+    if (std::abs(positionX(position) - x) > 1e-9 * std::max(1.0, std::abs(x))) return &position;
+  return nullptr;
+}
+
 double FuselageFrame::stationX(const schema::FrameType& frame) const {
   if (frame.framePosition.size() == 0)
     throw Error(ErrorCode::InvalidModel, "the frame has no frame position", {}, frame.xpath);
-  const double x = positionX(frame.framePosition[0]);
-  for (const schema::StringerFramePositionType& position : frame.framePosition)
-    if (std::abs(positionX(position) - x) > 1e-9 * std::max(1.0, std::abs(x)))
-      throw Error(ErrorCode::NotImplemented,
-                  "the frame's positions lie at different stations (a riffled frame): it has no plane station", {},
-                  position.xpath);
-  return x;
+  if (const auto* off = offFirstStation(frame))
+    throw Error(ErrorCode::NotImplemented,
+                "the frame's positions lie at different stations (a riffled frame): it has no plane station", {},
+                off->xpath);
+  return positionX(frame.framePosition[0]);
 }
 
 gp_Pln FuselageFrame::station(const schema::FrameType& frame) const {

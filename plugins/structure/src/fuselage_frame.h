@@ -48,12 +48,15 @@ class FuselageFrame {
   double localReach() const;
   /// The faces of the fuselage's skin (its shape's faces named `.../skin`, no end caps; all the
   /// faces of a body that names none so, as a tank's vessel).
-  std::vector<TopoDS_Face> skinFaces() const;
+  const std::vector<TopoDS_Face>& skinFaces() const;
 
   /// A stringer or frame position's station: its positionX, or the x (fuselage coordinates) of
   /// the centre of the section its section element belongs to. Throws Error naming the position
   /// for an element the body does not have.
   double positionX(const schema::StringerFramePositionType& position) const;
+  /// The first position of a frame that lies at another station than its first position (a
+  /// riffled frame), or null when all share one.
+  const schema::StringerFramePositionType* offFirstStation(const schema::FrameType& frame) const;
   /// The station of a frame whose positions all lie at one x (fuselage coordinates); throws Error
   /// naming the frame for a frame without positions and the position for a riffled frame.
   double stationX(const schema::FrameType& frame) const;

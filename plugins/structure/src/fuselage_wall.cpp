@@ -11,18 +11,17 @@
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepFill.hxx>
-#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pln.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "compounds.h"
 #include "faces_inside.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
@@ -181,14 +180,6 @@ WallLayout layoutOf(const Configuration& configuration, const FuselageElement<sc
                                   upper[k].Translated(before), upper[k + 1].Translated(after)));
   }
   return layout;
-}
-
-TopoDS_Compound compoundOf(const std::vector<TopoDS_Face>& faces) {
-  BRep_Builder builder;
-  TopoDS_Compound compound;
-  builder.MakeCompound(compound);
-  for (const TopoDS_Face& face : faces) builder.Add(compound, face);
-  return compound;
 }
 
 bool touches(const TopoDS_Face& face, const gp_Pnt& point) {

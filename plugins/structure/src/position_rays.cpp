@@ -107,12 +107,4 @@ std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema:
   return faces;
 }
 
-bool isRiffled(const FuselageFrame& fuselage, const schema::FrameType& frame) {
-  if (frame.framePosition.size() == 0) return false;
-  const double x = fuselage.positionX(frame.framePosition[0]);
-  for (const schema::StringerFramePositionType& position : frame.framePosition)
-    if (std::abs(fuselage.positionX(position) - x) > 1e-9 * std::max(1.0, std::abs(x))) return true;
-  return false;
-}
-
 }  // namespace airshape::structure

@@ -56,7 +56,4 @@ class StringerPath {
 /// positions share it, corrugated for a riffled frame), in the global frame.
 std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema::FrameType& frame, double length);
 
-/// Whether the frame's positions lie at more than one station (a riffled frame).
-bool isRiffled(const FuselageFrame& fuselage, const schema::FrameType& frame);
-
 }  // namespace airshape::structure

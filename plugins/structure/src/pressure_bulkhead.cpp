@@ -5,11 +5,10 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeHalfSpace.hxx>
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "compounds.h"
 #include "faces_inside.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
@@ -41,11 +40,7 @@ std::vector<TopoDS_Face> sectionPart(const FuselageFrame& fuselage, const schema
                 frame.xpath);
   const TopoDS_Face cut = BRepBuilderAPI_MakeFace(gp_Pln(hits.front(), gp_Dir(chord.Crossed(gp_Vec(normal)))));
   const TopoDS_Shape side = BRepPrimAPI_MakeHalfSpace(cut, hits[1]).Solid();
-  BRep_Builder builder;
-  TopoDS_Compound section;
-  builder.MakeCompound(section);
-  for (const TopoDS_Face& face : fuselage.crossSection(hits.front(), normal)) builder.Add(section, face);
-  return facesInside(section, side);
+  return facesInside(compoundOf(fuselage.crossSection(hits.front(), normal)), side);
 }
 
 }  // namespace
@@ -57,12 +52,8 @@ NamedShape pressureBulkhead(const Configuration& configuration, const std::strin
   const FuselageFrame fuselage(configuration, *bulkhead.fuselage);
   std::vector<TopoDS_Face> faces;
   try {
-    if (isRiffled(fuselage, frame)) {
-      BRep_Builder builder;
-      TopoDS_Compound sweep;
-      builder.MakeCompound(sweep);
-      for (const TopoDS_Face& face : frameSweep(fuselage, frame, fuselage.localReach())) builder.Add(sweep, face);
-      faces = facesInside(sweep, fuselage.solid());
+    if (fuselage.offFirstStation(frame) != nullptr) {
+      faces = facesInside(compoundOf(frameSweep(fuselage, frame, fuselage.localReach())), fuselage.solid());
     } else if (frame.framePosition.size() > 1) {
       faces = sectionPart(fuselage, frame);
     } else {

@@ -2,11 +2,10 @@
 
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "airshape/error.h"
+#include "compounds.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "position_rays.h"
@@ -14,15 +13,6 @@
 namespace airshape::structure {
 
 namespace {
-
-template <class Faces>
-TopoDS_Compound compoundOf(const Faces& faces) {
-  BRep_Builder builder;
-  TopoDS_Compound compound;
-  builder.MakeCompound(compound);
-  for (const auto& face : faces) builder.Add(compound, face);
-  return compound;
-}
 
 /// Where the tool faces meet the fuselage's skin, as an edge shape; throws Error naming `where`
 /// when they do not meet.
@@ -33,16 +23,9 @@ NamedShape onSkin(const FuselageFrame& fuselage, const std::vector<TopoDS_Face>&
   section.Build();
   if (!section.IsDone() || section.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the line on the fuselage's skin cannot be found", {}, where);
-  BRep_Builder builder;
-  TopoDS_Compound edges;
-  builder.MakeCompound(edges);
-  bool any = false;
-  for (TopExp_Explorer edge(section.Shape(), TopAbs_EDGE); edge.More(); edge.Next(), any = true)
-    builder.Add(edges, edge.Current());
-  if (!any) throw Error(ErrorCode::InvalidModel, "the positions' rays do not meet the fuselage's skin", {}, where);
-  NamedShape shape;
-  shape.shape = edges;
-  return shape;
+  if (!TopExp_Explorer(section.Shape(), TopAbs_EDGE).More())
+    throw Error(ErrorCode::InvalidModel, "the positions' rays do not meet the fuselage's skin", {}, where);
+  return edgesOf(section.Shape());
 }
 
 }  // namespace
