@@ -10,6 +10,7 @@
 #include "airshape/error.h"
 #include "faces_inside.h"
 #include "spar_list.h"
+#include "spar_web.h"
 
 namespace airshape::structure {
 
@@ -56,31 +57,31 @@ gp_Pnt RibCutter::pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
 
 std::vector<gp_Pnt> RibCutter::sparSection(const std::string& spar, const gp_Pln& plane,
                                            const std::string& where) const {
-  // The spar's web is a vertical plane piece between each two of its positions (spar_web.cpp),
-  // carried on beyond the component segment's ends: where the plane meets it is a straight
-  // line, found without cutting the web (a Boolean section of the web cost 20 ms a rib).
-  SparSegment segment;
-  std::vector<gp_Pnt> points;
-  std::vector<double> etas;
-  try {
-    segment = sparSegmentNamed(configuration_, spar);
-    for (const SparPosition& position : segment.positions) {
-      const gp_Pnt point = frame_.positionPoint(position);
-      points.push_back(frame_.toGlobal(point));
-      etas.push_back(frame_.etaOf(point));
+  // The spar's web stands in its wall, a plane piece between each two of its positions
+  // (spar_web.cpp): where the plane meets it is a straight line, found without cutting the web
+  // (a Boolean section of the web cost 20 ms a rib).
+  auto known = walls_.find(spar);
+  if (known == walls_.end()) {
+    try {
+      known = walls_
+                  .emplace(spar, sparWall(configuration_, frame_.wing(), frame_, sparSegmentNamed(configuration_, spar),
+                                          SparWall::Ends::CarriedAtComponentSegmentEnds))
+                  .first;
+    } catch (const Error& error) {
+      throw Error(error.code(), "spar '" + spar + "': " + error.message(), {}, where);
     }
-  } catch (const Error& error) {
-    throw Error(error.code(), "spar '" + spar + "': " + error.message(), {}, where);
   }
-  const gp_Vec up = frame_.toGlobal(gp_Vec(0, 0, 1)).Normalized();
+  const SparWall& wall = known->second;
+  const std::vector<gp_Pnt>& points = wall.points;
+  const gp_Vec& up = wall.up;
   const gp_Vec normal(plane.Axis().Direction());
   for (std::size_t i = 1; i < points.size(); ++i) {
     const gp_Vec piece(points[i - 1], points[i]);
     const double across = piece.Dot(normal);
     if (std::abs(across) < 1e-12 * piece.Magnitude()) continue;  // the piece runs along the plane
     const double t = gp_Vec(points[i - 1], plane.Location()).Dot(normal) / across;
-    const bool carriedBefore = i == 1 && etas.front() <= 1e-7,
-               carriedAfter = i + 1 == points.size() && etas.back() >= 1.0 - 1e-7;
+    const bool carriedBefore = i == 1 && wall.carriedBeforeFirst,
+               carriedAfter = i + 1 == points.size() && wall.carriedAfterLast;
     if ((t < -1e-9 && !carriedBefore) || (t > 1.0 + 1e-9 && !carriedAfter)) continue;
     const gp_Pnt crossing = points[i - 1].Translated(t * piece);
     gp_Vec along = normal.Crossed(piece.Crossed(up));

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,7 @@
 
 #include "airshape/schema/generated/cpacs_model.h"
 #include "polyline.h"
+#include "spar_web.h"
 #include "structure_frame.h"
 
 namespace airshape::structure {
@@ -63,6 +65,8 @@ class RibCutter {
 
   const Configuration& configuration_;
   const StructureFrame& frame_;
+  /// The walls of the spars ribs have met, by spar uID: placed once for a whole rib set.
+  mutable std::map<std::string, SparWall> walls_;
   const schema::WingComponentSegmentStructureType& structure_;
   double reach_;
 };

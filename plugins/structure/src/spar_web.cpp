@@ -75,8 +75,11 @@ SparWall sparWall(const Configuration& configuration, const wing::WingServices& 
     const bool beyondInner = (always && i == 1) || inner.eta <= 1e-7;
     const bool beyondOuter = (always && i + 1 == placedPositions.size()) || outer.eta >= 1.0 - 1e-7;
     wall.faces.push_back(wallFace(inner.point, outer.point, beyondInner, beyondOuter, up, reach));
+    if (i == 1) wall.carriedBeforeFirst = beyondInner;
+    if (i + 1 == placedPositions.size()) wall.carriedAfterLast = beyondOuter;
   }
   for (const PlacedPosition& position : placedPositions) wall.points.push_back(position.point);
+  wall.up = up;
   return wall;
 }
 

@@ -4,6 +4,7 @@
 
 #include <TopoDS_Face.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
 
 #include "airshape/named_shape.h"
 #include "airshape/wing/wing_services.h"
@@ -14,15 +15,18 @@ namespace airshape::structure {
 class StructureFrame;
 
 /// The surface a spar segment stands in, reaching across its component segment's solid: for
-/// each two consecutive spar positions, the ruled face through the lines along the wing's up
+/// each two consecutive spar positions, the plane face through the lines along the wing's up
 /// direction (its own z axis) at the positions' points on the chord surface, reaching the
 /// frame's reach above and below. Its first and last face are carried the reach beyond their
 /// end where the spar ends at the component segment's inner or outer end (eta 0 or 1), or at
-/// every end when the wall bounds a region (a fuel tank). The points are in the global frame.
+/// every end when the wall bounds a region (a fuel tank). The points and `up` are in the global
+/// frame.
 struct SparWall {
   enum class Ends { CarriedAtComponentSegmentEnds, AlwaysCarried };
   std::vector<gp_Pnt> points;
   std::vector<TopoDS_Face> faces;
+  gp_Vec up;
+  bool carriedBeforeFirst = false, carriedAfterLast = false;
 };
 SparWall sparWall(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
                   const SparSegment& spar, SparWall::Ends ends);

@@ -59,6 +59,7 @@ class StructureFrame {
   double reach() const;
 
   const std::string& componentSegmentUid() const { return componentSegmentUid_; }
+  const wing::WingServices& wing() const { return wing_; }
 
  private:
   Polyline edgeLine(double xsi) const;
