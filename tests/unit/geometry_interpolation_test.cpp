@@ -8,6 +8,7 @@
 #include "airshape/geometry/compatibility.h"
 #include "airshape/geometry/curve_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/skinning.h"
 
 namespace airshape::geometry {
 namespace {
@@ -185,6 +186,41 @@ TEST(Compatibility, PeriodicAndClampedCurvesMix) {
     EXPECT_LT(curves[0]->Value(t).Distance(periodic->Value(t)), 1e-12);
     EXPECT_LT(curves[1]->Value(t).Distance(clamped->Value(t)), 1e-12);
   }
+}
+
+/// A closed band about the z axis through rings at the given heights, sampled at `around`
+/// angles, periodic around with the given degree.
+Handle(Geom_BSplineSurface) band(int around, int degreeAround) {
+  const std::vector<double> heights{0.0, 0.5, 1.0};
+  std::vector<double> turns;
+  for (int j = 0; j <= around; ++j) turns.push_back(static_cast<double>(j) / around);
+  // Rows around (the closing turn belongs to no row), each up the heights.
+  std::vector<std::vector<gp_Pnt>> rows;
+  for (int j = 0; j < around; ++j) {
+    rows.emplace_back();
+    for (double h : heights)
+      rows.back().emplace_back((1 + 0.2 * h) * std::cos(2 * M_PI * turns[j]),
+                               (1 + 0.2 * h) * std::sin(2 * M_PI * turns[j]), h);
+  }
+  return interpolateGrid(rows, heights, skinningSpace(heights, 2, false), turns,
+                         skinningSpace(turns, degreeAround, true));
+}
+
+TEST(Compatibility, PeriodicSurfacesWhosePeriodsStartApartShareOneRange) {
+  // Three sites around at degree 2 put the period's knots at 1/6, 1/2, 5/6 (from 1/6 to 7/6);
+  // twelve at degree 3 start it at 0. Made compatible, both run over one range.
+  const Handle(Geom_BSplineSurface) few = band(3, 2), many = band(12, 3);
+  std::vector<Handle(Geom_BSplineSurface)> surfaces = {Handle(Geom_BSplineSurface)::DownCast(few->Copy()),
+                                                       Handle(Geom_BSplineSurface)::DownCast(many->Copy())};
+  makeCompatible(surfaces);
+  ASSERT_EQ(surfaces[0]->NbVKnots(), surfaces[1]->NbVKnots());
+  for (int i = 1; i <= surfaces[0]->NbVKnots(); ++i) EXPECT_NEAR(surfaces[0]->VKnot(i), surfaces[1]->VKnot(i), 1e-12);
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const double u = i / 10.0, v = j / 40.0;
+      EXPECT_LT(surfaces[0]->Value(u, v).Distance(few->Value(u, v)), 1e-12);
+      EXPECT_LT(surfaces[1]->Value(u, v).Distance(many->Value(u, v)), 1e-12);
+    }
 }
 
 }  // namespace

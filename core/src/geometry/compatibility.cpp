@@ -66,6 +66,42 @@ void insertMissing(Geom_BSplineSurface& surface, const KnotUnion& all, bool uDir
   }
 }
 
+/// Moves the start of a periodic direction to `start` (the same surface, its period counted
+/// from there), so that periodic surfaces whose periods begin elsewhere share one range.
+void startPeriodAt(Geom_BSplineSurface& surface, bool uDirection, double start) {
+  if (!(uDirection ? surface.IsUPeriodic() : surface.IsVPeriodic())) return;
+  double u0, u1, v0, v1;
+  surface.Bounds(u0, u1, v0, v1);
+  const double first = uDirection ? u0 : v0, period = uDirection ? u1 - u0 : v1 - v0;
+  if (std::abs(first - start) <= kKnotTolerance) return;
+  // The knot where the new period starts, within the current one.
+  double knot = start + std::ceil((first - start) / period) * period;
+  if (knot >= first + period - kKnotTolerance) knot -= period;
+  if (uDirection) {
+    surface.InsertUKnot(knot, 1, kKnotTolerance, false);
+    int index = 1;
+    while (std::abs(surface.UKnot(index) - knot) > kKnotTolerance) ++index;
+    surface.SetUOrigin(index);
+  } else {
+    surface.InsertVKnot(knot, 1, kKnotTolerance, false);
+    int index = 1;
+    while (std::abs(surface.VKnot(index) - knot) > kKnotTolerance) ++index;
+    surface.SetVOrigin(index);
+  }
+  const int count = uDirection ? surface.NbUKnots() : surface.NbVKnots();
+  TColStd_Array1OfReal knots(1, count);
+  if (uDirection)
+    surface.UKnots(knots);
+  else
+    surface.VKnots(knots);
+  const double shift = start - knots(1);
+  for (int i = 1; i <= count; ++i) knots(i) += shift;
+  if (uDirection)
+    surface.SetUKnots(knots);
+  else
+    surface.SetVKnots(knots);
+}
+
 }  // namespace
 
 void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
@@ -107,8 +143,12 @@ void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces) {
     uDegree = std::max(uDegree, surface->UDegree());
     vDegree = std::max(vDegree, surface->VDegree());
   }
+  double u0, u1, v0, v1;
+  surfaces.front()->Bounds(u0, u1, v0, v1);
   KnotUnion uKnots, vKnots;
   for (auto& surface : surfaces) {
+    startPeriodAt(*surface, true, u0);
+    startPeriodAt(*surface, false, v0);
     surface->IncreaseDegree(uDegree, vDegree);
     for (int i = 1; i <= surface->NbUKnots(); ++i) uKnots.add(surface->UKnot(i), surface->UMultiplicity(i));
     for (int i = 1; i <= surface->NbVKnots(); ++i) vKnots.add(surface->VKnot(i), surface->VMultiplicity(i));
