@@ -69,17 +69,27 @@ def test_one_section_nacelles_are_bodies_of_revolution():
 
 def test_sections_lofted_around_the_engine():
     path = ENGINES
-    revolved, lofted, box = ask(path, {"op": "component_volume", "uid": "Low"},
-                                {"op": "component_volume", "uid": "Lofted"}, {"op": "bounding_box", "uid": "Lofted"})
-    # Three equal sections at 0°, 120° and 240°: the loft around the engine is the body of
-    # revolution of one, up to the interpolation between the sampled angles.
-    assert math.isclose(lofted, revolved, rel_tol=1e-4)
-    assert math.isclose(box["max"][1] - 20, 20 - box["min"][1], rel_tol=1e-4)
+    revolved, lofted, box, revolved_box, pulled = ask(
+        path, {"op": "component_volume", "uid": "Low"}, {"op": "component_volume", "uid": "Lofted"},
+        {"op": "bounding_box", "uid": "Lofted"}, {"op": "bounding_box", "uid": "Low"},
+        {"op": "bounding_box", "uid": "Chevron"})
+    # Three equal sections at 0°, 120° and 240°: the Gordon surface runs through each section
+    # (the one at 0° on top gives the box's top, as the body of revolution of one does) ...
+    assert math.isclose(box["max"][2], revolved_box["max"][2], abs_tol=1e-5)
+    # ... symmetric about the x-z plane (the sections at 120° and 240° mirror each other) ...
+    assert math.isclose(box["max"][1] - 20, 20 - box["min"][1], rel_tol=1e-6)
+    # ... and between its guides it follows the sections' interpolation around the engine,
+    # which falls inside the circle: less volume than the body of revolution.
+    assert lofted < revolved * 0.95
+    # A guide curve profile with rY = −0.1 at rX = 0.5 pulls the leading edge forward by
+    # 0.1 chord (0.2 m) half way between the first two sections (placed at x = 25 + 1).
+    assert math.isclose(pulled["min"][0], 26 - 0.2, abs_tol=5e-3)
+    assert math.isclose(box["min"][0], 21, abs_tol=5e-3)
 
 
 def test_an_engine_without_nacelle_has_no_shape():
     error = error_of("Hollow")
-    assert "has no nacelle" in error and "vehicles/engines/engine[5]" in error
+    assert "has no nacelle" in error and "vehicles/engines/engine[6]" in error
 
 
 def test_configuration_length_leaves_nacelles_and_empty_pylons_out():

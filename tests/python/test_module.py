@@ -277,7 +277,7 @@ def test_engines_and_pylons_as_components():
     config = airshape.Configuration.open(os.path.join(SOURCE, "tests", "data", "wing-with-engines.xml"))
     engines = {engine.uid: engine for engine in config.engines}
     pylons = {pylon.uid: pylon for pylon in config.pylons}
-    assert sorted(engines) == ["High", "Hollow", "Lofted", "Low", "Spun"] and sorted(pylons) == ["Bare", "Pylon"]
+    assert sorted(engines) == ["Chevron", "High", "Hollow", "Lofted", "Low", "Spun"] and sorted(pylons) == ["Bare", "Pylon"]
     # The tapered pylon: chord 1 to 3 over 2 m of the parabolic airfoil (area 0.05 c²).
     assert pylons["Pylon"].volume == pytest.approx(0.05 * 26 / 3, rel=1e-9)
     assert engines["Low"].type == "engine_nacelle" and engines["Low"].volume > 0

@@ -8,101 +8,98 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepFill.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Precision.hxx>
-#include <TopExp_Explorer.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
+#include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
-#include <gp_Trsf.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/geometry/curve_interpolation.h"
-#include "airshape/geometry/skinning.h"
+#include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/curve_concatenation.h"
+#include "airshape/geometry/gordon_surface.h"
 #include "airshape/named_shape.h"
+#include "cowl_guides.h"
 #include "cowl_parts.h"
+#include "nacelle_profile.h"
 
 namespace airshape::nacelle {
 
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
-/// Samples along the profile per unit of zeta, and across each sector between two sections.
-constexpr int kZetaSamples = 20;
-constexpr int kSectorSamples = 8;
+/// Largest gap where a section's outline and a guide cross (they are built to meet exactly).
+constexpr double kCrossingGap = 1e-6;
 
-/// A point in the nacelle's cylindrical coordinates.
-struct Cylindrical {
-  double x, r;
-};
+/// The angle of a point about the x axis, as the sections' angles count it (0 at +z, 90° at −y), radians.
+double angleOf(const gp_Pnt& p) { return std::atan2(-p.Y(), p.Z()); }
 
-Cylindrical cylindrical(const gp_Pnt& p) { return {p.X(), std::hypot(p.Y(), p.Z())}; }
-gp_Pnt cartesian(double x, double r, double degrees) {
-  return gp_Pnt(x, -r * std::sin(degrees * kDegree), r * std::cos(degrees * kDegree));
+/// A copy of the curve whose parameters run linearly over [start, start + span].
+Handle(Geom_BSplineCurve) onRange(const Handle(Geom_BSplineCurve) & curve, double start, double span) {
+  Handle(Geom_BSplineCurve) moved = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  TColStd_Array1OfReal knots(1, moved->NbKnots());
+  moved->Knots(knots);
+  const double first = moved->FirstParameter(), scale = span / (moved->LastParameter() - first);
+  for (int i = knots.Lower(); i <= knots.Upper(); ++i) knots(i) = start + (knots(i) - first) * scale;
+  moved->SetKnots(knots);
+  return moved;
 }
 
-/// The zetas of one stretch of the outline, from `from` to `to`, evenly spaced.
-std::vector<double> zetasBetween(double from, double to) {
-  const int count = std::max(4, static_cast<int>(std::ceil(std::abs(to - from) * kZetaSamples)));
-  std::vector<double> zetas;
-  for (int i = 0; i <= count; ++i) zetas.push_back(from + (to - from) * i / count);
-  return zetas;
-}
-
-/// A section's outline at a stretch's zetas, in cylindrical coordinates.
-using Samples = std::vector<Cylindrical>;
-
-Samples sampled(const PlacedProfile& section, const std::vector<double>& zetas) {
-  Samples samples;
-  for (double zeta : zetas) samples.push_back(cylindrical(section.at(zeta)));
-  return samples;
-}
-
-/// The surface through a stretch of the outline swept from section a (samples atA) to section b.
-TopoDS_Face sectorFace(const Samples& atA, const Samples& atB, double angleA, double angleB) {
-  std::vector<std::vector<gp_Pnt>> grid;
-  std::vector<double> across;
-  for (int j = 0; j <= kSectorSamples; ++j) {
-    const double u = static_cast<double>(j) / kSectorSamples, step = u * u * (3.0 - 2.0 * u);
-    const double angle = angleA + u * (angleB - angleA);
-    across.push_back(u);
-    grid.emplace_back();
-    for (std::size_t l = 0; l < atA.size(); ++l)
-      grid.back().push_back(
-          cartesian(atA[l].x + step * (atB[l].x - atA[l].x), atA[l].r + step * (atB[l].r - atA[l].r), angle));
+/// A section's outline without the blending part, as the outer surface runs through it: from
+/// endZetaBlending over the leading edge and the upper side, along a blunt trailing edge, and
+/// on the lower side up to startZetaBlending.
+Handle(Geom_BSplineCurve) outline(const PlacedProfile& section, double startBlend, double endBlend) {
+  const Handle(Geom_BSplineCurve)& lower = section.lower;
+  std::vector<Handle(Geom_BSplineCurve)> pieces{
+      curvePiece(lower, parameterAtLengthShare(lower, endBlend + 1.0), lower->LastParameter()), section.upper};
+  // A blunt trailing edge's line gets parameter room by its length, as little as it is.
+  const gp_Pnt upperEnd = section.upper->EndPoint(), lowerStart = lower->StartPoint();
+  if (upperEnd.Distance(lowerStart) > Precision::Confusion())
+    pieces.push_back(onRange(geometry::straightLine(upperEnd, lowerStart), 0.0, upperEnd.Distance(lowerStart)));
+  pieces.push_back(curvePiece(lower, lower->FirstParameter(), parameterAtLengthShare(lower, startBlend + 1.0)));
+  double end = 0.0;
+  for (auto& piece : pieces) {
+    piece = onRange(piece, end, piece->LastParameter() - piece->FirstParameter());
+    end = piece->LastParameter();
   }
-  // Evenly spaced zetas, evenly spaced parameters (also for the trailing edge's two ends).
-  std::vector<double> along;
-  for (std::size_t l = 0; l < atA.size(); ++l) along.push_back(static_cast<double>(l) / (atA.size() - 1));
-  const Handle(Geom_BSplineSurface) surface = geometry::interpolateGrid(
-      grid, along, geometry::skinningSpace(along, 3, false), across, geometry::skinningSpace(across, 3, false));
-  return BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face();
+  return geometry::concatenateCurves(pieces);
 }
 
-/// The arc of radius r about the x axis at axial position x from one angle to another.
-Handle(Geom_Curve) arc(double x, double r, double from, double to) {
-  const gp_Ax2 axes(gp_Pnt(x, 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1));
-  return new Geom_TrimmedCurve(new Geom_Circle(axes, r), from * kDegree, to * kDegree);
+/// The full circle about the x axis through `point`, starting at the angle `from` (radians) and
+/// running the way of rising angles, or of falling ones when `rising` is false.
+Handle(Geom_Curve) circleThrough(const gp_Pnt& point, double from, bool rising) {
+  const gp_Ax2 axes(gp_Pnt(point.X(), 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1));
+  Handle(Geom_TrimmedCurve) circle =
+      new Geom_TrimmedCurve(new Geom_Circle(axes, std::hypot(point.Y(), point.Z())), from, from + 2.0 * M_PI);
+  if (!rising) circle->Reverse();
+  return circle;
 }
 
-/// The ruled face between an outline point's path across a sector and an arc of the inner side.
-TopoDS_Face blendingFace(const Cylindrical& pa, const Cylindrical& pb, double angleA, double angleB,
-                         const gp_Pnt& innerEnd) {
-  // The outline point's path: the sector's motion of that one point, sampled and interpolated.
-  std::vector<gp_Pnt> points;
-  std::vector<double> parameters;
-  for (int j = 0; j <= kSectorSamples; ++j) {
-    const double u = static_cast<double>(j) / kSectorSamples, step = u * u * (3.0 - 2.0 * u);
-    points.push_back(
-        cartesian(pa.x + step * (pb.x - pa.x), pa.r + step * (pb.r - pa.r), angleA + u * (angleB - angleA)));
-    parameters.push_back(u);
+/// The ruled face between the outer surface's boundary at `u` (a closed curve around the
+/// engine) and the inner side's circle through `innerEnd`, both run the same way round.
+TopoDS_Face blendingFace(const Handle(Geom_BSplineSurface) & outer, double u, const gp_Pnt& innerEnd) {
+  const Handle(Geom_Curve) boundary = outer->UIso(u);
+  const double first = boundary->FirstParameter(), last = boundary->LastParameter();
+  const double start = angleOf(boundary->Value(first));
+  const double quarter = std::remainder(angleOf(boundary->Value(first + (last - first) / 4.0)) - start, 2.0 * M_PI);
+  return BRepFill::Face(BRepBuilderAPI_MakeEdge(boundary).Edge(),
+                        BRepBuilderAPI_MakeEdge(circleThrough(innerEnd, start, quarter > 0.0)).Edge());
+}
+
+/// The inner side: the rotation curve revolved once about the x axis, its seam at `angle` (radians).
+TopoDS_Face innerFace(const Handle(Geom_BSplineCurve) & inner, double angle) {
+  Handle(Geom_BSplineCurve) meridian = Handle(Geom_BSplineCurve)::DownCast(inner->Copy());
+  for (int i = 1; i <= meridian->NbPoles(); ++i) {
+    const gp_Pnt p = meridian->Pole(i);
+    const double r = std::hypot(p.Y(), p.Z());
+    meridian->SetPole(i, gp_Pnt(p.X(), -r * std::sin(angle), r * std::cos(angle)));
   }
-  const Cylindrical inner = cylindrical(innerEnd);
-  const TopoDS_Edge outerEdge = BRepBuilderAPI_MakeEdge(geometry::interpolateCurve(points, parameters, 3));
-  const TopoDS_Edge innerEdge = BRepBuilderAPI_MakeEdge(arc(inner.x, inner.r, angleA, angleB));
-  return BRepFill::Face(outerEdge, innerEdge);
+  BRepPrimAPI_MakeRevol sweep(BRepBuilderAPI_MakeEdge(meridian).Edge(), gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)));
+  return TopoDS::Face(sweep.Shape());
 }
 
 }  // namespace
@@ -118,52 +115,57 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
   const double startBlend = rotation.startZetaBlending, endBlend = rotation.endZetaBlending;
   lengthShare(startBlend, rotation.xpath + "/startZetaBlending");
   lengthShare(endBlend, rotation.xpath + "/endZetaBlending");
-  // The inner curve's ends, each with the blending zeta it meets (the nearer one).
-  gp_Pnt atStartBlend = inner->StartPoint(), atEndBlend = inner->EndPoint();
-  const gp_Pnt outerStart = sections.front().at(startBlend);
-  if (outerStart.Distance(atEndBlend) < outerStart.Distance(atStartBlend)) std::swap(atStartBlend, atEndBlend);
-  // The inner curve in the plane at angle 0, revolved sector by sector.
-  Handle(Geom_BSplineCurve) meridian = Handle(Geom_BSplineCurve)::DownCast(inner->Copy());
-  for (int i = 1; i <= meridian->NbPoles(); ++i) {
-    const Cylindrical c = cylindrical(meridian->Pole(i));
-    meridian->SetPole(i, cartesian(c.x, c.r, 0.0));
-  }
-  const std::vector<double> front = zetasBetween(endBlend, 1.0), back = zetasBetween(-1.0, startBlend);
+  if (startBlend >= endBlend)
+    throw Error(ErrorCode::InvalidModel, "startZetaBlending must lie behind endZetaBlending (be smaller)", {},
+                rotation.xpath);
 
-  // Each section sampled once: the stretch in front of the blending part (endZetaBlending over the
-  // leading edge to the upper trailing edge), the one behind it (the lower trailing edge to
-  // startZetaBlending) and, where blunt, the trailing edge's two ends.
-  struct Sampled {
-    Samples front, back, trailingEdge;
-  };
-  std::vector<Sampled> samples;
-  for (const PlacedProfile& section : sections)
-    samples.push_back({sampled(section, front), sampled(section, back), sampled(section, {1.0, -1.0})});
+  // The outer surface: the Gordon surface through the sections' outlines and the guides at the
+  // outline's ends, leading edge, trailing edge(s) and the cowl's own guide zetas.
   const bool blunt = sections.front().at(1.0).Distance(sections.front().at(-1.0)) > Precision::Confusion();
-
-  std::vector<std::pair<std::string, TopoDS_Face>> faces;
-  for (std::size_t k = 0; k < sections.size(); ++k) {
-    const std::size_t next = (k + 1) % sections.size();
-    const Sampled &a = samples[k], &b = samples[next];
-    const double angleA = sections[k].angle,
-                 angleB = k + 1 < sections.size() ? sections[next].angle : sections[next].angle + 360.0;
-    const std::string name = cowl.uID + "/sector " + std::to_string(k + 1);
-    faces.emplace_back(name, sectorFace(a.front, b.front, angleA, angleB));
-    faces.emplace_back(name, sectorFace(a.back, b.back, angleA, angleB));
-    if (blunt) faces.emplace_back(name, sectorFace(a.trailingEdge, b.trailingEdge, angleA, angleB));
-    faces.emplace_back(name, blendingFace(a.back.back(), b.back.back(), angleA, angleB, atStartBlend));
-    faces.emplace_back(name, blendingFace(a.front.front(), b.front.front(), angleA, angleB, atEndBlend));
-    gp_Trsf turn;
-    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), angleA * kDegree);
-    const TopoDS_Edge edge = TopoDS::Edge(BRepBuilderAPI_MakeEdge(meridian).Edge().Moved(turn));
-    BRepPrimAPI_MakeRevol sweep(edge, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), (angleB - angleA) * kDegree);
-    for (TopExp_Explorer face(sweep.Shape(), TopAbs_FACE); face.More(); face.Next())
-      faces.emplace_back(name, TopoDS::Face(face.Current()));
+  std::vector<double> required{endBlend, 0.0, -1.0, startBlend};
+  if (blunt) required.push_back(1.0);
+  std::vector<Handle(Geom_BSplineCurve)> profiles, guides;
+  for (const PlacedProfile& section : sections) profiles.push_back(outline(section, startBlend, endBlend));
+  for (const CowlGuide& guide : cowlGuides(configuration, cowl, sections, required)) {
+    if (guide.zeta > startBlend + 1e-9 && guide.zeta < endBlend - 1e-9)
+      throw Error(ErrorCode::InvalidModel,
+                  "a guide curve at zeta " + std::to_string(guide.zeta) + " lies in the blending part", {},
+                  cowl.xpath + "/guideCurves");
+    guides.push_back(guide.curve);
   }
+  geometry::GordonTolerances tolerances;
+  tolerances.crossing = kCrossingGap * std::max(1.0, sections.front().chord());
+  Handle(Geom_BSplineSurface) outer;
+  try {
+    // Around the engine the surface is periodic: its degree across the sections at most their count − 1.
+    const int degreeAround = std::min(3, static_cast<int>(sections.size()) - 1);
+    outer = geometry::buildGordonSurface(profiles, guides, tolerances, nullptr, degreeAround).surface;
+  } catch (const Error& error) {
+    throw Error(error.code(), "the cowl's outer surface cannot be lofted: " + error.message(), {}, cowl.xpath);
+  }
+
+  // Which end of the outlines (u) is at endZetaBlending, which at startZetaBlending.
+  double u0, u1, v0, v1;
+  outer->Bounds(u0, u1, v0, v1);
+  const gp_Pnt atEnd = sections.front().at(endBlend);
+  const bool startsAtEndBlend = outer->Value(u0, v0).Distance(atEnd) < outer->Value(u1, v0).Distance(atEnd);
+  const double uEndBlend = startsAtEndBlend ? u0 : u1, uStartBlend = startsAtEndBlend ? u1 : u0;
+  // The inner curve's ends, each with the blending zeta it meets (the nearer one).
+  gp_Pnt innerAtStartBlend = inner->StartPoint(), innerAtEndBlend = inner->EndPoint();
+  const gp_Pnt outerStart = sections.front().at(startBlend);
+  if (outerStart.Distance(innerAtEndBlend) < outerStart.Distance(innerAtStartBlend))
+    std::swap(innerAtStartBlend, innerAtEndBlend);
+
+  const std::string name = cowl.uID;
+  std::vector<std::pair<std::string, TopoDS_Face>> faces{
+      {name + "/outer", BRepBuilderAPI_MakeFace(outer, Precision::Confusion()).Face()},
+      {name + "/blending", blendingFace(outer, uStartBlend, innerAtStartBlend)},
+      {name + "/blending", blendingFace(outer, uEndBlend, innerAtEndBlend)},
+      {name + "/inner", innerFace(inner, angleOf(outer->Value(u0, v0)))}};
   try {
     return sewnNamedSolid(faces).shape;
   } catch (const Error& error) {
-    throw Error(error.code(), "the cowl's sectors do not close into a solid: " + error.message(), {}, cowl.xpath);
+    throw Error(error.code(), "the cowl's faces do not close into a solid: " + error.message(), {}, cowl.xpath);
   }
 }
 

@@ -19,14 +19,23 @@ gp_Pnt PlacedProfile::at(double zeta) const {
   return upper->Value(parameterAtLengthShare(upper, zeta));
 }
 
+double PlacedProfile::chord() const {
+  const gp_Pnt trailingEdge((at(1.0).XYZ() + at(-1.0).XYZ()) / 2.0);
+  return at(0.0).Distance(trailingEdge);
+}
+
 PlacedProfile placedProfile(const Configuration& configuration, const schema::NacelleSectionType& section) {
   const model::Transform placement = sectionTransform(section);
   const NacelleProfile profile =
       NacelleProfile::named(configuration, section.profileUID, false, section.xpath + "/profileUID");
-  PlacedProfile result{geometry::transformed(profile.lower(), placement),
-                       geometry::transformed(profile.upper(), placement)};
-  if (section.transformation && section.transformation->translation)
+  PlacedProfile result;
+  result.lower = geometry::transformed(profile.lower(), placement);
+  result.upper = geometry::transformed(profile.upper(), placement);
+  if (section.transformation && section.transformation->translation) {
     result.angle = section.transformation->translation->x.value_or(0.0);
+    result.radius = section.transformation->translation->z.value_or(0.0);
+  }
+  result.uID = section.uID;
   return result;
 }
 

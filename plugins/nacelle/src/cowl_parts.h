@@ -22,10 +22,14 @@ double lengthShare(double zeta, const std::string& where);
 /// (zeta −1) to the leading edge (zeta 0), the upper side on to the trailing edge (zeta 1).
 struct PlacedProfile {
   Handle(Geom_BSplineCurve) lower, upper;
-  double angle = 0.0;  ///< the section's turn about the x axis, degrees
+  double angle = 0.0;   ///< the section's turn about the x axis, degrees
+  double radius = 0.0;  ///< the section's radial offset (translation z)
+  std::string uID;      ///< the section's uID
 
   /// The point at curve coordinate zeta in [−1, 1] (arc length on each side).
   gp_Pnt at(double zeta) const;
+  /// The distance from the leading edge to the middle of the trailing edge.
+  double chord() const;
 };
 PlacedProfile placedProfile(const Configuration& configuration, const schema::NacelleSectionType& section);
 
