@@ -17,6 +17,8 @@ constexpr double kDegree = M_PI / 180.0;
 /// Points sampled on each sector of a guide (enough for the chevrons of a guide curve profile).
 constexpr int kSectorSamples = 32;
 constexpr double kSameZeta = 1e-9;
+/// Offsets of a guide curve profile below this count as none.
+constexpr double kNoOffset = 1e-12;
 
 /// A guide's offsets from its cubic step over the share u of a sector: (rY, rZ) interpolated
 /// over rX, zero at both ends.
@@ -41,8 +43,12 @@ class GuideOffsets {
     std::vector<gp_Pnt> points{gp_Pnt(0, 0, 0)};
     std::vector<double> shares{0.0};
     for (std::size_t i = 0; i < rx.size(); ++i) {
-      if (rx[i] <= shares.back() || rx[i] >= 1.0)
-        throw Error(ErrorCode::InvalidModel, "rX must rise strictly within (0, 1)", {}, list + "/rX");
+      const bool atSection = rx[i] == 0.0 || rx[i] == 1.0;
+      if (atSection && (std::abs(ry[i]) > kNoOffset || std::abs(rz[i]) > kNoOffset))
+        throw Error(ErrorCode::InvalidModel, "a guide must meet the sections: no offset at rX = 0 or 1", {}, list);
+      if (atSection) continue;  // the ends are the sections' points themselves
+      if (rx[i] <= shares.back() || rx[i] > 1.0)
+        throw Error(ErrorCode::InvalidModel, "rX must rise strictly within [0, 1]", {}, list + "/rX");
       points.emplace_back(rx[i], ry[i], rz[i]);
       shares.push_back(rx[i]);
     }
