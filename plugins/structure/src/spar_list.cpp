@@ -19,8 +19,13 @@ SparPosition sparPositionOf(const schema::SparPositionType& node) {
     position.xsi = node.sparPositionRib->xsi;
     position.ribsUid = node.sparPositionRib->ribDefinitionUID;
     position.ribNumber = node.sparPositionRib->ribNumber.value_or(1);
-  } else {
+  } else if (node.sparPositionCurve) {
     position.kind = SparPosition::Kind::OnCurve;
+  } else {
+    // Older files name the point otherwise (sparPoint): nothing CPACS 3.5 can place.
+    throw Error(ErrorCode::InvalidModel,
+                "the spar position has none of sparPositionEtaXsi, sparPositionRib and sparPositionCurve", {},
+                node.xpath);
   }
   return position;
 }
