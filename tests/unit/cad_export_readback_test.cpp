@@ -162,6 +162,18 @@ TEST_F(CadExportReadBack, StepDeclaresMetresAndHoldsTheQueriedVolumes) {
   expectVolumesAsQueried(solidVolumes(readInMetres<STEPControl_Reader>(path)));
 }
 
+TEST_F(CadExportReadBack, StepOfSolidsIsWrittenByOurWriterExactly) {
+  // Wings and fuselages are solids of B-spline and plane faces: our own STEP writer writes
+  // them (step_brep_writer.h), every number as the shortest text that reads back as the same
+  // double, so OCCT's reader gives the queried volumes to the integration's accuracy.
+  const std::string path = exported("airliner-own-writer.step");
+  EXPECT_NE(contents(path).find("FILE_DESCRIPTION(('Airshape export')"), std::string::npos);
+  const std::vector<double> volumes = solidVolumes(readInMetres<STEPControl_Reader>(path));
+  const std::vector<double> expected = queriedVolumes();
+  ASSERT_EQ(volumes.size(), expected.size());
+  for (std::size_t i = 0; i < volumes.size(); ++i) EXPECT_NEAR(volumes[i], expected[i], 1e-9 * expected[i]);
+}
+
 TEST_F(CadExportReadBack, IgesDeclaresMetresAndHoldsTheQueriedVolumes) {
   const std::string path = exported("airliner.igs");
   const std::vector<std::string> global = igesGlobalParameters(path);

@@ -13,6 +13,7 @@
 #include "airshape/error.h"
 #include "format_writers.h"
 #include "scene_document.h"
+#include "step_brep_writer.h"
 
 namespace airshape::exporting {
 
@@ -25,6 +26,7 @@ TopoDS_Compound sceneCompound(const ExportScene& scene) {
 }
 
 void writeStep(const ExportScene& scene, const std::string& path, const std::string& target) {
+  if (brepStepWritable(scene)) return writeBrepStep(scene, path, target);
   const SceneDocument document(scene);
   STEPCAFControl_Writer writer;  // initialises the STEP parameters, so they are set after it
   Interface_Static::SetCVal("write.step.schema", "AP214IS");
