@@ -133,10 +133,10 @@ class CadExportReadBack : public ::testing::Test {
     return volumes;
   }
 
-  static std::string exported(const std::string& name) {
+  static std::string exported(const std::string& name, const std::vector<std::string>& uids = wingsAndFuselages()) {
     const std::string path = (folder_ / name).string();
     exporting::ExportOptions options;
-    options.components = wingsAndFuselages();
+    options.components = uids;
     exporting::exportConfiguration(*configuration_, path, options);
     return path;
   }
@@ -172,6 +172,20 @@ TEST_F(CadExportReadBack, StepOfSolidsIsWrittenByOurWriterExactly) {
   const std::vector<double> expected = queriedVolumes();
   ASSERT_EQ(volumes.size(), expected.size());
   for (std::size_t i = 0; i < volumes.size(); ++i) EXPECT_NEAR(volumes[i], expected[i], 1e-9 * expected[i]);
+}
+
+TEST_F(CadExportReadBack, StepOfOurWriterKeepsConesAndSurfacesOfRevolution) {
+  // The example's nacelle: surfaces of revolution and cones, one opening backwards (a negative
+  // semi-angle, which STEP writes about the reversed axis), on left-handed placements.
+  const std::string path = exported("nacelle.step", {"Engine_Left"});
+  const std::string text = contents(path);
+  EXPECT_NE(text.find("FILE_DESCRIPTION(('Airshape export')"), std::string::npos);
+  EXPECT_NE(text.find("CONICAL_SURFACE("), std::string::npos);
+  EXPECT_NE(text.find("SURFACE_OF_REVOLUTION("), std::string::npos);
+  const std::vector<double> volumes = solidVolumes(readInMetres<STEPControl_Reader>(path));
+  ASSERT_EQ(volumes.size(), 1u);
+  const double expected = asked("{\"op\":\"component_volume\",\"uid\":\"Engine_Left\"}").get<double>();
+  EXPECT_NEAR(volumes[0], expected, 1e-9 * expected);
 }
 
 TEST_F(CadExportReadBack, IgesDeclaresMetresAndHoldsTheQueriedVolumes) {

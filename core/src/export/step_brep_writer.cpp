@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <fstream>
 #include <unordered_map>
@@ -13,9 +14,15 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
+#include <Geom_ConicalSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_ElementarySurface.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <NCollection_DataMap.hxx>
 #include <TopExp.hxx>
@@ -41,28 +48,51 @@ Handle(Geom_Surface) basisSurface(const TopoDS_Face& face) {
   return surface;
 }
 
+Handle(Geom_Curve) withoutTrimming(Handle(Geom_Curve) curve);
+
 Handle(Geom_Curve) basisCurve(const TopoDS_Edge& edge, double& first, double& last) {
-  Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);  // with the edge's location applied
+  return withoutTrimming(BRep_Tool::Curve(edge, first, last));  // with the edge's location applied
+}
+
+Handle(Geom_Curve) withoutTrimming(Handle(Geom_Curve) curve) {
   while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(curve)) curve = trimmed->BasisCurve();
   return curve;
 }
 
+bool writableCurve(const Handle(Geom_Curve) & curve) {
+  return !curve.IsNull() && (curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) ||
+                             curve->IsKind(STANDARD_TYPE(Geom_Line)) || curve->IsKind(STANDARD_TYPE(Geom_Circle)));
+}
+
+/// B-spline surfaces, planes, the elementary surfaces STEP has and surfaces of revolution of
+/// curves we write.
+bool writableSurface(const Handle(Geom_Surface) & surface) {
+  if (surface.IsNull()) return false;
+  if (auto revolution = Handle(Geom_SurfaceOfRevolution)::DownCast(surface))
+    return writableCurve(withoutTrimming(revolution->BasisCurve()));
+  return surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) || surface->IsKind(STANDARD_TYPE(Geom_Plane)) ||
+         surface->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) ||
+         surface->IsKind(STANDARD_TYPE(Geom_ConicalSurface)) || surface->IsKind(STANDARD_TYPE(Geom_SphericalSurface)) ||
+         surface->IsKind(STANDARD_TYPE(Geom_ToroidalSurface));
+}
+
 bool writableFace(const TopoDS_Face& face) {
-  if (face.Location().Transformation().IsNegative()) return false;
   const Handle(Geom_Surface) surface = basisSurface(face);
-  if (surface.IsNull() ||
-      !(surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) || surface->IsKind(STANDARD_TYPE(Geom_Plane))))
-    return false;
+  if (face.Location().Transformation().IsNegative() || !writableSurface(surface)) return false;
+  // A pole (degenerate edge) is left out of its loop, and readers restore it from the edges
+  // around it: exactly on B-spline surfaces (fuselage noses, to 1e-15 in volume), but a
+  // spinner revolved from pole to pole came back 3e-6 off. Such faces go to OCCT's writer.
+  const bool polesAllowed = surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface));
   for (TopoDS_Iterator wire(face); wire.More(); wire.Next()) {
     bool anyEdge = false;
     for (TopoDS_Iterator item(wire.Value()); item.More(); item.Next()) {
       const TopoDS_Edge& edge = TopoDS::Edge(item.Value());
-      if (BRep_Tool::Degenerated(edge)) continue;
+      if (BRep_Tool::Degenerated(edge)) {
+        if (!polesAllowed) return false;
+        continue;
+      }
       double first, last;
-      const Handle(Geom_Curve) curve = basisCurve(edge, first, last);
-      if (curve.IsNull() || !(curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) ||
-                              curve->IsKind(STANDARD_TYPE(Geom_Line)) || curve->IsKind(STANDARD_TYPE(Geom_Circle))))
-        return false;
+      if (!writableCurve(basisCurve(edge, first, last))) return false;
       anyEdge = true;
     }
     if (!anyEdge) return false;  // a loop of degenerate edges only (a vertex loop): not ours
@@ -190,9 +220,45 @@ class GeometryWriter {
                      StepData::ref(x) + ")");
   }
 
-  int surface(const Handle(Geom_Surface) & surface) {
-    if (auto plane = Handle(Geom_Plane)::DownCast(surface))
-      return data_.add("PLANE(''," + StepData::ref(placement(plane->Position().Ax2())) + ")");
+  /// The surface's entity; `normalFlipped` tells when the entity's normal (STEP's: outward
+  /// for elementary surfaces, whose axes are right-handed) is opposite to OCCT's.
+  int surface(const Handle(Geom_Surface) & surface, bool& normalFlipped) {
+    normalFlipped = false;
+    if (auto plane = Handle(Geom_Plane)::DownCast(surface)) {
+      // The axis along OCCT's normal (x × y, reversed to z in a left-handed placement).
+      const gp_Ax3& position = plane->Position();
+      const gp_Ax2 axes(position.Location(), position.XDirection().Crossed(position.YDirection()),
+                        position.XDirection());
+      return data_.add("PLANE(''," + StepData::ref(placement(axes)) + ")");
+    }
+    if (auto elementarySurface = Handle(Geom_ElementarySurface)::DownCast(surface)) {
+      // STEP's placements are right-handed: the same axis and x direction, so the same point
+      // set; a left-handed placement's y, and so the normal, comes out reversed.
+      const gp_Ax3& position = elementarySurface->Position();
+      gp_Ax2 axes(position.Location(), position.Direction(), position.XDirection());
+      normalFlipped = !position.Direct();
+      if (auto cylinder = Handle(Geom_CylindricalSurface)::DownCast(surface))
+        return elementary("CYLINDRICAL_SURFACE", axes, {cylinder->Radius()});
+      if (auto cone = Handle(Geom_ConicalSurface)::DownCast(surface)) {
+        // STEP's semi-angle is positive: a cone opening the other way is the same surface, with
+        // the same normals, about the reversed axis (its parameters both negated).
+        if (cone->SemiAngle() < 0.0) axes = gp_Ax2(axes.Location(), axes.Direction().Reversed(), axes.XDirection());
+        return elementary("CONICAL_SURFACE", axes, {cone->RefRadius(), std::abs(cone->SemiAngle())});
+      }
+      if (auto sphere = Handle(Geom_SphericalSurface)::DownCast(surface))
+        return elementary("SPHERICAL_SURFACE", axes, {sphere->Radius()});
+      if (auto torus = Handle(Geom_ToroidalSurface)::DownCast(surface))
+        return elementary("TOROIDAL_SURFACE", axes, {torus->MajorRadius(), torus->MinorRadius()});
+    }
+    if (auto revolution = Handle(Geom_SurfaceOfRevolution)::DownCast(surface)) {
+      // The swept curve as far as the surface is trimmed to it (its poles at the curve's ends).
+      const Handle(Geom_Curve)& trimmed = revolution->BasisCurve();
+      const int profile = curve(withoutTrimming(trimmed), trimmed->FirstParameter(), trimmed->LastParameter());
+      const gp_Ax1 axis = revolution->Axis();
+      const int axisPlacement = data_.add("AXIS1_PLACEMENT(''," + StepData::ref(point(axis.Location())) + "," +
+                                          StepData::ref(direction(axis.Direction())) + ")");
+      return data_.add("SURFACE_OF_REVOLUTION(''," + StepData::ref(profile) + "," + StepData::ref(axisPlacement) + ")");
+    }
     return bsplineSurface(Handle(Geom_BSplineSurface)::DownCast(surface));
   }
 
@@ -220,6 +286,16 @@ class GeometryWriter {
   }
 
  private:
+  /// An elementary surface: its placement and its measures (lengths in metres, angles in radians).
+  int elementary(const char* entity, const gp_Ax2& axes, std::initializer_list<double> measures) {
+    std::string text = std::string(entity) + "(''," + StepData::ref(placement(axes));
+    for (double measure : measures) {
+      text += ',';
+      appendReal(text, measure);
+    }
+    return data_.add(text + ")");
+  }
+
   /// A point or a direction: its three coordinates.
   int triple(const char* entity, double x, double y, double z) {
     int id;
@@ -376,9 +452,10 @@ class TopologyWriter {
       const char* kind = wire.IsSame(outer) ? "FACE_OUTER_BOUND" : "FACE_BOUND";
       bounds.push_back(data_.add(std::string(kind) + "(''," + StepData::ref(loop) + "," + flag(sameSense) + ")"));
     }
-    const int surface = geometry_.surface(basisSurface(forward));
+    bool normalFlipped = false;
+    const int surface = geometry_.surface(basisSurface(forward), normalFlipped);
     return data_.add("ADVANCED_FACE(" + stepString(name) + "," + refList(bounds) + "," + StepData::ref(surface) + "," +
-                     flag(sameSense) + ")");
+                     flag(sameSense != normalFlipped) + ")");
   }
 
   StepData& data_;
