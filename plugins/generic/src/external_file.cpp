@@ -5,14 +5,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include <boost/dll/shared_library.hpp>
-
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/plugin/plugin_host.h"
+#include "airshape/plugin/core_module.h"
 
 namespace airshape::generic {
 
@@ -27,15 +25,8 @@ std::string lowerCase(std::string text) {
 /// which is loaded on first use and kept.
 TopoDS_Shape readExchangeFile(const std::string& kind, const std::string& path) {
   using Entry = void(const std::string&, const std::string&, TopoDS_Shape&);
-  static const boost::dll::shared_library module = [] {
-    const boost::dll::fs::path file =
-        boost::dll::fs::path(plugin::PluginHost::coreLibraryFolder()) / "libairshape_generic_exchange.so";
-    boost::dll::fs::error_code error;
-    boost::dll::shared_library loaded(file, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local, error);
-    if (error)
-      throw Error(ErrorCode::PluginFailed, "cannot load the STEP and IGES reader: " + error.message(), file.string());
-    return loaded;
-  }();
+  static const boost::dll::shared_library module =
+      plugin::loadCoreModule("libairshape_generic_exchange.so", "the STEP and IGES reader");
   TopoDS_Shape shape;
   module.get<Entry>("airshape_read_exchange_file")(kind, path, shape);
   return shape;
