@@ -48,15 +48,13 @@ Handle(Geom_Surface) basisSurface(const TopoDS_Face& face) {
   return surface;
 }
 
-Handle(Geom_Curve) withoutTrimming(Handle(Geom_Curve) curve);
-
-Handle(Geom_Curve) basisCurve(const TopoDS_Edge& edge, double& first, double& last) {
-  return withoutTrimming(BRep_Tool::Curve(edge, first, last));  // with the edge's location applied
-}
-
 Handle(Geom_Curve) withoutTrimming(Handle(Geom_Curve) curve) {
   while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(curve)) curve = trimmed->BasisCurve();
   return curve;
+}
+
+Handle(Geom_Curve) basisCurve(const TopoDS_Edge& edge, double& first, double& last) {
+  return withoutTrimming(BRep_Tool::Curve(edge, first, last));  // with the edge's location applied
 }
 
 bool writableCurve(const Handle(Geom_Curve) & curve) {
@@ -518,11 +516,11 @@ class ProductWriter {
                   ",''," + StepData::ref(assembly.definition) + "," + StepData::ref(part.definition) + ",$)");
     const int usageShape =
         data_.add("PRODUCT_DEFINITION_SHAPE('Placement','Placement of an item'," + StepData::ref(usage) + ")");
-    const int transformation = data_.add("ITEM_DEFINED_TRANSFORMATION(''," + std::string("''") + "," +
-                                         StepData::ref(origin_) + "," + StepData::ref(at) + ")");
+    const int transformation =
+        data_.add("ITEM_DEFINED_TRANSFORMATION('',''," + StepData::ref(origin_) + "," + StepData::ref(at) + ")");
     const int relationship =
-        data_.add("( REPRESENTATION_RELATIONSHIP(''," + std::string("''") + "," + StepData::ref(part.representation) +
-                  "," + StepData::ref(assembly.representation) + ") REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(" +
+        data_.add("( REPRESENTATION_RELATIONSHIP('',''," + StepData::ref(part.representation) + "," +
+                  StepData::ref(assembly.representation) + ") REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(" +
                   StepData::ref(transformation) + ") SHAPE_REPRESENTATION_RELATIONSHIP() )");
     data_.add("CONTEXT_DEPENDENT_SHAPE_REPRESENTATION(" + StepData::ref(relationship) + "," +
               StepData::ref(usageShape) + ")");
