@@ -16,6 +16,7 @@
 #include "airshape/geometry/loft_piece.h"
 #include "airshape/geometry/loft_shell.h"
 #include "airshape/geometry/skinning.h"
+#include "airshape/geometry/surface_split.h"
 
 namespace airshape::geometry {
 namespace {
@@ -89,6 +90,29 @@ TEST(LoftShell, StretchesOfDifferentSurfacesShareTheirProfiles) {
   EXPECT_NEAR(volumeOf(solid), volumeOf(sewn), 1e-9 * volumeOf(sewn));
   // Stretches that do not meet are refused, so that the caller sews instead.
   EXPECT_THROW(closedLoftSolid({{front, 0.0, 1.0}, {rear, 0.0, 1.0}}, faces), Error);
+}
+
+TEST(SurfaceSplit, PartsAreTheSegmentsOfTheSurface) {
+  // Sites between and on the loft's knots, the ends included; one site in the middle of a span.
+  std::vector<double> sites;
+  const Handle(Geom_BSplineSurface) loft = ellipseLoft({0.5, 1.0, 1.2, 0.8, 0.3}, sites);
+  sites.insert(sites.begin() + 2, 0.5 * (sites[1] + sites[2]));
+  const auto parts = splitAlongV(*loft, sites);
+  ASSERT_EQ(parts.size(), sites.size() - 1);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    auto segment = Handle(Geom_BSplineSurface)::DownCast(loft->Copy());
+    segment->Segment(0.0, 1.0, sites[k], sites[k + 1]);
+    double u0, u1, v0, v1;
+    parts[k]->Bounds(u0, u1, v0, v1);
+    EXPECT_NEAR(v0, sites[k], 1e-15);
+    EXPECT_NEAR(v1, sites[k + 1], 1e-15);
+    EXPECT_EQ(parts[k]->NbVPoles(), segment->NbVPoles()) << "part " << k << " carries only its own poles";
+    for (int i = 0; i <= 10; ++i)
+      for (int j = 0; j <= 10; ++j) {
+        const double u = u0 + (u1 - u0) * i / 10.0, v = v0 + (v1 - v0) * j / 10.0;
+        EXPECT_LT(parts[k]->Value(u, v).Distance(loft->Value(u, v)), 1e-12);
+      }
+  }
 }
 
 }  // namespace

@@ -101,15 +101,23 @@ std::vector<double> breaks(const TColStd_Array1OfReal& knots, double from, doubl
   return result;
 }
 
-/// ∫∫ f(u, v, P, S_u, S_v) du dv over the patch, span by span, with the given numbers
-/// of Gauss points per direction.
+/// At most `count` equal intervals of [from, to], fewer where the surface has fewer knot
+/// spans there (then its spans).
+std::vector<double> coarseBreaks(const TColStd_Array1OfReal& knots, double from, double to, int count) {
+  std::vector<double> spans = breaks(knots, from, to);
+  if (static_cast<int>(spans.size()) - 1 <= count) return spans;
+  std::vector<double> result;
+  for (int i = 0; i <= count; ++i) result.push_back(from + (to - from) * i / count);
+  return result;
+}
+
+/// ∫∫ f(u, v, P, S_u, S_v) du dv over the patch, interval by interval between the given
+/// breaks, with the given numbers of Gauss points per direction.
 template <typename Integrand>
-double integrateOverSpans(const RectangularPatch& patch, int uPoints, int vPoints, Integrand integrand) {
-  const Geom_BSplineSurface& s = *patch.surface;
+double integrateBetweenBreaks(const RectangularPatch& patch, const std::vector<double>& uBreaks,
+                              const std::vector<double>& vBreaks, int uPoints, int vPoints, Integrand integrand) {
   const GeomAdaptor_Surface evaluator(patch.surface);  // caches each span's polynomial form
   const GaussRule uRule(uPoints), vRule(vPoints);
-  const std::vector<double> uBreaks = breaks(s.UKnots(), patch.u0, patch.u1);
-  const std::vector<double> vBreaks = breaks(s.VKnots(), patch.v0, patch.v1);
   double sum = 0.0;
   for (std::size_t i = 0; i + 1 < uBreaks.size(); ++i) {
     const double uMid = 0.5 * (uBreaks[i] + uBreaks[i + 1]), uHalf = 0.5 * (uBreaks[i + 1] - uBreaks[i]);
@@ -129,8 +137,21 @@ double integrateOverSpans(const RectangularPatch& patch, int uPoints, int vPoint
   return sum;
 }
 
+/// The same span by span: a polynomial on each span is integrated exactly by enough points.
+template <typename Integrand>
+double integrateOverSpans(const RectangularPatch& patch, int uPoints, int vPoints, Integrand integrand) {
+  const Geom_BSplineSurface& s = *patch.surface;
+  return integrateBetweenBreaks(patch, breaks(s.UKnots(), patch.u0, patch.u1), breaks(s.VKnots(), patch.v0, patch.v1),
+                                uPoints, vPoints, integrand);
+}
+
 /// How a volume is integrated: exactly, or roughly (enough to tell its sign).
 enum class Accuracy { Exact, Rough };
+
+/// P·(S_u × S_v): three times the volume integrand.
+double volumeIntegrand(const gp_Pnt& p, const gp_Vec& du, const gp_Vec& dv) {
+  return gp_Vec(p.XYZ()).Dot(du.Crossed(dv));
+}
 
 /// (1/3)∫∫ P·(S_u × S_v) du dv over the patch: polynomial on every knot span, so a Gauss rule
 /// with ceil(3p/2) points in a direction of degree p integrates it exactly; two points per
@@ -139,9 +160,17 @@ double patchVolume(const RectangularPatch& patch, Accuracy accuracy) {
   const bool exact = accuracy == Accuracy::Exact;
   const int uPoints = exact ? (3 * patch.surface->UDegree() + 2) / 2 : 2;
   const int vPoints = exact ? (3 * patch.surface->VDegree() + 2) / 2 : 2;
-  return integrateOverSpans(
-             patch, uPoints, vPoints,
-             [](const gp_Pnt& p, const gp_Vec& du, const gp_Vec& dv) { return gp_Vec(p.XYZ()).Dot(du.Crossed(dv)); }) /
+  return integrateOverSpans(patch, uPoints, vPoints, volumeIntegrand) / 3.0;
+}
+
+/// The same on a coarse grid (two Gauss points on each of at most kCoarseIntervals intervals
+/// per direction, whatever the knots): a few dozen points per face where a fuselage's skin
+/// has hundreds of spans.
+double coarsePatchVolume(const RectangularPatch& patch) {
+  constexpr int kCoarseIntervals = 8;
+  const Geom_BSplineSurface& s = *patch.surface;
+  return integrateBetweenBreaks(patch, coarseBreaks(s.UKnots(), patch.u0, patch.u1, kCoarseIntervals),
+                                coarseBreaks(s.VKnots(), patch.v0, patch.v1, kCoarseIntervals), 2, 2, volumeIntegrand) /
          3.0;
 }
 
@@ -210,31 +239,68 @@ double planeArea(const TopoDS_Face& face, const Geom_Plane& plane) {
 /// rectangular patches and on planes (where P·n is constant). The terms of one formula only
 /// add up to the volume together, so a solid with any other face is integrated by OCCT as a
 /// whole.
-double signedVolume(const TopoDS_Shape& solid, Accuracy accuracy) {
-  if (solid.IsNull()) return 0.0;
-  double volume = 0.0;
+/// A plane face's share of the volume: P·n is constant on it.
+double planeFaceVolume(const TopoDS_Face& face, const Geom_Plane& plane) {
+  const gp_Ax3& frame = plane.Position();
+  const double offset = gp_Vec(frame.Location().XYZ()).Dot(gp_Vec(frame.Direction()));
+  const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
+  return orientation * offset * planeArea(face, plane) / 3.0;
+}
+
+/// The faces' shares of a solid's volume with their senses, each by `patchShare` on a
+/// rectangular patch and exactly on a plane; none when a face is neither.
+template <typename PatchShare>
+std::optional<std::vector<double>> volumeShares(const TopoDS_Shape& solid, PatchShare patchShare) {
+  std::vector<double> shares;
   for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
     const TopoDS_Face& face = TopoDS::Face(faces.Current());
     const double sense = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
-    if (const auto patch = rectangularPatch(face)) {
-      volume += sense * patchVolume(*patch, accuracy);
-    } else if (const auto plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face)); !plane.IsNull()) {
-      const gp_Ax3& frame = plane->Position();
-      const double offset = gp_Vec(frame.Location().XYZ()).Dot(gp_Vec(frame.Direction()));
-      const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
-      volume += sense * orientation * offset * planeArea(face, *plane) / 3.0;
-    } else {
-      return occtVolume(solid, accuracy);
-    }
+    if (const auto patch = rectangularPatch(face))
+      shares.push_back(sense * patchShare(*patch));
+    else if (const auto plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face)); !plane.IsNull())
+      shares.push_back(sense * planeFaceVolume(face, *plane));
+    else
+      return std::nullopt;
   }
-  return volume;
+  return shares;
+}
+
+double sum(const std::vector<double>& values) {
+  double total = 0.0;
+  for (double value : values) total += value;
+  return total;
+}
+
+double signedVolume(const TopoDS_Shape& solid, Accuracy accuracy) {
+  if (solid.IsNull()) return 0.0;
+  const auto shares =
+      volumeShares(solid, [accuracy](const RectangularPatch& patch) { return patchVolume(patch, accuracy); });
+  return shares ? sum(*shares) : occtVolume(solid, accuracy);
+}
+
+/// The volume from the coarse grid, where it can be trusted: where the faces' shares do not
+/// nearly cancel (as they do on a solid of next to no volume, or far from the origin), so
+/// that the coarse rule's error, a small part of each share, cannot turn the sign.
+std::optional<double> coarseSignedVolume(const TopoDS_Shape& solid) {
+  constexpr double kTrustedShare = 0.05;
+  const auto shares = volumeShares(solid, coarsePatchVolume);
+  if (!shares) return std::nullopt;
+  double magnitude = 0.0;
+  for (double share : *shares) magnitude += std::abs(share);
+  const double volume = sum(*shares);
+  if (std::abs(volume) > kTrustedShare * magnitude) return volume;
+  return std::nullopt;
 }
 
 }  // namespace
 
 double volumeOf(const TopoDS_Shape& solid) { return std::abs(signedVolume(solid, Accuracy::Exact)); }
 
-double roughSignedVolumeOf(const TopoDS_Shape& solid) { return signedVolume(solid, Accuracy::Rough); }
+double roughSignedVolumeOf(const TopoDS_Shape& solid) {
+  if (solid.IsNull()) return 0.0;
+  if (const auto volume = coarseSignedVolume(solid)) return *volume;
+  return signedVolume(solid, Accuracy::Rough);
+}
 
 double signedAreaEnclosed(const TopoDS_Wire& wire, const gp_Dir& normal) { return areaAlong(wire, normal); }
 

@@ -18,10 +18,14 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/loft_piece.h"
+#include "airshape/geometry/surface_split.h"
 
 namespace airshape::geometry {
 
 namespace {
+
+/// A stretch ending within this of its surface's v range covers the whole surface.
+constexpr double kSameParameter = 1e-12;
 
 /// The parameter line v = const of a face, running with u.
 Handle(Geom2d_Line) lineAtV(double v) { return new Geom2d_Line(gp_Pnt2d(0.0, v), gp_Dir2d(1.0, 0.0)); }
@@ -79,13 +83,10 @@ void checkStretchesMeet(const std::vector<LoftStretch>& stretches, double u0, do
   }
 }
 
-}  // namespace
-
-TopoDS_Solid closedLoftSolid(const std::vector<LoftStretch>& stretches, std::vector<TopoDS_Face>& faces) {
-  if (stretches.empty()) throw Error(ErrorCode::InvalidModel, "a loft needs at least one stretch");
+/// The solid of stretches that meet (checked by the caller, or parts of one surface).
+TopoDS_Solid solidOfMeetingStretches(const std::vector<LoftStretch>& stretches, std::vector<TopoDS_Face>& faces) {
   double u0, u1, v0, v1;
   stretches.front().surface->Bounds(u0, u1, v0, v1);
-  checkStretchesMeet(stretches, u0, u1);
   // The profiles where the stretches meet, and at both ends: one edge each.
   BRep_Builder builder;
   std::vector<TopoDS_Edge> profiles;
@@ -106,13 +107,16 @@ TopoDS_Solid closedLoftSolid(const std::vector<LoftStretch>& stretches, std::vec
     const double vStart = stretch.vStart, vEnd = stretch.vEnd;
     stretch.surface->Bounds(u0, u1, v0, v1);
     // The face carries its stretch of the surface only (Segment keeps the parameters).
-    auto piece = Handle(Geom_BSplineSurface)::DownCast(stretch.surface->Copy());
-    if (vStart > v0 || vEnd < v1) piece->Segment(u0, u1, vStart, vEnd);
+    const bool part = vStart > v0 + kSameParameter || vEnd < v1 - kSameParameter;
+    Handle(Geom_BSplineSurface) piece = stretch.surface;
+    if (part) {
+      piece = Handle(Geom_BSplineSurface)::DownCast(stretch.surface->Copy());
+      piece->Segment(u0, u1, vStart, vEnd);
+    }
     TopoDS_Face face;
     builder.MakeFace(face, piece, kBrepTolerance);
-    // The seam's curve is its stretch of the surface's line at u0 only (a file carries its poles).
-    auto seamCurve = Handle(Geom_BSplineCurve)::DownCast(stretch.surface->UIso(u0));
-    if (vStart > v0 || vEnd < v1) seamCurve->Segment(vStart, vEnd);
+    // The seam's curve is the piece's line at u0: its stretch only (a file carries its poles).
+    const Handle(Geom_Curve) seamCurve = piece->UIso(u0);
     const TopoDS_Edge seam = BRepBuilderAPI_MakeEdge(seamCurve, corners[k], corners[k + 1], vStart, vEnd).Edge();
     builder.UpdateEdge(seam, lineAtU(u1), lineAtU(u0), face, kBrepTolerance);  // forward: the side at u1
     builder.UpdateEdge(profiles[k], lineAtV(vStart), face, kBrepTolerance);
@@ -149,11 +153,24 @@ TopoDS_Solid closedLoftSolid(const std::vector<LoftStretch>& stretches, std::vec
   return outwards(solid);
 }
 
+}  // namespace
+
+TopoDS_Solid closedLoftSolid(const std::vector<LoftStretch>& stretches, std::vector<TopoDS_Face>& faces) {
+  if (stretches.empty()) throw Error(ErrorCode::InvalidModel, "a loft needs at least one stretch");
+  double u0, u1, v0, v1;
+  stretches.front().surface->Bounds(u0, u1, v0, v1);
+  checkStretchesMeet(stretches, u0, u1);
+  return solidOfMeetingStretches(stretches, faces);
+}
+
 TopoDS_Solid closedLoftSolid(const Handle(Geom_BSplineSurface) & loft, const std::vector<double>& sites,
                              std::vector<TopoDS_Face>& faces) {
+  if (sites.size() < 2) throw Error(ErrorCode::InvalidModel, "a loft needs at least one stretch");
+  // Parts of one surface meet by construction; each carries only its own poles.
+  const std::vector<Handle(Geom_BSplineSurface)> parts = splitAlongV(*loft, sites);
   std::vector<LoftStretch> stretches;
-  for (std::size_t k = 0; k + 1 < sites.size(); ++k) stretches.push_back({loft, sites[k], sites[k + 1]});
-  return closedLoftSolid(stretches, faces);
+  for (std::size_t k = 0; k < parts.size(); ++k) stretches.push_back({parts[k], sites[k], sites[k + 1]});
+  return solidOfMeetingStretches(stretches, faces);
 }
 
 }  // namespace airshape::geometry

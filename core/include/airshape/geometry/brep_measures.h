@@ -15,9 +15,11 @@ namespace airshape::geometry {
 /// A null shape measures 0.
 double volumeOf(const TopoDS_Shape& solid);
 
-/// A closed solid's volume integrated roughly (two Gauss points per knot span of its skins,
-/// its planar caps exactly), with the sign of its orientation: positive when its faces point
-/// outwards. Far cheaper than classifying points, and close enough to tell an empty solid.
+/// A closed solid's volume integrated roughly, with the sign of its orientation: positive
+/// when its faces point outwards. Its skins are integrated on a coarse grid where the faces'
+/// shares of the volume do not nearly cancel, else with two Gauss points per knot span; its
+/// planar caps exactly. Far cheaper than classifying points, and close enough to tell an
+/// empty solid.
 double roughSignedVolumeOf(const TopoDS_Shape& solid);
 
 /// The area a closed plane wire encloses, by Green's theorem along its edges as the wire
