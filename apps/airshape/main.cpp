@@ -1,12 +1,15 @@
 // The airshape command: one word per task (info, query, validate, save, plugins).
+#include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 
 #include <Standard_Failure.hxx>
 
 #include "airshape/error.h"
 #include "airshape/plugin/plugin_host.h"
+#include "airshape/xml/read_ahead.h"
 #include "commands.h"
 
 namespace airshape::cli {
@@ -132,8 +135,12 @@ int run(int argc, char** argv) {
     throw Error(ErrorCode::InvalidArgument, "unknown command '" + word + "' (see airshape help)");
   plugin::PluginHost host;
   // Loading the plugins links OCCT's toolkits they use (tens of milliseconds): only for the
-  // commands that read CPACS files or list plugins.
+  // commands that read CPACS files or list plugins, which meanwhile read their file.
+  std::optional<xml::ReadAhead> readAhead;  // waits for its thread on the way out, however left
   if (word != "gordon") {
+    if (!arguments.empty() && !arguments[0].empty() && arguments[0][0] != '-' &&
+        std::filesystem::is_regular_file(arguments[0]))
+      readAhead.emplace(arguments[0]);
     host.loadDefaultPlugins();
     for (const std::string& message : host.messages()) std::cerr << "airshape: plugin: " << message << '\n';
   }

@@ -1,9 +1,13 @@
 // Opening documents: what is refused, and how.
+#include <filesystem>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/xml/nesting.h"
+#include "airshape/xml/read_ahead.h"
 #include "test_support.h"
 
 namespace airshape {
@@ -47,6 +51,49 @@ TEST(Opening, MissingFileNamesTheFile) {
     EXPECT_EQ(error.code(), ErrorCode::FileNotFound);
     EXPECT_EQ(std::string(error.what()), "/no/such/file.xml: no such file");
   }
+}
+
+/// Writes `text` to a file of the test's own in the temporary folder; returns its path.
+std::string temporaryFile(const std::string& name, const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(ReadingAhead, TheOpenTakesTheDocumentReadAhead) {
+  const std::string path = temporaryFile("airshape_read_ahead.xml", test::cpacsDocument(""));
+  {
+    const xml::ReadAhead readAhead(path);
+    EXPECT_EQ(Configuration::open(path).cpacsVersion(), "3.5");
+    EXPECT_FALSE(xml::takeReadAhead(path)) << "taken once: a second open reads the file again";
+    EXPECT_EQ(Configuration::open(path).cpacsVersion(), "3.5");
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(ReadingAhead, AnErrorReadingAheadIsTheOpensError) {
+  const std::string path = temporaryFile("airshape_read_ahead_broken.xml", "<cpacs><header>");
+  {
+    const xml::ReadAhead readAhead(path);
+    try {
+      Configuration::open(path);
+      FAIL();
+    } catch (const Error& error) {
+      EXPECT_EQ(error.code(), ErrorCode::NotXml);
+      EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
+    }
+  }
+  const xml::ReadAhead missing("/no/such/file.xml");
+  EXPECT_FALSE(xml::takeReadAhead("another.xml")) << "only the path read ahead is taken";
+  EXPECT_THROW(xml::takeReadAhead("/no/such/file.xml"), Error);
+  std::filesystem::remove(path);
+}
+
+TEST(ReadingAhead, AnUnusedReadAheadIsDroppedOnTheWayOut) {
+  const std::string path = temporaryFile("airshape_read_ahead_unused.xml", test::cpacsDocument(""));
+  { const xml::ReadAhead readAhead(path); }
+  EXPECT_FALSE(xml::takeReadAhead(path));
+  std::filesystem::remove(path);
 }
 
 /// A CPACS document with `depth` levels of <x> elements in its header, which the schema

@@ -21,6 +21,7 @@
 #include "airshape/error.h"
 #include "airshape/output_file.h"
 #include "airshape/xml/nesting.h"
+#include "airshape/xml/read_ahead.h"
 #include "airshape/xml/text.h"
 
 namespace airshape::xml {
@@ -82,7 +83,12 @@ Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 Document::~Document() = default;
 
-Document Document::fromFile(const std::string& path) { return fromString(readWholeFile(path), path); }
+Document Document::fromFile(const std::string& path) {
+  if (std::optional<Document> readAhead = takeReadAhead(path)) return std::move(*readAhead);
+  return readFile(path);
+}
+
+Document Document::readFile(const std::string& path) { return fromString(readWholeFile(path), path); }
 
 Document Document::fromString(const std::string& text, const std::string& name) {
   initializeXerces();

@@ -17,8 +17,11 @@ namespace airshape::xml {
 /// everything the typed model does not know, so saving it loses nothing.
 class Document {
  public:
-  /// Parses a file. Throws Error (FileNotFound, NotXml) naming the file and the line.
+  /// Parses a file (or takes it from a ReadAhead of that path, read_ahead.h). Throws Error
+  /// (FileNotFound, NotXml) naming the file and the line.
   static Document fromFile(const std::string& path);
+  /// Reads and parses a file here and now, whatever is read ahead.
+  static Document readFile(const std::string& path);
   /// Parses a string; `name` stands for the source in error messages.
   static Document fromString(const std::string& text, const std::string& name = "<string>");
 
