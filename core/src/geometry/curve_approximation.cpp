@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <Eigen/SparseLU>
+#include <GeomAdaptor_Curve.hxx>
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
@@ -66,7 +67,8 @@ gp_Pnt rowPoint(const PoleMatrix& points, std::size_t i) {
 
 /// The parameter of the foot of `point` on `curve`, by Newton's method on the squared
 /// distance from `start`; a step out of the curve's range returns to `start` and stops.
-double footParameter(const Geom_BSplineCurve& curve, const gp_Pnt& point, double start) {
+/// (An adaptor keeps the polynomial of the last knot span: the points come in order.)
+double footParameter(const GeomAdaptor_Curve& curve, const gp_Pnt& point, double start) {
   constexpr int kMaxSteps = 10;
   constexpr double kStepTolerance = 1e-6;
   double t = start;
@@ -84,7 +86,7 @@ double footParameter(const Geom_BSplineCurve& curve, const gp_Pnt& point, double
   return t;
 }
 
-double fitError(const Geom_BSplineCurve& curve, const std::vector<double>& parameters, const PoleMatrix& points,
+double fitError(const GeomAdaptor_Curve& curve, const std::vector<double>& parameters, const PoleMatrix& points,
                 FitError measure) {
   double largest = 0.0, squares = 0.0;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
@@ -103,15 +105,17 @@ Handle(Geom_BSplineCurve)
                             const InterpolationConstraints& constraints, FitError measure, int maxCorrections) {
   constexpr double kWorthwhileGain = 1e-3;
   Handle(Geom_BSplineCurve) curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
-  double error = fitError(*curve, parameters, points, measure), previous = 2.0 * error;
+  GeomAdaptor_Curve evaluator(curve);
+  double error = fitError(evaluator, parameters, points, measure), previous = 2.0 * error;
   for (int correction = 0;
        correction < maxCorrections && error > 0.0 && (previous - error) / std::max(error, 1e-6) > kWorthwhileGain;
        ++correction) {
     for (std::size_t i = 0; i < parameters.size(); ++i)
-      parameters[i] = footParameter(*curve, rowPoint(points, i), parameters[i]);
+      parameters[i] = footParameter(evaluator, rowPoint(points, i), parameters[i]);
     curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+    evaluator.Load(curve);
     previous = error;
-    error = fitError(*curve, parameters, points, measure);
+    error = fitError(evaluator, parameters, points, measure);
   }
   return curve;
 }
