@@ -2,10 +2,8 @@
 
 #include <map>
 
-#include <GCPnts_AbscissaPoint.hxx>
-#include <GeomAdaptor_Curve.hxx>
-
 #include "airshape/error.h"
+#include "airshape/geometry/arc_length.h"
 
 namespace airshape::fuselage {
 
@@ -20,16 +18,15 @@ struct ProfilePosition {
 };
 
 /// Finds positions by relative circumference on one placed profile. Many guides meet each
-/// profile and every one is asked for more than once, so the profile's length is measured
-/// once and each answer is kept (arc lengths were two thirds of the cost of building a
-/// guided fuselage). Each is measured from the profile's start, as the reference measures
-/// it: measuring on from a nearer known point moves it by up to 1e-9.
+/// profile and every one is asked for more than once, so the lengths up to the profile's
+/// knots are measured once (geometry::ArcLength) and each answer is kept: arc lengths were
+/// two thirds of the cost of building a guided fuselage.
 class CircumferenceWalker {
  public:
   explicit CircumferenceWalker(const PlacedProfile& section)
       : curve_(*section.curve),
-        adaptor_(section.curve),
-        curveLength_(GCPnts_AbscissaPoint::Length(adaptor_)),
+        arc_(section.curve),
+        curveLength_(arc_.total()),
         closingLength_(!section.profile->closed && !section.profile->mirroredHalf
                            ? curve_.StartPoint().Distance(curve_.EndPoint())
                            : 0.0) {}
@@ -46,7 +43,7 @@ class CircumferenceWalker {
     if (length < 0.0) return {start.Translated(curve_.DN(curve_.FirstParameter(), 1).Normalized() * length), {}};
     if (length <= curveLength_ * (1.0 + 1e-12)) {  // rc = 1 on a closed profile is its end
       if (length >= curveLength_) return {end, curve_.LastParameter()};
-      const double t = GCPnts_AbscissaPoint(adaptor_, length, curve_.FirstParameter()).Parameter();
+      const double t = arc_.parameterAt(length);
       return {curve_.Value(t), t};
     }
     if (closingLength_ == 0.0)
@@ -55,7 +52,7 @@ class CircumferenceWalker {
   }
 
   const Geom_BSplineCurve& curve_;
-  GeomAdaptor_Curve adaptor_;
+  geometry::ArcLength arc_;
   double curveLength_, closingLength_;
   std::map<double, ProfilePosition> positions_;
 };
