@@ -45,7 +45,7 @@ double chordDistance(const WingGeometry& geometry, std::size_t segment, const gp
 }
 
 bool accepts(const WingGeometry& geometry, const WingShape& shape, std::size_t segment, const gp_Pnt& point) {
-  const TopoDS_Shape& solid = shape.segments()[segment].solid;
+  const TopoDS_Shape& solid = shape.segmentSolid(segment);
   if (!solid.IsNull()) {
     BRepClass3d_SolidClassifier classifier(solid, point, kOnTolerance);
     if (classifier.State() == TopAbs_IN || classifier.State() == TopAbs_ON) return true;

@@ -72,10 +72,10 @@ SegmentShape guidedSegmentShape(const WingGeometry& geometry, std::size_t segmen
   if (split > u0) shape.lower = geometry::surfacePartFace(surface, u0, split, v0, v1);
   shape.upper = geometry::surfacePartFace(surface, split > u0 ? split : u0, u1, v0, v1);
   if (!closed) shape.trailingEdge = geometry::loftClosingFace(surface, v0, v1);
+  shape.sewnOnRequest = true;
   try {
     shape.innerCap = geometry::loftCap(surface, v0, closed);
     shape.outerCap = geometry::loftCap(surface, v1, closed);
-    shape.solid = geometry::sewnSolid({shape.upper, shape.lower, shape.trailingEdge, shape.innerCap, shape.outerCap});
   } catch (const Error& error) {
     throw Error(error.code(), error.message(), {}, geometry.segments()[segment].xpath);
   }
@@ -98,7 +98,23 @@ std::shared_ptr<const WingShape> WingShape::of(const Configuration& configuratio
   });
 }
 
-double WingShape::segmentVolume(std::size_t segment) const { return geometry::volumeOf(segments_[segment].solid); }
+const TopoDS_Shape& WingShape::segmentSolid(std::size_t segment) const {
+  const SegmentShape& shape = segments_[segment];
+  if (!shape.sewnOnRequest) return shape.solid;
+  const std::lock_guard<std::mutex> lock(sewingSegments_);
+  if (sewnSolids_.empty()) sewnSolids_.resize(segments_.size());
+  TopoDS_Shape& sewn = sewnSolids_[segment];
+  if (sewn.IsNull()) {
+    try {
+      sewn = geometry::sewnSolid({shape.upper, shape.lower, shape.trailingEdge, shape.innerCap, shape.outerCap});
+    } catch (const Error& error) {
+      throw Error(error.code(), error.message(), {}, segmentDefinitions_[segment].xpath);
+    }
+  }
+  return sewn;
+}
+
+double WingShape::segmentVolume(std::size_t segment) const { return geometry::volumeOf(segmentSolid(segment)); }
 
 double WingShape::segmentSurfaceArea(std::size_t segment) const {
   return geometry::areaOf(segments_[segment].upper) + geometry::areaOf(segments_[segment].lower);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace airshape::wing {
 /// when no guide runs along the leading edge).
 struct SegmentShape {
   TopoDS_Face upper, lower, trailingEdge, innerCap, outerCap;
-  TopoDS_Shape solid;
+  TopoDS_Shape solid;          ///< none for a guided segment: WingShape::segmentSolid sews it
+  bool sewnOnRequest = false;  ///< a guided segment's faces
 };
 
 /// The B-rep of a wing, segment by segment; measures are exact integrals over it.
@@ -32,6 +34,10 @@ class WingShape {
   static std::shared_ptr<const WingShape> of(const Configuration& configuration, const schema::WingType& wing);
 
   const std::vector<SegmentShape>& segments() const { return segments_; }
+  /// The solid of one segment. A guided segment's faces are sewn into it on the first
+  /// request only: exporting or measuring the whole wing never needs it, and sewing was
+  /// two thirds of building a guided wing.
+  const TopoDS_Shape& segmentSolid(std::size_t segment) const;
 
   double segmentVolume(std::size_t segment) const;
   /// Upper and lower skin of a segment.
@@ -53,6 +59,8 @@ class WingShape {
   std::string wingUid_, wingPath_;
   std::vector<WingSegment> segmentDefinitions_;  ///< per segment: its uID, CPACS path and airfoils
   std::vector<SegmentShape> segments_;
+  mutable std::mutex sewingSegments_;             ///< guards sewnSolids_
+  mutable std::vector<TopoDS_Shape> sewnSolids_;  ///< per segment, once sewn on request
 };
 
 }  // namespace airshape::wing
