@@ -1,10 +1,13 @@
 #include "step_brep_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <fstream>
+#include <future>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -188,6 +191,14 @@ class StepData {
     return id;
   }
   static std::string ref(int id) { return "#" + std::to_string(id); }
+  /// Numbers `count` entities whose text the caller formats itself (appended with
+  /// appendEntities, in order); returns the first number.
+  int reserve(std::size_t count) {
+    const int first = count_ + 1;
+    count_ += static_cast<int>(count);
+    return first;
+  }
+  void appendEntities(const std::string& text) { text_ += text; }
   const std::string& text() const { return text_; }
 
  private:
@@ -298,6 +309,12 @@ class GeometryWriter {
   int triple(const char* entity, double x, double y, double z) {
     int id;
     std::string& out = data_.begin(id);
+    appendTriple(out, entity, x, y, z);
+    data_.end();
+    return id;
+  }
+
+  static void appendTriple(std::string& out, const char* entity, double x, double y, double z) {
     out += entity;
     out += "('',(";
     appendReal(out, x);
@@ -306,8 +323,45 @@ class GeometryWriter {
     out += ',';
     appendReal(out, z);
     out += "))";
-    data_.end();
-    return id;
+  }
+
+  /// Consecutive CARTESIAN_POINTs; returns the first one's number. The poles of large
+  /// B-spline surfaces are most of a file's text, so long lists are formatted in parts on
+  /// every core.
+  int points(const std::vector<gp_Pnt>& points) {
+    constexpr std::size_t kPointsPerPart = 1000;  // a part's text takes about a millisecond
+    const int first = data_.reserve(points.size());
+    static const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());  // a file read each time
+    const std::size_t parts = std::clamp<std::size_t>(points.size() / kPointsPerPart, 1, cores);
+    std::vector<std::string> texts(parts);
+    auto format = [&](std::size_t part) {
+      const std::size_t begin = points.size() * part / parts, end = points.size() * (part + 1) / parts;
+      std::string& out = texts[part];
+      for (std::size_t i = begin; i < end; ++i) {
+        out += '#';
+        out += std::to_string(first + static_cast<int>(i));
+        out += " = ";
+        appendTriple(out, "CARTESIAN_POINT", points[i].X(), points[i].Y(), points[i].Z());
+        out += ";\n";
+      }
+    };
+    std::vector<std::future<void>> others;
+    for (std::size_t part = 1; part < parts; ++part) others.push_back(std::async(std::launch::async, format, part));
+    format(0);
+    for (auto& other : others) other.get();
+    for (const std::string& text : texts) data_.appendEntities(text);
+    return first;
+  }
+
+  /// The list of references to `count` consecutive entities from `first`.
+  static std::string consecutiveRefs(int first, int count) {
+    std::string out = "(";
+    for (int i = 0; i < count; ++i) {
+      if (i > 0) out += ',';
+      out += '#';
+      out += std::to_string(first + i);
+    }
+    return out + ")";
   }
 
   static std::string integerList(const TColStd_Array1OfInteger& values) {
@@ -327,20 +381,21 @@ class GeometryWriter {
   }
 
   int bsplineCurve(const Handle(Geom_BSplineCurve) & c) {
-    std::vector<int> poles;
-    for (int i = 1; i <= c->NbPoles(); ++i) poles.push_back(point(c->Pole(i)));
+    std::vector<gp_Pnt> poleList;
+    for (int i = 1; i <= c->NbPoles(); ++i) poleList.push_back(c->Pole(i));
+    const std::string poles = consecutiveRefs(points(poleList), c->NbPoles());
     const std::string knots = integerList(c->Multiplicities()) + "," + realList(c->Knots());
     const std::string degree = std::to_string(c->Degree());
     if (!c->IsRational())
-      return data_.add("B_SPLINE_CURVE_WITH_KNOTS(''," + degree + "," + refList(poles) + ",.UNSPECIFIED.,.F.,.F.," +
-                       knots + ",.UNSPECIFIED.)");
+      return data_.add("B_SPLINE_CURVE_WITH_KNOTS(''," + degree + "," + poles + ",.UNSPECIFIED.,.F.,.F.," + knots +
+                       ",.UNSPECIFIED.)");
     std::string weights = "(";
     for (int i = 1; i <= c->NbPoles(); ++i) {
       if (i > 1) weights += ',';
       appendReal(weights, c->Weight(i));
     }
     weights += ')';
-    return data_.add("( BOUNDED_CURVE() B_SPLINE_CURVE(" + degree + "," + refList(poles) +
+    return data_.add("( BOUNDED_CURVE() B_SPLINE_CURVE(" + degree + "," + poles +
                      ",.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS(" + knots +
                      ",.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE(" + weights +
                      ") REPRESENTATION_ITEM('') )");
@@ -356,12 +411,13 @@ class GeometryWriter {
       if (s->IsVPeriodic()) s->SetVNotPeriodic();
       s->Segment(u0, u1, v0, v1);
     }
+    std::vector<gp_Pnt> poleList;
+    for (int i = 1; i <= s->NbUPoles(); ++i)
+      for (int j = 1; j <= s->NbVPoles(); ++j) poleList.push_back(s->Pole(i, j));
+    const int first = points(poleList);
     std::string poles = "(";
-    for (int i = 1; i <= s->NbUPoles(); ++i) {
-      std::vector<int> row;
-      for (int j = 1; j <= s->NbVPoles(); ++j) row.push_back(point(s->Pole(i, j)));
-      poles += (i > 1 ? "," : "") + refList(row);
-    }
+    for (int i = 0; i < s->NbUPoles(); ++i)
+      poles += (i > 0 ? "," : "") + consecutiveRefs(first + i * s->NbVPoles(), s->NbVPoles());
     poles += ')';
     // STEP lists u multiplicities, v multiplicities, u knots, v knots.
     const std::string knots = integerList(s->UMultiplicities()) + "," + integerList(s->VMultiplicities()) + "," +
