@@ -11,8 +11,41 @@
 
 namespace airshape::geometry {
 
-PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& parameters, const PoleMatrix& points,
-                            const InterpolationConstraints& constraints) {
+namespace {
+
+/// Solves approximation systems one after another, reusing the sparse LU's analysis of the
+/// last system (its column ordering) when the next has the same pattern of non-zeros: the
+/// parameter corrections of one fit move samples within their knot spans mostly, and the
+/// analysis was half of each solve. The solutions are the same as with a fresh analysis.
+class ApproximationSolver {
+ public:
+  PoleMatrix solve(const KnotVector& space, const std::vector<double>& parameters, const PoleMatrix& points,
+                   const InterpolationConstraints& constraints);
+
+ private:
+  /// Analyses `system` unless the last one had its pattern, then factorises it.
+  void factorise(const Eigen::SparseMatrix<double>& system);
+
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver_;
+  std::vector<int> outerStarts_, innerIndices_;  ///< the pattern last analysed
+};
+
+void ApproximationSolver::factorise(const Eigen::SparseMatrix<double>& system) {
+  const auto columns = static_cast<std::size_t>(system.outerSize());
+  const auto nonZeros = static_cast<std::size_t>(system.nonZeros());
+  const bool samePattern = outerStarts_.size() == columns + 1 && innerIndices_.size() == nonZeros &&
+                           std::equal(outerStarts_.begin(), outerStarts_.end(), system.outerIndexPtr()) &&
+                           std::equal(innerIndices_.begin(), innerIndices_.end(), system.innerIndexPtr());
+  if (!samePattern) {
+    solver_.analyzePattern(system);
+    outerStarts_.assign(system.outerIndexPtr(), system.outerIndexPtr() + columns + 1);
+    innerIndices_.assign(system.innerIndexPtr(), system.innerIndexPtr() + nonZeros);
+  }
+  solver_.factorize(system);
+}
+
+PoleMatrix ApproximationSolver::solve(const KnotVector& space, const std::vector<double>& parameters,
+                                      const PoleMatrix& points, const InterpolationConstraints& constraints) {
   // The system is banded (each basis function lives on degree + 1 knot spans), so it is
   // assembled and solved in sparse form: linear in the number of control points.
   const Eigen::SparseMatrix<double> samples = sparseBasisMatrix(space, parameters);
@@ -48,17 +81,15 @@ PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& 
   }
   Eigen::SparseMatrix<double> system(poles + fixed, poles + fixed);
   system.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-  solver.compute(system);
-  if (solver.info() != Eigen::Success)
+  system.makeCompressed();
+  factorise(system);
+  if (solver_.info() != Eigen::Success)
     throw Error(ErrorCode::InvalidArgument,
                 "the approximation system is singular: " + std::to_string(parameters.size()) + " samples and " +
                     std::to_string(fixed) + " constraints for " + std::to_string(poles) + " control points");
-  const Eigen::MatrixXd solution = solver.solve(rightSide);
+  const Eigen::MatrixXd solution = solver_.solve(rightSide);
   return solution.topRows(poles);
 }
-
-namespace {
 
 gp_Pnt rowPoint(const PoleMatrix& points, std::size_t i) {
   const auto row = static_cast<Eigen::Index>(i);
@@ -100,11 +131,17 @@ double fitError(const GeomAdaptor_Curve& curve, const std::vector<double>& param
 
 }  // namespace
 
+PoleMatrix approximatePoles(const KnotVector& space, const std::vector<double>& parameters, const PoleMatrix& points,
+                            const InterpolationConstraints& constraints) {
+  return ApproximationSolver().solve(space, parameters, points, constraints);
+}
+
 Handle(Geom_BSplineCurve)
     fitCorrectingParameters(const KnotVector& space, std::vector<double> parameters, const PoleMatrix& points,
                             const InterpolationConstraints& constraints, FitError measure, int maxCorrections) {
   constexpr double kWorthwhileGain = 1e-3;
-  Handle(Geom_BSplineCurve) curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+  ApproximationSolver solver;
+  Handle(Geom_BSplineCurve) curve = makeCurve(space, solver.solve(space, parameters, points, constraints));
   GeomAdaptor_Curve evaluator(curve);
   double error = fitError(evaluator, parameters, points, measure), previous = 2.0 * error;
   for (int correction = 0;
@@ -112,7 +149,7 @@ Handle(Geom_BSplineCurve)
        ++correction) {
     for (std::size_t i = 0; i < parameters.size(); ++i)
       parameters[i] = footParameter(evaluator, rowPoint(points, i), parameters[i]);
-    curve = makeCurve(space, approximatePoles(space, parameters, points, constraints));
+    curve = makeCurve(space, solver.solve(space, parameters, points, constraints));
     evaluator.Load(curve);
     previous = error;
     error = fitError(evaluator, parameters, points, measure);
