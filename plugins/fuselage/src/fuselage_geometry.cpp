@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 #include <unordered_map>
 
 #include <GCPnts_AbscissaPoint.hxx>
@@ -22,6 +23,7 @@
 #include "airshape/model/guide_curves.h"
 #include "airshape/model/placed_elements.h"
 #include "airshape/model/segment_chain.h"
+#include "airshape/parallel_for.h"
 
 namespace airshape::fuselage {
 
@@ -41,21 +43,44 @@ class ProfileLibrary {
         definitions_.emplace(profile.uID, &profile);
   }
 
+  /// Builds the profiles of these uIDs on every core ahead of their use: a fuselage's point-list
+  /// profiles are fitted one by one otherwise. One that names nothing or cannot be built is
+  /// left to get(), which says why.
+  void prefetch(const std::vector<std::string>& uids) {
+    std::vector<const schema::ProfileGeometryType*> wanted;
+    for (const std::string& uid : std::set<std::string>(uids.begin(), uids.end()))
+      if (const auto definition = definitions_.find(uid); definition != definitions_.end() && !built_.count(uid))
+        wanted.push_back(definition->second);
+    std::vector<std::optional<FuselageProfile>> fitted(wanted.size());
+    parallelFor(wanted.size(), [&](std::size_t i) {
+      try {
+        fitted[i] = FuselageProfile::fromDefinition(*wanted[i]);
+      } catch (...) {  // get() builds it again and reports the error with its path
+      }
+    });
+    for (std::size_t i = 0; i < wanted.size(); ++i)
+      if (fitted[i]) built_.emplace(wanted[i]->uID, std::move(*fitted[i]));
+  }
+
+  /// The profile of `uid` (its warnings said on its first use, in the order of use).
   const FuselageProfile& get(const std::string& uid, const std::string& xpath) {
-    if (const auto built = built_.find(uid); built != built_.end()) return built->second;
-    const auto definition = definitions_.find(uid);
-    if (definition == definitions_.end())
-      throw Error(ErrorCode::InvalidModel, "profileUID '" + uid + "' names no fuselage profile", {}, xpath);
-    const FuselageProfile& profile =
-        built_.emplace(uid, FuselageProfile::fromDefinition(*definition->second)).first->second;
-    for (const Problem& warning : profile.warnings) configuration_.warnAboutGeometry(warning);
-    return profile;
+    auto built = built_.find(uid);
+    if (built == built_.end()) {
+      const auto definition = definitions_.find(uid);
+      if (definition == definitions_.end())
+        throw Error(ErrorCode::InvalidModel, "profileUID '" + uid + "' names no fuselage profile", {}, xpath);
+      built = built_.emplace(uid, FuselageProfile::fromDefinition(*definition->second)).first;
+    }
+    if (used_.insert(uid).second)
+      for (const Problem& warning : built->second.warnings) configuration_.warnAboutGeometry(warning);
+    return built->second;
   }
 
  private:
   const Configuration& configuration_;
   std::unordered_map<std::string, const schema::ProfileGeometryType*> definitions_;
   std::unordered_map<std::string, FuselageProfile> built_;
+  std::set<std::string> used_;  ///< profiles whose warnings were said
 };
 
 /// The piece's solid; where it has none, an error naming `xpath`.
@@ -120,6 +145,9 @@ std::shared_ptr<const FuselageGeometry> FuselageGeometry::build(const Configurat
     ProfileLibrary profiles(configuration);
     const auto placed = model::placedElements(fuselage, placement);
     if (!fuselage.segments) return std::shared_ptr<const FuselageGeometry>(geometry);
+    std::vector<std::string> profileUids;
+    for (const auto& [uid, element] : placed) profileUids.push_back(element.element->profileUID);
+    profiles.prefetch(profileUids);
     std::vector<PlacedProfile> sections;  // in chain order
     std::vector<const schema::GuideCurvesType*> guidesPerSegment;
     std::vector<std::string> segmentXpaths;
