@@ -10,6 +10,7 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/periodic_curve.h"
+#include "airshape/parallel_for.h"
 
 namespace airshape::geometry {
 
@@ -192,25 +193,42 @@ std::vector<Eigen::Index> orderOf(const Eigen::VectorXd& values) {
   return order;
 }
 
-}  // namespace
+/// A curve's points at its sample parameters: where searches for closest approaches start.
+struct SampledCurve {
+  std::vector<double> parameters;
+  std::vector<gp_Pnt> points;
+};
 
-CurveCrossing closestApproach(const Geom_BSplineCurve& a, const Geom_BSplineCurve& b) {
-  const std::vector<double> sa = samples(a), sb = samples(b);
-  std::vector<gp_Pnt> pa, pb;
-  for (double t : sa) pa.push_back(a.Value(t));
-  for (double t : sb) pb.push_back(b.Value(t));
-  // The few best sample pairs are refined; the best refinement wins.
+SampledCurve sampled(const Geom_BSplineCurve& curve) {
+  SampledCurve result{samples(curve), {}};
+  for (double t : result.parameters) result.points.push_back(curve.Value(t));
+  return result;
+}
+
+/// The closest approach from the curves' samples (each curve sampled once for all the curves
+/// it crosses): the few best sample pairs are refined; the best refinement wins.
+CurveCrossing closestApproach(const Geom_BSplineCurve& a, const SampledCurve& sa, const Geom_BSplineCurve& b,
+                              const SampledCurve& sb) {
   std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> candidates;
-  for (std::size_t i = 0; i < pa.size(); ++i)
-    for (std::size_t j = 0; j < pb.size(); ++j) candidates.push_back({pa[i].SquareDistance(pb[j]), {i, j}});
+  candidates.reserve(sa.points.size() * sb.points.size());
+  for (std::size_t i = 0; i < sa.points.size(); ++i)
+    for (std::size_t j = 0; j < sb.points.size(); ++j)
+      candidates.push_back({sa.points[i].SquareDistance(sb.points[j]), {i, j}});
   const std::size_t keep = std::min<std::size_t>(4, candidates.size());
   std::partial_sort(candidates.begin(), candidates.begin() + static_cast<long>(keep), candidates.end());
   CurveCrossing best{0, 0, HUGE_VAL};
   for (std::size_t c = 0; c < keep; ++c) {
-    const CurveCrossing crossing = refine(a, b, sa[candidates[c].second.first], sb[candidates[c].second.second]);
+    const CurveCrossing crossing =
+        refine(a, b, sa.parameters[candidates[c].second.first], sb.parameters[candidates[c].second.second]);
     if (crossing.distance < best.distance) best = crossing;
   }
   return best;
+}
+
+}  // namespace
+
+CurveCrossing closestApproach(const Geom_BSplineCurve& a, const Geom_BSplineCurve& b) {
+  return closestApproach(a, sampled(a), b, sampled(b));
 }
 
 CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
@@ -224,22 +242,33 @@ CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
   CurveNetwork network;
   network.profileParameters.resize(K, L);
   network.guideParameters.resize(K, L);
-  for (Eigen::Index k = 0; k < K; ++k)
-    for (Eigen::Index l = 0; l < L; ++l) {
-      const Geom_BSplineCurve& profile = *profiles[static_cast<std::size_t>(k)];
-      const Geom_BSplineCurve& guide = *guides[static_cast<std::size_t>(l)];
-      const CurveCrossing crossing = known ? CurveCrossing{known->profileParameters(k, l), known->guideParameters(k, l),
-                                                           profile.Value(known->profileParameters(k, l))
-                                                               .Distance(guide.Value(known->guideParameters(k, l)))}
-                                           : closestApproach(profile, guide);
-      if (crossing.distance > tolerance) {
-        throw Error(ErrorCode::InvalidArgument, "guide " + std::to_string(l + 1) + " misses profile " +
-                                                    std::to_string(k + 1) + " by " + std::to_string(crossing.distance) +
-                                                    " (tolerance " + std::to_string(tolerance) + ")");
-      }
-      network.profileParameters(k, l) = crossing.first;
-      network.guideParameters(k, l) = crossing.second;
+  // Every pair of a profile and a guide on every core, each curve sampled once.
+  std::vector<SampledCurve> profileSamples(profiles.size()), guideSamples(guides.size());
+  if (!known) {
+    parallelFor(profiles.size() + guides.size(), [&](std::size_t i) {
+      if (i < profiles.size())
+        profileSamples[i] = sampled(*profiles[i]);
+      else
+        guideSamples[i - profiles.size()] = sampled(*guides[i - profiles.size()]);
+    });
+  }
+  parallelFor(static_cast<std::size_t>(K * L), [&](std::size_t pair) {
+    const auto k = static_cast<Eigen::Index>(pair) / L, l = static_cast<Eigen::Index>(pair) % L;
+    const Geom_BSplineCurve& profile = *profiles[static_cast<std::size_t>(k)];
+    const Geom_BSplineCurve& guide = *guides[static_cast<std::size_t>(l)];
+    const CurveCrossing crossing = known ? CurveCrossing{known->profileParameters(k, l), known->guideParameters(k, l),
+                                                         profile.Value(known->profileParameters(k, l))
+                                                             .Distance(guide.Value(known->guideParameters(k, l)))}
+                                         : closestApproach(profile, profileSamples[static_cast<std::size_t>(k)], guide,
+                                                           guideSamples[static_cast<std::size_t>(l)]);
+    if (crossing.distance > tolerance) {
+      throw Error(ErrorCode::InvalidArgument, "guide " + std::to_string(l + 1) + " misses profile " +
+                                                  std::to_string(k + 1) + " by " + std::to_string(crossing.distance) +
+                                                  " (tolerance " + std::to_string(tolerance) + ")");
     }
+    network.profileParameters(k, l) = crossing.first;
+    network.guideParameters(k, l) = crossing.second;
+  });
 
   // A crossing counts as at the seam of a curve closed with a corner when it lies much closer
   // to the seam point than crossing curves lie to each other.
