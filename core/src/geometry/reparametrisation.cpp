@@ -10,6 +10,7 @@
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/curve_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/parallel_for.h"
 
 namespace airshape::geometry {
 
@@ -232,9 +233,13 @@ ReparametrisedFamily reparametrise(const CurveFamily& family, double tolerance) 
     result.curves.clear();
     result.maxDeviation = 0.0;
     std::vector<double> splits;
-    for (std::size_t c = 0; c < family.curves.size(); ++c) {
-      Approximation a = approximate(family.curves[c], prepared.maps[c], prepared.targets, family.crossings[c], space,
-                                    family.closed, tolerance);
+    // The curves are approximated independently, on every core.
+    std::vector<Approximation> approximations(family.curves.size());
+    parallelFor(family.curves.size(), [&](std::size_t c) {
+      approximations[c] = approximate(family.curves[c], prepared.maps[c], prepared.targets, family.crossings[c], space,
+                                      family.closed, tolerance);
+    });
+    for (const Approximation& a : approximations) {
       result.curves.push_back(a.curve);
       result.maxDeviation = std::max(result.maxDeviation, a.deviation);
       for (double s : a.misses) {
