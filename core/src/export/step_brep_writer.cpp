@@ -6,9 +6,7 @@
 #include <cmath>
 #include <ctime>
 #include <fstream>
-#include <future>
 #include <ostream>
-#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -193,14 +191,6 @@ class StepData {
     return id;
   }
   static std::string ref(int id) { return "#" + std::to_string(id); }
-  /// Numbers `count` entities whose text the caller formats itself (appended with
-  /// appendEntities, in order); returns the first number.
-  int reserve(std::size_t count) {
-    const int first = count_ + 1;
-    count_ += static_cast<int>(count);
-    return first;
-  }
-  void appendEntities(std::string text) { chunks_.push_back(std::move(text)); }
   /// The entities' text, in order.
   void writeTo(std::ostream& out) const {
     for (const std::string& chunk : chunks_) out << chunk;
@@ -326,12 +316,6 @@ class GeometryWriter {
   int triple(const char* entity, double x, double y, double z) {
     int id;
     std::string& out = data_.begin(id);
-    appendTriple(out, entity, x, y, z);
-    data_.end();
-    return id;
-  }
-
-  static void appendTriple(std::string& out, const char* entity, double x, double y, double z) {
     out += entity;
     out += "('',(";
     appendReal(out, x);
@@ -340,33 +324,17 @@ class GeometryWriter {
     out += ',';
     appendReal(out, z);
     out += "))";
+    data_.end();
+    return id;
   }
 
-  /// Consecutive CARTESIAN_POINTs; returns the first one's number. The poles of large
-  /// B-spline surfaces are most of a file's text, so long lists are formatted in parts on
-  /// every core.
-  int points(const std::vector<gp_Pnt>& points) {
-    constexpr std::size_t kPointsPerPart = 1000;  // a part's text takes about a millisecond
-    const int first = data_.reserve(points.size());
-    static const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());  // a file read each time
-    const std::size_t parts = std::clamp<std::size_t>(points.size() / kPointsPerPart, 1, cores);
-    std::vector<std::string> texts(parts);
-    auto format = [&](std::size_t part) {
-      const std::size_t begin = points.size() * part / parts, end = points.size() * (part + 1) / parts;
-      std::string& out = texts[part];
-      for (std::size_t i = begin; i < end; ++i) {
-        out += '#';
-        out += std::to_string(first + static_cast<int>(i));
-        out += " = ";
-        appendTriple(out, "CARTESIAN_POINT", points[i].X(), points[i].Y(), points[i].Z());
-        out += ";\n";
-      }
-    };
-    std::vector<std::future<void>> others;
-    for (std::size_t part = 1; part < parts; ++part) others.push_back(std::async(std::launch::async, format, part));
-    format(0);
-    for (auto& other : others) other.get();
-    for (std::string& text : texts) data_.appendEntities(std::move(text));
+  /// Consecutive CARTESIAN_POINTs; returns the first one's number.
+  int points(const std::vector<gp_Pnt>& list) {
+    int first = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const int id = point(list[i]);
+      if (i == 0) first = id;
+    }
     return first;
   }
 
