@@ -1,12 +1,11 @@
 #include "airshape/geometry/arc_length.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include <gp_Vec.hxx>
-#include <math.hxx>
-#include <math_Vector.hxx>
+
+#include "airshape/geometry/gauss_rule.h"
 
 namespace airshape::geometry {
 
@@ -20,22 +19,9 @@ constexpr double kSteadySpeed = 1.5;
 /// Halvings of one interval at most (a speed that vanishes inside a span needs some).
 constexpr int kMaxHalvings = 24;
 
-/// The Gauss–Legendre rule on [-1, 1], computed once.
-struct GaussRule {
-  std::array<double, kGaussPoints> points{}, weights{};
-  GaussRule() {
-    math_Vector p(1, kGaussPoints), w(1, kGaussPoints);
-    math::GaussPoints(kGaussPoints, p);
-    math::GaussWeights(kGaussPoints, w);
-    for (int i = 0; i < kGaussPoints; ++i) {
-      points[static_cast<std::size_t>(i)] = p(i + 1);
-      weights[static_cast<std::size_t>(i)] = w(i + 1);
-    }
-  }
-};
-
+/// The rule every interval is integrated with, computed once.
 const GaussRule& gaussRule() {
-  static const GaussRule rule;
+  static const GaussRule rule(kGaussPoints);
   return rule;
 }
 
@@ -68,10 +54,10 @@ double ArcLength::integral(double from, double to) const {
     slowest = HUGE_VAL;
     fastest = 0.0;
     for (int i = 0; i < kGaussPoints; ++i) {
-      const double rate = speed(middle + half * rule.points[static_cast<std::size_t>(i)]);
+      const double rate = speed(middle + half * rule.points(i + 1));
       slowest = std::min(slowest, rate);
       fastest = std::max(fastest, rate);
-      sum += rule.weights[static_cast<std::size_t>(i)] * rate;
+      sum += rule.weights(i + 1) * rate;
     }
     return sum * half;
   };

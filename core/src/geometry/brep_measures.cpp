@@ -25,23 +25,14 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
-#include <math.hxx>
-#include <math_Vector.hxx>
+
+#include "airshape/geometry/gauss_rule.h"
 
 namespace airshape::geometry {
 
 namespace {
 
 constexpr double kIntegrationAccuracy = 1e-9;
-
-/// Gauss–Legendre points and weights on [-1, 1].
-struct GaussRule {
-  math_Vector points, weights;
-  explicit GaussRule(int count) : points(1, count), weights(1, count) {
-    math::GaussPoints(count, points);
-    math::GaussWeights(count, weights);
-  }
-};
 
 /// The surface of a face bounded by four iso-lines of a polynomial B-spline surface, with
 /// its parameter rectangle; nothing for any other face.
