@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include <Standard_Failure.hxx>
 
@@ -138,8 +139,8 @@ int run(int argc, char** argv) {
   // commands that read CPACS files or list plugins, which meanwhile read their file.
   std::optional<xml::ReadAhead> readAhead;  // waits for its thread on the way out, however left
   if (word != "gordon") {
-    if (!arguments.empty() && !arguments[0].empty() && arguments[0][0] != '-' &&
-        std::filesystem::is_regular_file(arguments[0]))
+    std::error_code unreadable;  // the command itself says what is wrong with its file
+    if (!arguments.empty() && std::filesystem::is_regular_file(arguments[0], unreadable))
       readAhead.emplace(arguments[0]);
     host.loadDefaultPlugins();
     for (const std::string& message : host.messages()) std::cerr << "airshape: plugin: " << message << '\n';
