@@ -16,6 +16,13 @@ namespace airshape::geometry {
 
 namespace {
 
+/// Where two curves come closest: parameters and distance.
+struct CurveCrossing {
+  double first;
+  double second;
+  double distance;
+};
+
 constexpr int kSamples = 64;
 
 double clampTo(const Geom_BSplineCurve& curve, double t) {
@@ -226,10 +233,6 @@ CurveCrossing closestApproach(const Geom_BSplineCurve& a, const SampledCurve& sa
 }
 
 }  // namespace
-
-CurveCrossing closestApproach(const Geom_BSplineCurve& a, const Geom_BSplineCurve& b) {
-  return closestApproach(a, sampled(a), b, sampled(b));
-}
 
 CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
                                std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance,

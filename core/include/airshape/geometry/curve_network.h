@@ -40,14 +40,4 @@ CurveNetwork buildCurveNetwork(std::vector<Handle(Geom_BSplineCurve)> profiles,
                                std::vector<Handle(Geom_BSplineCurve)> guides, double tolerance,
                                const KnownCrossings* known = nullptr);
 
-/// Where two curves come closest: parameters and distance.
-struct CurveCrossing {
-  double first;
-  double second;
-  double distance;
-};
-
-/// The closest approach of two curves (sampled, then refined by Newton's method).
-CurveCrossing closestApproach(const Geom_BSplineCurve& a, const Geom_BSplineCurve& b);
-
 }  // namespace airshape::geometry
