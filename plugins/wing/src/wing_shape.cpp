@@ -94,6 +94,7 @@ std::shared_ptr<const WingShape> WingShape::of(const Configuration& configuratio
     for (std::size_t k = 0; k < geometry->segments().size(); ++k)
       shape->segments_.push_back(geometry->guidedSkin() ? guidedSegmentShape(*geometry, k)
                                                         : segmentShape(geometry->segments()[k]));
+    shape->sewnSolids_.resize(shape->segments_.size());
     return std::shared_ptr<const WingShape>(shape);
   });
 }
@@ -102,7 +103,6 @@ const TopoDS_Shape& WingShape::segmentSolid(std::size_t segment) const {
   const SegmentShape& shape = segments_[segment];
   if (!shape.sewnOnRequest) return shape.solid;
   const std::lock_guard<std::mutex> lock(sewingSegments_);
-  if (sewnSolids_.empty()) sewnSolids_.resize(segments_.size());
   TopoDS_Shape& sewn = sewnSolids_[segment];
   if (sewn.IsNull()) {
     try {
