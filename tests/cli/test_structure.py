@@ -371,3 +371,31 @@ def test_spar_positions_on_ribs(tmp_path):
     assert area["ok"] == pytest.approx(4.0 * height(0.4), rel=1e-7)
     assert box["ok"]["min"][0] == pytest.approx(1.8, abs=1e-6) and box["ok"]["min"][1] == pytest.approx(0.5, abs=1e-6)
     assert "sparPosition[7]/sparPositionRib" in broken["error"] and "has no rib 9" in broken["error"]
+
+
+def test_spar_positions_on_curves(tmp_path):
+    # Spars at ξ 0.2 and 0.6 over the whole span (y 0 to 5); a diagonal spar from a quarter of the
+    # front spar's length (y 1.25, ξ 0.2) to three quarters of the rear spar's (y 3.75, ξ 0.6): one
+    # plane piece along which ξ runs linearly from 0.2 to 0.4.
+    def on_curve(uid, eta, line):
+        return (f'<sparPosition uID="{uid}"><sparPositionCurve><eta>{eta}</eta>'
+                f"<referenceUID>{line}</referenceUID></sparPositionCurve></sparPosition>")
+
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6) + on_curve("OnFront", 0.25, "Front") + on_curve("OnRear", 0.75, "Rear") +
+                 on_curve("OnLoop", 0.5, "Loop") + on_curve("OnNothing", 0.5, "Nothing"))
+    segments = (segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1") +
+                segment("Diagonal", "OnFront", "OnRear") + segment("Loop", "PosF0", "OnLoop") +
+                segment("Dangling", "PosF0", "OnNothing"))
+    path = with_spars(tmp_path, positions, segments)
+    area, box, loop, dangling = ask(path, {"op": "component_surface_area", "uid": "Diagonal"},
+                                    {"op": "bounding_box", "uid": "Diagonal"},
+                                    {"op": "component_surface_area", "uid": "Loop"},
+                                    {"op": "component_surface_area", "uid": "Dangling"})
+    mean = (0.6 * (0.6 ** 2 / 2 - 0.6 ** 3 / 3) - 0.6 * (0.2 ** 2 / 2 - 0.2 ** 3 / 3)) / 0.4
+    assert area["ok"] == pytest.approx(math.hypot(2.5, 0.8) * mean, rel=1e-7)
+    assert box["ok"]["min"][:2] == pytest.approx([1.4, 1.25], abs=1e-6)
+    assert box["ok"]["max"][:2] == pytest.approx([2.2, 3.75], abs=1e-6)
+    assert "sparPosition[7]/sparPositionCurve/referenceUID" in loop["error"]
+    assert "positioned on itself" in loop["error"]
+    assert "sparPosition[8]/sparPositionCurve/referenceUID" in dangling["error"] and "'Nothing'" in dangling["error"]

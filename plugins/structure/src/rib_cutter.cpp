@@ -27,29 +27,16 @@ RibCutter::RibCutter(const Configuration& configuration, const StructureFrame& f
                      const schema::WingComponentSegmentStructureType& structure)
     : configuration_(configuration), frame_(frame), structure_(structure), reach_(frame.reach()) {}
 
-Polyline RibCutter::lineNamed(const std::string& name, const std::string& where) const {
-  if (sameName(name, "leadingEdge")) return frame_.leadingEdge();
-  if (sameName(name, "trailingEdge")) return frame_.trailingEdge();
-  try {
-    return frame_.sparLine(sparSegmentNamed(configuration_, name));
-  } catch (const Error& error) {
-    if (!error.cpacsPath().empty()) throw;
-    throw Error(error.code(), error.message(), {}, where);
-  }
-}
-
 gp_Pnt RibCutter::pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
                           const schema::Child<schema::CurvePointType>& curve,
                           const std::optional<std::string>& sparPosition, const std::string& where) const {
   if (etaXsi) return frame_.chordPoint(etaXsi->referenceUID, etaXsi->eta, etaXsi->xsi);
-  if (curve) return lineNamed(curve->referenceUID, where + "CurvePoint").at(curve->eta);
+  if (curve) return frame_.lineNamed(curve->referenceUID, where + "CurvePoint").at(curve->eta);
   if (sparPosition) {
     if (structure_.spars && structure_.spars->sparPositions)
       for (const auto& position : structure_.spars->sparPositions->sparPosition)
-        if (position.uID == *sparPosition && (position.sparPositionEtaXsi || position.sparPositionRib))
-          return frame_.positionPoint(sparPositionOf(position));
-    throw Error(ErrorCode::InvalidModel,
-                "spar position '" + *sparPosition + "' is not one given by eta and xsi or on a rib", {},
+        if (position.uID == *sparPosition) return frame_.positionPoint(sparPositionOf(position));
+    throw Error(ErrorCode::InvalidModel, "spar position '" + *sparPosition + "' names no spar position", {},
                 where + "SparPositionUID");
   }
   throw Error(ErrorCode::InvalidModel, "the rib has no start or end point", {}, where);

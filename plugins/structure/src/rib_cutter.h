@@ -26,10 +26,6 @@ class RibCutter {
   RibCutter(const Configuration& configuration, const StructureFrame& frame,
             const schema::WingComponentSegmentStructureType& structure);
 
-  /// The leading edge, the trailing edge or a spar's midplane line (wing frame); an error
-  /// names `where` when the name is none of them.
-  Polyline lineNamed(const std::string& name, const std::string& where) const;
-
   /// A rib's start or end point (wing frame) given by eta and xsi, on a line, or at a spar position.
   gp_Pnt pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
                  const schema::Child<schema::CurvePointType>& curve, const std::optional<std::string>& sparPosition,

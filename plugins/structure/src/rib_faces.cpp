@@ -56,7 +56,7 @@ class RibSet {
         positioning_(*ribs.node->ribsPositioning),
         cutter_(cutter),
         frame_(cutter.frame()),
-        reference_(cutter.lineNamed(positioning_.ribReference, xpath() + "/ribReference")) {}
+        reference_(cutter.frame().lineNamed(positioning_.ribReference, xpath() + "/ribReference")) {}
 
   std::vector<RibPlacement> placements() const {
     const bool startsOnSpar = positioning_.startSparPositionUID.has_value();
@@ -118,7 +118,8 @@ class RibSet {
       axis = gp_Dir(up);
     } else {
       try {
-        direction = directionOfLineAtAngle(cutter_.lineNamed(reference, xpath() + "/ribRotation"), point, up, z);
+        direction =
+            directionOfLineAtAngle(cutter_.frame().lineNamed(reference, xpath() + "/ribRotation"), point, up, z);
       } catch (const Error& error) {
         if (!error.cpacsPath().empty()) throw;
         throw Error(error.code(), error.message(), {}, xpath() + "/ribRotation");

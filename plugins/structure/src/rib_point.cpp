@@ -66,7 +66,7 @@ gp_Pnt pointOnRib(const Configuration& configuration, const StructureFrame& fram
     throw Error(ErrorCode::InvalidModel, "ribs definition '" + ribsUid + "' places no rib", {}, where);
   }
   auto crossing = [&](const std::string& line) {
-    const Polyline border = cutter.lineNamed(line, where);
+    const Polyline border = cutter.frame().lineNamed(line, where);
     const auto share = border.crossing(plane.Location(), gp_Vec(plane.Axis().Direction()));
     if (!share) throw Error(ErrorCode::InvalidModel, "the rib does not reach its border '" + line + "'", {}, where);
     return border.at(*share);

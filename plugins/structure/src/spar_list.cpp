@@ -21,6 +21,8 @@ SparPosition sparPositionOf(const schema::SparPositionType& node) {
     position.ribNumber = node.sparPositionRib->ribNumber.value_or(1);
   } else if (node.sparPositionCurve) {
     position.kind = SparPosition::Kind::OnCurve;
+    position.eta = node.sparPositionCurve->eta;
+    position.referenceUid = node.sparPositionCurve->referenceUID;
   } else {
     // Older files name the point otherwise (sparPoint): nothing CPACS 3.5 can place.
     throw Error(ErrorCode::InvalidModel,

@@ -18,8 +18,10 @@ struct SparPosition {
   std::string xpath;
   Kind kind = Kind::EtaXsi;
   double eta = 0.0, xsi = 0.0;
-  std::string referenceUid;  ///< EtaXsi: the component segment or a wing segment of its wing
-  std::string ribsUid;       ///< OnRib: the ribs definition, and the rib's number in it (from 1)
+  /// EtaXsi: the component segment or a wing segment of its wing; OnCurve: the line (a spar
+  /// segment, the leading or the trailing edge) whose length eta is a share of
+  std::string referenceUid;
+  std::string ribsUid;  ///< OnRib: the ribs definition, and the rib's number in it (from 1)
   long long ribNumber = 1;
 };
 

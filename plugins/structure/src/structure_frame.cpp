@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "rib_cutter.h"
 #include "rib_point.h"
 
 namespace airshape::structure {
@@ -15,6 +17,25 @@ namespace airshape::structure {
 namespace {
 
 using Surface = wing::WingServices::Surface;
+
+/// The spars whose lines are being looked at on this thread: a spar positioned on a spar that
+/// is itself positioned on the first would be built forever.
+thread_local std::set<std::string> sparsInUse;
+
+class SparsGuard {
+ public:
+  SparsGuard(const std::string& uid, const std::string& where) : uid_(uid) {
+    if (!sparsInUse.insert(uid).second)
+      throw Error(ErrorCode::InvalidModel,
+                  "spar '" + uid + "' is positioned on itself through spar positions on curves", {}, where);
+  }
+  ~SparsGuard() { sparsInUse.erase(uid_); }
+  SparsGuard(const SparsGuard&) = delete;
+  SparsGuard& operator=(const SparsGuard&) = delete;
+
+ private:
+  std::string uid_;
+};
 
 gp_Vec linearly(const model::Transform& transform, const gp_Vec& v) {
   return gp_Vec(model::apply(transform, gp_Pnt(0, 0, 0)), model::apply(transform, gp_Pnt(v.XYZ())));
@@ -122,10 +143,23 @@ gp_Pnt StructureFrame::positionPoint(const SparPosition& position) const {
     case SparPosition::Kind::OnRib:
       return pointOnRib(configuration_, *this, position.ribsUid, position.ribNumber, position.xsi,
                         position.xpath + "/sparPositionRib");
-    case SparPosition::Kind::OnCurve:
-      break;
+    case SparPosition::Kind::OnCurve: {
+      const std::string where = position.xpath + "/sparPositionCurve/referenceUID";
+      const SparsGuard guard(position.referenceUid, where);
+      return lineNamed(position.referenceUid, where).at(position.eta);
+    }
   }
-  throw Error(ErrorCode::NotImplemented, "spar positions on curves are not built yet", {}, position.xpath);
+  throw Error(ErrorCode::InvalidModel, "unknown kind of spar position", {}, position.xpath);
+}
+
+Polyline StructureFrame::lineNamed(const std::string& name, const std::string& where) const {
+  if (isWingEdge(name)) return sameName(name, "leadingEdge") ? leadingEdge() : trailingEdge();
+  try {
+    return sparLine(sparSegmentNamed(configuration_, name));
+  } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;
+    throw Error(error.code(), error.message(), {}, where);
+  }
 }
 
 Polyline StructureFrame::sparLine(const SparSegment& spar) const {

@@ -50,7 +50,11 @@ class StructureFrame {
   Polyline midplaneLine(const gp_Pnt& from, const gp_Pnt& to) const;
   /// The midplane line through a spar segment's positions, in the wing frame.
   Polyline sparLine(const SparSegment& spar) const;
-  /// A spar position's point on the chord surface (wing frame): by eta and xsi, or on a rib.
+  /// The leading edge, the trailing edge or a spar's midplane line (wing frame), by name (a
+  /// spar segment's uID); an error names `where` when the name is none of them.
+  Polyline lineNamed(const std::string& name, const std::string& where) const;
+  /// A spar position's point on the chord surface (wing frame): by eta and xsi, on a rib, or
+  /// at a share of the length of a line (`lineNamed`).
   gp_Pnt positionPoint(const SparPosition& position) const;
 
   /// The component segment's solid (global frame) and the size of its box (a length that
