@@ -106,3 +106,54 @@ def test_configuration_length_leaves_nacelles_and_empty_pylons_out():
 def test_nacelle_conformance_does_not_regress():
     passed, output = conformance_passed("cases-nacelle.json")
     assert passed >= 35, output[-3000:]
+
+
+def cst_side(x, n1, n2, coefficients):
+    n = len(coefficients) - 1
+    shape = sum(b * math.comb(n, i) * x ** i * (1 - x) ** (n - i) for i, b in enumerate(coefficients))
+    return x ** n1 * (1 - x) ** n2 * shape
+
+
+def with_cowl_profile(tmp_path, name, profile_xml):
+    with open(ENGINES) as original:
+        text = original.read()
+    start = text.index('<nacelleProfile uID="Cowl">')
+    end = text.index("</nacelleProfile>", start) + len("</nacelleProfile>")
+    path = tmp_path / name
+    path.write_text(text[:start] + f'<nacelleProfile uID="Cowl"><name>c</name>{profile_xml}</nacelleProfile>' +
+                    text[end:])
+    return path
+
+
+def test_a_cst_cowl_profile_is_the_curve_its_formula_gives(tmp_path):
+    # A round-nosed symmetric CST profile (N1 = 0.5, N2 = 1, B = 0.1, 0.12, 0.1) against the same
+    # formula written out as a dense point list: the two cowls agree as closely as the points' curve
+    # follows the formula.
+    upper_b = [0.1, 0.12, 0.1]
+    cst = ("<cst2D><psi>0;1</psi><upperN1>0.5</upperN1><upperN2>1</upperN2><upperB>0.1;0.12;0.1</upperB>"
+           "<lowerN1>0.5</lowerN1><lowerN2>1</lowerN2><lowerB>0.1;0.12;0.1</lowerB></cst2D>")
+    xs = [(1 - math.cos(math.pi * k / 1600)) / 2 for k in range(1601)]
+    lower = [(x, -cst_side(x, 0.5, 1, upper_b)) for x in reversed(xs)]
+    upper = [(x, cst_side(x, 0.5, 1, upper_b)) for x in xs[1:]]
+    points = lower + upper
+    listed = (f"<pointList><x>{';'.join(repr(x) for x, _ in points)}</x>"
+              f"<y>{';'.join(repr(y) for _, y in points)}</y></pointList>")
+    by_formula, box, meridian, high = ask(
+        with_cowl_profile(tmp_path, "cst.xml", cst), {"op": "component_volume", "uid": "Low"},
+        {"op": "bounding_box", "uid": "Low"},
+        {"op": "cross_section_area", "uid": "Low", "point": [0, 20, 0], "normal": [0, 0, 1]},
+        {"op": "component_volume", "uid": "High"})
+    by_points, = ask(with_cowl_profile(tmp_path, "listed.xml", listed), {"op": "component_volume", "uid": "Low"})
+    assert math.isclose(by_formula, by_points, rel_tol=1e-7)
+    # Chord 2 from x = 1 to 3 (placed at the wing, x = 1), and Pappus between the two radii.
+    assert math.isclose(box["min"][0], 1, abs_tol=1e-6) and math.isclose(box["max"][0], 3, abs_tol=1e-6)
+    assert math.isclose(high - by_formula, 2 * math.pi * (meridian / 2) * 0.3, rel_tol=1e-5)
+
+
+def test_a_broken_cst_cowl_profile_names_its_path(tmp_path):
+    cst = ("<cst2D><psi>0;1</psi><upperN1>-0.5</upperN1><upperN2>1</upperN2><upperB>0.1</upperB>"
+           "<lowerN1>0.5</lowerN1><lowerN2>1</lowerN2><lowerB>0.1</lowerB></cst2D>")
+    result = airshape("query", str(with_cowl_profile(tmp_path, "broken.xml", cst)),
+                      stdin=json.dumps({"op": "component_volume", "uid": "Low"}) + "\n")
+    error = json.loads(result.stdout)["error"]
+    assert "nacelleProfile[1]/cst2D/upperN1" in error and "must not be negative" in error

@@ -2,11 +2,14 @@
 
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAdaptor_Curve.hxx>
+#include <GeomConvert_CompCurveToBSplineCurve.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/bspline_curve.h"
+#include "airshape/geometry/chebyshev_approximation.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/model/cst_airfoil.h"
 #include "airshape/model/placement.h"
 
 namespace airshape::nacelle {
@@ -29,6 +32,27 @@ const schema::ProfileGeometry2DType* findProfile(const Configuration& configurat
       if (profile.uID == uid) return &profile;
   }
   return nullptr;
+}
+
+/// The sides of a `cst2D` profile as curves, made as the wing's CST airfoils are, but within about
+/// 1e-9 of the chord instead of 1e-5 (the wing matches the reference's points; here the cowl's
+/// volume follows the formula to 1e-7 with it): the lower side from the trailing edge to the leading
+/// edge and the upper side on to the trailing edge, in the x-z plane.
+void cstSides(const schema::Cst2DType& cst, const std::string& xpath, Handle(Geom_BSplineCurve) & lower,
+              Handle(Geom_BSplineCurve) & upper) {
+  const model::CstAirfoil airfoil = model::CstAirfoil::read(cst, xpath);
+  const geometry::ChebyshevSettings settings{4, 1e-9, 20};
+  upper = geometry::approximateByChebyshevPieces(airfoil.upper, 0.0, 1.0, settings);
+  lower = geometry::approximateByChebyshevPieces(airfoil.lower, 0.0, 1.0, settings);
+  lower->Reverse();
+}
+
+/// Two curves that meet, one after the other, as one B-spline (C0 where they meet).
+Handle(Geom_BSplineCurve) joined(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second) {
+  GeomConvert_CompCurveToBSplineCurve joiner(first);
+  if (!joiner.Add(second, kSamePoint))
+    throw Error(ErrorCode::InvalidModel, "the profile's sides do not meet at the leading edge");
+  return joiner.BSplineCurve();
 }
 
 }  // namespace
@@ -57,8 +81,9 @@ NacelleProfile NacelleProfile::named(const Configuration& configuration, const s
   if (definition == nullptr)
     throw Error(ErrorCode::InvalidModel,
                 "'" + uid + "' names no " + (curveProfile ? "curve profile" : "nacelle profile"), {}, where);
+  if (definition->cst2D) return fromCst(*definition->cst2D, definition->xpath + "/cst2D");
   if (!definition->pointList)
-    throw Error(ErrorCode::NotImplemented, "nacelle profiles other than point lists are not built yet", {},
+    throw Error(ErrorCode::InvalidModel, "the profile has neither a point list nor a cst2D definition", {},
                 definition->xpath);
   const std::string listPath = definition->xpath + "/pointList";
   const std::vector<double> x = model::parseVector(definition->pointList->x, listPath + "/x"),
@@ -86,6 +111,15 @@ NacelleProfile NacelleProfile::named(const Configuration& configuration, const s
   profile.upper_ = curvePiece(profile.whole_, parameters[leadingEdge], parameters.back());
   if (points.front().Distance(points.back()) > kSamePoint)
     profile.trailingEdge_ = std::make_pair(points.back(), points.front());
+  return profile;
+}
+
+NacelleProfile NacelleProfile::fromCst(const schema::Cst2DType& cst, const std::string& xpath) {
+  NacelleProfile profile;
+  cstSides(cst, xpath, profile.lower_, profile.upper_);
+  profile.whole_ = joined(profile.lower_, profile.upper_);
+  const gp_Pnt first = profile.lower_->StartPoint(), last = profile.upper_->EndPoint();
+  if (first.Distance(last) > kSamePoint) profile.trailingEdge_ = std::make_pair(last, first);
   return profile;
 }
 

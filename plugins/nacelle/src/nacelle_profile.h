@@ -20,11 +20,14 @@ namespace airshape::nacelle {
 /// trailing edge's middle) into the lower side, from the trailing edge to the leading edge, and
 /// the upper side, on to the trailing edge, and closed by a straight trailing edge where its ends
 /// differ. Zeta, the reference library's curve coordinate, is the share of arc length: −1 at the
-/// lower trailing edge, 0 at the leading edge, 1 at the upper trailing edge.
+/// lower trailing edge, 0 at the leading edge, 1 at the upper trailing edge. A profile given as
+/// `cst2D` has its two sides as they are defined (the CST curves of the wing's airfoils), joined
+/// at the leading edge.
 class NacelleProfile {
  public:
   /// The profile of this uID among the nacelle profiles (or, with `curveProfile`, among the
-  /// curve profiles). Throws Error naming `where` when none has it or it has no point list.
+  /// curve profiles). Throws Error naming `where` when none has it, or naming the profile's path
+  /// when it has no points or its CST definition is broken.
   static NacelleProfile named(const Configuration& configuration, const std::string& uid, bool curveProfile,
                               const std::string& where);
 
@@ -36,6 +39,8 @@ class NacelleProfile {
   std::optional<std::pair<gp_Pnt, gp_Pnt>> trailingEdge() const { return trailingEdge_; }
 
  private:
+  static NacelleProfile fromCst(const schema::Cst2DType& cst, const std::string& xpath);
+
   Handle(Geom_BSplineCurve) whole_, lower_, upper_;
   std::optional<std::pair<gp_Pnt, gp_Pnt>> trailingEdge_;
 };

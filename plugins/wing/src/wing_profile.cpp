@@ -15,9 +15,9 @@
 #include "airshape/geometry/curve_interpolation.h"
 #include "airshape/geometry/profile_outline.h"
 #include "airshape/model/approximation_settings.h"
+#include "airshape/model/cst_airfoil.h"
 #include "airshape/model/placement.h"
 #include "airshape/xml/text.h"
-#include "cst_airfoil.h"
 #include "naca_four_digit.h"
 
 namespace airshape::wing {
@@ -212,7 +212,7 @@ std::vector<Handle(Geom_BSplineCurve)> WingProfile::outline() const {
 }
 
 WingProfile WingProfile::fromCst(const schema::Cst2DType& cst, const std::string& xpath) {
-  const CstAirfoil airfoil = CstAirfoil::read(cst, xpath);
+  const model::CstAirfoil airfoil = model::CstAirfoil::read(cst, xpath);
   WingProfile profile;
   profile.blunt_ = airfoil.bluntTrailingEdge;
   profile.leadingEdge_ = gp_Pnt(0, 0, 0);

@@ -1,4 +1,4 @@
-#include "cst_airfoil.h"
+#include "airshape/model/cst_airfoil.h"
 
 #include <cmath>
 #include <utility>
@@ -6,14 +6,14 @@
 #include "airshape/error.h"
 #include "airshape/model/placement.h"
 
-namespace airshape::wing {
+namespace airshape::model {
 
 namespace {
 
 /// A CST number that must be finite and not negative: an exponent of the class function
 /// x^N1 (1 − x)^N2 (negative, it is infinite at an end) or the trailing-edge thickness.
 double notNegative(double value, const std::string& xpath) {
-  if (!(model::finite(value, xpath) >= 0.0)) throw Error(ErrorCode::InvalidModel, "must not be negative", {}, xpath);
+  if (!(finite(value, xpath) >= 0.0)) throw Error(ErrorCode::InvalidModel, "must not be negative", {}, xpath);
   return value;
 }
 
@@ -45,9 +45,9 @@ double CstSide::chordwise(double xsi) const {
 CstAirfoil CstAirfoil::read(const schema::Cst2DType& cst, const std::string& xpath) {
   const double thickness = notNegative(cst.trailingEdgeThickness.value_or(0.0), xpath + "/trailingEdgeThickness");
   CstAirfoil airfoil{CstSide(notNegative(cst.upperN1, xpath + "/upperN1"), notNegative(cst.upperN2, xpath + "/upperN2"),
-                             model::parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0),
+                             parseVector(cst.upperB, xpath + "/upperB"), thickness, 1.0),
                      CstSide(notNegative(cst.lowerN1, xpath + "/lowerN1"), notNegative(cst.lowerN2, xpath + "/lowerN2"),
-                             model::parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0),
+                             parseVector(cst.lowerB, xpath + "/lowerB"), thickness, -1.0),
                      thickness > 0.0};
   // An exponent of 0 leaves the side's end at its first or last coefficient, off the chord.
   constexpr double kApart = 1e-9;  // of the chord
@@ -62,4 +62,4 @@ CstAirfoil CstAirfoil::read(const schema::Cst2DType& cst, const std::string& xpa
   return airfoil;
 }
 
-}  // namespace airshape::wing
+}  // namespace airshape::model

@@ -7,7 +7,7 @@
 
 #include "airshape/schema/generated/cpacs_model.h"
 
-namespace airshape::wing {
+namespace airshape::model {
 
 /// One side of a CST airfoil: z(x) = ±(x^N1 (1−x)^N2 · Σ B_i C(n,i) x^i (1−x)^(n−i) + x·t/2),
 /// evaluated exactly at x(xsi), whose form follows N1 and N2 so that xsi spreads points
@@ -28,7 +28,8 @@ class CstSide {
   double sign_;
 };
 
-/// A `cst2D` airfoil read and checked: both sides and whether its trailing edge is blunt.
+/// A `cst2D` profile (a wing airfoil, a nacelle or a curve profile) read and checked: both sides and whether its
+/// trailing edge is blunt.
 struct CstAirfoil {
   CstSide upper, lower;
   bool bluntTrailingEdge = false;
@@ -39,4 +40,4 @@ struct CstAirfoil {
   static CstAirfoil read(const schema::Cst2DType& cst, const std::string& xpath);
 };
 
-}  // namespace airshape::wing
+}  // namespace airshape::model
