@@ -57,13 +57,14 @@ def test_spar_webs_in_closed_form(tmp_path):
                   {"op": "component_type", "uid": "Straight"})
     area, volume, box, kinked, by_segment, kind = (a["ok"] for a in answers)
     # A plane web at ξ = 0.3 over the whole span, from the root cap to the tip cap.
-    assert area == pytest.approx(5.0 * height(0.3), rel=1e-7)
+    # Made straight from the skins (no Boolean cut): exact to rounding.
+    assert area == pytest.approx(5.0 * height(0.3), rel=1e-10)
     assert volume == 0 and kind == "wing_spar"
     assert box["min"] == pytest.approx([1.6, 0.0, -height(0.3) / 2], abs=1e-6)
     assert box["max"] == pytest.approx([1.6, 5.0, height(0.3) / 2], abs=1e-6)
     # Two plane pieces along which ξ runs linearly 0.2 → 0.4 → 0.2: length × mean height.
     mean = (0.6 * (0.4 ** 2 / 2 - 0.4 ** 3 / 3) - 0.6 * (0.2 ** 2 / 2 - 0.2 ** 3 / 3)) / 0.2
-    assert kinked == pytest.approx(2 * math.hypot(2.5, 0.4) * mean, rel=1e-7)
+    assert kinked == pytest.approx(2 * math.hypot(2.5, 0.4) * mean, rel=1e-10)
     # Wing segment coordinates: on this one-segment wing the same as the component segment's.
     assert by_segment == pytest.approx(area, rel=1e-9)
 
@@ -106,7 +107,7 @@ def test_ribs_between_two_spars_in_closed_form(tmp_path):
                                             {"op": "component_type", "uid": "Ribs"}))
     # One rib: ∫ 0.6 ξ(1−ξ) dx over x = 1 + 2ξ, ξ from 0.2 to 0.6.
     one = 2 * 0.6 * ((0.6 ** 2 / 2 - 0.6 ** 3 / 3) - (0.2 ** 2 / 2 - 0.2 ** 3 / 3))
-    assert area == pytest.approx(3 * one, rel=1e-7) and kind == "wing_rib"
+    assert area == pytest.approx(3 * one, rel=1e-10) and kind == "wing_rib"
     assert box["min"][:2] == pytest.approx([1.4, 0.5], abs=1e-6) and box["max"][:2] == pytest.approx([2.2, 4.5], abs=1e-6)
     assert box["max"][2] == pytest.approx(height(0.5) / 2, abs=1e-6), "the wing's thickest point lies between"
     # Without a rotation reference the ribs turn from the direction in which eta grows (here y).

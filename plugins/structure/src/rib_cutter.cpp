@@ -9,6 +9,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "faces_inside.h"
+#include "skin_section.h"
 #include "spar_list.h"
 #include "spar_web.h"
 
@@ -80,6 +81,16 @@ std::vector<gp_Pnt> RibCutter::sparSection(const std::string& spar, const gp_Pln
   throw Error(ErrorCode::InvalidModel, "a rib does not meet spar '" + spar + "'", {}, where);
 }
 
+const std::pair<TopoDS_Shape, TopoDS_Shape>& RibCutter::skins() const {
+  using Surface = wing::WingServices::Surface;
+  if (!skins_) {
+    const std::string& uid = frame_.componentSegmentUid();
+    skins_.emplace(frame_.wing().componentSegmentSkin(configuration_, uid, Surface::Upper),
+                   frame_.wing().componentSegmentSkin(configuration_, uid, Surface::Lower));
+  }
+  return *skins_;
+}
+
 std::vector<gp_Pnt> RibCutter::side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards,
                                     const gp_Vec& up, const gp_Pln& plane, const std::string& where) const {
   const gp_Vec globalUp = frame_.toGlobal(up).Normalized();
@@ -99,9 +110,17 @@ std::vector<gp_Pnt> RibCutter::side(const std::string& border, const gp_Pnt& ori
   return points;
 }
 
-TopoDS_Face RibCutter::outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,
-                               const std::string& ribStart, const std::string& ribEnd, const std::string& name,
-                               const std::string& where) const {
+std::optional<CrossingEnd> RibCutter::sparBorder(const std::string& border, const gp_Pln& plane,
+                                                 const std::string& where) const {
+  if (isWingEdge(border)) return std::nullopt;
+  const std::vector<gp_Pnt> section = sparSection(border, plane, where);  // symmetric about the spar's line
+  return CrossingEnd::atBorder(gp_Pnt((section.front().XYZ() + section.back().XYZ()) / 2.0),
+                               gp_Vec(section.front(), section.back()));
+}
+
+RibOutline RibCutter::outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,
+                              const std::string& ribStart, const std::string& ribEnd, const std::string& name,
+                              const std::string& where) const {
   const gp_Vec normal = frame_.toGlobal(direction).Crossed(frame_.toGlobal(up));
   const gp_Pln plane(frame_.toGlobal(point), gp_Dir(normal));
   const std::vector<gp_Pnt> front = side(ribStart, point, -direction, up, plane, where + "/ribStart");
@@ -112,17 +131,45 @@ TopoDS_Face RibCutter::outline(const gp_Pnt& point, const gp_Vec& direction, con
   polygon.Close();
   BRepBuilderAPI_MakeFace face(plane, polygon.Wire(), true);
   if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "the outline of " + name + " is not plane", {}, where);
-  return face.Face();
+  RibOutline outline{face.Face(), std::nullopt, {}, {}};
+  const auto start = sparBorder(ribStart, plane, where + "/ribStart");
+  const auto end = sparBorder(ribEnd, plane, where + "/ribEnd");
+  if (start && end) {
+    outline.lines = CrossingLines{frame_.toGlobal(point), frame_.toGlobal(direction), frame_.toGlobal(up)};
+    outline.start = *start;
+    outline.end = *end;
+  }
+  return outline;
 }
 
-std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<TopoDS_Face>& outlines,
+std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOutline>& outlines,
                                                         const std::vector<std::string>& names,
                                                         const std::string& where) const {
-  std::vector<std::vector<TopoDS_Face>> ribs;
-  try {
-    ribs = facesInsideEach(outlines, frame_.solid());
-  } catch (const Error&) {
-    throw Error(ErrorCode::InvalidModel, "the ribs cannot be cut out of their component segment", {}, where);
+  // Ribs between lines straight from the skins where they allow it (much faster than a Boolean
+  // cut of skins with many knots); the others cut out of the component segment by one common.
+  std::vector<std::vector<TopoDS_Face>> ribs(outlines.size());
+  std::vector<TopoDS_Face> toCut;
+  std::vector<std::size_t> cutIndices;
+  for (std::size_t i = 0; i < outlines.size(); ++i) {
+    std::optional<TopoDS_Face> traced;
+    if (outlines[i].lines) {
+      const auto& [upper, lower] = skins();
+      traced = sectionBetweenSkins(upper, lower, *outlines[i].lines, outlines[i].start, outlines[i].end, 1e-9 * reach_);
+    }
+    if (traced) {
+      ribs[i] = {*traced};
+    } else {
+      toCut.push_back(outlines[i].face);
+      cutIndices.push_back(i);
+    }
+  }
+  if (!toCut.empty()) {
+    try {
+      const std::vector<std::vector<TopoDS_Face>> cut = facesInsideEach(toCut, frame_.solid());
+      for (std::size_t k = 0; k < cut.size(); ++k) ribs[cutIndices[k]] = cut[k];
+    } catch (const Error&) {
+      throw Error(ErrorCode::InvalidModel, "the ribs cannot be cut out of their component segment", {}, where);
+    }
   }
   for (std::size_t i = 0; i < ribs.size(); ++i)
     if (ribs[i].empty())

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <TopoDS_Face.hxx>
@@ -9,6 +11,7 @@
 
 #include "airshape/schema/generated/cpacs_model.h"
 #include "polyline.h"
+#include "skin_crossing.h"
 #include "spar_web.h"
 #include "structure_frame.h"
 
@@ -18,6 +21,16 @@ namespace airshape::structure {
 bool isWingEdge(const std::string& name);
 /// CPACS names compared as the reference library compares them: ignoring case.
 bool sameName(const std::string& a, const char* b);
+
+/// A rib's plane between its start and end border: the plane face reaching beyond the wing
+/// (global frame) that a Boolean cut trims to the component segment, and, where both borders
+/// are spars, the lines along the rib's up direction and the border lines where the rib meets
+/// the spars' webs, between which the rib is made straight from the skins instead.
+struct RibOutline {
+  TopoDS_Face face;
+  std::optional<CrossingLines> lines;
+  CrossingEnd start, end;
+};
 
 /// What rib definitions of one component segment share: their reference lines, their start
 /// and end points, and cutting a rib out of the component segment between its borders.
@@ -43,14 +56,15 @@ class RibCutter {
                                const std::string& ribStart, const std::string& ribEnd, const std::string& name,
                                const std::string& where) const;
 
-  /// A rib's plane face between its start and end border, reaching beyond the wing (global
-  /// frame): what `cut` cuts out of the component segment's solid.
-  TopoDS_Face outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up, const std::string& ribStart,
-                      const std::string& ribEnd, const std::string& name, const std::string& where) const;
+  /// A rib's plane between its start and end border (global frame): what `cut` cuts out of
+  /// the component segment's solid.
+  RibOutline outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up, const std::string& ribStart,
+                     const std::string& ribEnd, const std::string& name, const std::string& where) const;
 
-  /// Several ribs' outlines cut out of the component segment's solid at once, named `names`
-  /// (for the errors of ribs that do not cross it).
-  std::vector<std::vector<TopoDS_Face>> cutAll(const std::vector<TopoDS_Face>& outlines,
+  /// Several ribs' outlines cut out of the component segment's solid, named `names` (for the
+  /// errors of ribs that do not cross it): those between lines made from the skins, the others
+  /// by one Boolean common.
+  std::vector<std::vector<TopoDS_Face>> cutAll(const std::vector<RibOutline>& outlines,
                                                const std::vector<std::string>& names, const std::string& where) const;
 
   const StructureFrame& frame() const { return frame_; }
@@ -58,11 +72,16 @@ class RibCutter {
  private:
   std::vector<gp_Pnt> side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards, const gp_Vec& up,
                            const gp_Pln& plane, const std::string& where) const;
+  const std::pair<TopoDS_Shape, TopoDS_Shape>& skins() const;
+  /// Where the plane meets a spar's web, as a border line of a trace; nothing for a wing edge.
+  std::optional<CrossingEnd> sparBorder(const std::string& border, const gp_Pln& plane, const std::string& where) const;
 
   const Configuration& configuration_;
   const StructureFrame& frame_;
   /// The walls of the spars ribs have met, by spar uID: placed once for a whole rib set.
   mutable std::map<std::string, SparWall> walls_;
+  /// The component segment's upper and lower skin, fetched for the first rib made from them.
+  mutable std::optional<std::pair<TopoDS_Shape, TopoDS_Shape>> skins_;
   const schema::WingComponentSegmentStructureType& structure_;
   double reach_;
 };

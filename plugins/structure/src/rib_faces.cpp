@@ -81,8 +81,8 @@ class RibSet {
   }
 
   NamedShape build() const {
-    // All ribs cut out of the component segment at once: one Boolean operation for the set.
-    std::vector<TopoDS_Face> outlines;
+    // All ribs cut at once: one Boolean operation for those the skins do not give directly.
+    std::vector<RibOutline> outlines;
     std::vector<std::string> names;
     for (const RibPlacement& rib : placements()) {
       names.push_back(ribs_.uid + "/rib " + std::to_string(names.size() + 1));

@@ -8,6 +8,7 @@
 #include "airshape/error.h"
 #include "faces_inside.h"
 #include "named_faces.h"
+#include "skin_section.h"
 #include "structure_frame.h"
 
 namespace airshape::structure {
@@ -86,12 +87,36 @@ SparWall sparWall(const Configuration& configuration, const wing::WingServices& 
 NamedShape sparWeb(const Configuration& configuration, const wing::WingServices& wing, const SparSegment& spar) {
   const StructureFrame frame(configuration, wing, spar.componentSegmentUid, spar.wingUid);
   const SparWall wall = sparWall(configuration, wing, frame, spar, SparWall::Ends::CarriedAtComponentSegmentEnds);
-  // All the wall's pieces cut out of the component segment at once: one Boolean operation.
-  std::vector<std::vector<TopoDS_Face>> pieces;
-  try {
-    pieces = facesInsideEach(wall.faces, frame.solid());
-  } catch (const Error& error) {
-    throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
+  // Each piece straight from the skins where they allow it (much faster than a Boolean cut of
+  // skins with many knots); the others cut out of the component segment by one Boolean common.
+  const TopoDS_Shape upperSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Upper);
+  const TopoDS_Shape lowerSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Lower);
+  const double tolerance = 1e-9 * frame.reach();
+  std::vector<std::vector<TopoDS_Face>> pieces(wall.faces.size());
+  std::vector<TopoDS_Face> toCut;
+  std::vector<std::size_t> cutIndices;
+  for (std::size_t i = 0; i < wall.faces.size(); ++i) {
+    const bool beyondInner = i == 0 && wall.carriedBeforeFirst;
+    const bool beyondOuter = i + 1 == wall.faces.size() && wall.carriedAfterLast;
+    // The piece's plane: lines along up from one spar point (t = 0) to the next (t = 1).
+    const CrossingLines lines{wall.points[i], gp_Vec(wall.points[i], wall.points[i + 1]), wall.up};
+    const auto traced =
+        sectionBetweenSkins(upperSkin, lowerSkin, lines, beyondInner ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
+                            beyondOuter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance);
+    if (traced) {
+      pieces[i] = {*traced};
+    } else {
+      toCut.push_back(wall.faces[i]);
+      cutIndices.push_back(i);
+    }
+  }
+  if (!toCut.empty()) {
+    try {
+      const std::vector<std::vector<TopoDS_Face>> cut = facesInsideEach(toCut, frame.solid());
+      for (std::size_t k = 0; k < cut.size(); ++k) pieces[cutIndices[k]] = cut[k];
+    } catch (const Error& error) {
+      throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
+    }
   }
   NamedFaces web;
   for (const std::vector<TopoDS_Face>& inside : pieces) web.add(spar.uid + "/web", inside);

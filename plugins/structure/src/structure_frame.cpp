@@ -180,8 +180,12 @@ const TopoDS_Shape& StructureFrame::solid() const {
 }
 
 double StructureFrame::reach() const {
+  // The box of the skins' poles holds the component segment (a B-spline lies in the hull of its
+  // poles), without sewing the solid for it.
+  using Surface = wing::WingServices::Surface;
   Bnd_Box box;
-  BRepBndLib::Add(solid(), box);
+  for (Surface surface : {Surface::Upper, Surface::Lower})
+    BRepBndLib::Add(wing_.componentSegmentSkin(configuration_, componentSegmentUid_, surface), box, false);
   return std::sqrt(box.SquareExtent());
 }
 

@@ -1,0 +1,340 @@
+#include "skin_crossing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_Interpolate.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_HArray1OfBoolean.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_Array1OfVec.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Mat.hxx>
+
+namespace airshape::structure {
+
+double CrossingLines::lineThrough(const gp_Pnt& point) const {
+  const gp_Vec up = across.Normalized();
+  const gp_Vec level = along - along.Dot(up) * up;  // along, with its part along the lines taken out
+  return gp_Vec(origin, point).Dot(level) / level.SquareMagnitude();
+}
+
+namespace {
+
+/// A skin face as the trace uses it: an untrimmed B-spline patch.
+struct Patch {
+  Handle(Geom_BSplineSurface) surface;
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+};
+
+/// A point of a patch on one of the lines: its line, its patch parameters and itself.
+struct PatchPoint {
+  double t = 0, u = 0, v = 0;
+  gp_Pnt point;
+};
+
+std::optional<Patch> patchOf(const TopoDS_Face& face) {
+  Patch patch;
+  patch.surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+  if (patch.surface.IsNull()) return std::nullopt;
+  int wires = 0;
+  for (TopExp_Explorer wire(face, TopAbs_WIRE); wire.More(); wire.Next()) ++wires;
+  if (wires != 1) return std::nullopt;
+  BRepTools::UVBounds(face, patch.u0, patch.u1, patch.v0, patch.v1);
+  double su0, su1, sv0, sv1;
+  patch.surface->Bounds(su0, su1, sv0, sv1);
+  // The face is its whole surface: its boundary is the surface's four boundary curves.
+  const double slack = 1e-9;
+  if (std::abs(patch.u0 - su0) > slack * (su1 - su0) || std::abs(patch.u1 - su1) > slack * (su1 - su0) ||
+      std::abs(patch.v0 - sv0) > slack * (sv1 - sv0) || std::abs(patch.v1 - sv1) > slack * (sv1 - sv0))
+    return std::nullopt;
+  return patch;
+}
+
+/// Signed distance from the plane.
+double side(const CrossingLines& lines, const gp_Vec& normal, const gp_Pnt& point) {
+  return gp_Vec(lines.origin, point).Dot(normal);
+}
+
+/// Whether the plane can cross the patch at all: its poles span it (the patch lies in their
+/// convex hull).
+bool poleHullCrossesPlane(const Patch& patch, const CrossingLines& lines, const gp_Vec& normal) {
+  bool below = false, above = false;
+  const TColgp_Array2OfPnt& poles = patch.surface->Poles();
+  for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+    for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) {
+      const double s = side(lines, normal, poles(i, j));
+      below = below || s <= 0.0;
+      above = above || s >= 0.0;
+      if (below && above) return true;
+    }
+  return false;
+}
+
+/// The root of f between a and b, where f changes sign (f(a) = fa, f(b) = fb): regula falsi
+/// with the Illinois correction, which keeps the bracket and converges superlinearly.
+template <typename Function>
+double bracketedRoot(const Function& f, double a, double b, double fa, double fb) {
+  int side = 0;
+  for (int step = 0; step < 100 && b - a > 1e-15 * (std::abs(a) + std::abs(b) + 1.0); ++step) {
+    const double c = (a * fb - b * fa) / (fb - fa);
+    const double fc = f(c);
+    if (fc == 0.0) return c;
+    if ((fc < 0.0) == (fb < 0.0)) {
+      b = c;
+      fb = fc;
+      if (side == -1) fa /= 2.0;
+      side = -1;
+    } else {
+      a = c;
+      fa = fc;
+      if (side == 1) fb /= 2.0;
+      side = 1;
+    }
+  }
+  return std::abs(fa) < std::abs(fb) ? a : b;
+}
+
+/// The parameters where the plane crosses a boundary curve of the patch, given as a B-spline
+/// over [a, b]: only spans whose poles lie on both sides can hold a crossing (a B-spline
+/// changes sign no more often than its poles do); those are sampled and bisected.
+std::vector<double> planeCrossings(const Handle(Geom_BSplineCurve) & curve, const CrossingLines& lines,
+                                   const gp_Vec& normal) {
+  const int degree = curve->Degree(), poles = curve->NbPoles();
+  TColStd_Array1OfReal flat(1, poles + degree + 1);
+  curve->KnotSequence(flat);
+  const auto valueAt = [&](double parameter) { return side(lines, normal, curve->Value(parameter)); };
+  std::vector<double> roots;
+  for (int i = degree + 1; i <= poles; ++i) {
+    const double a = flat(i), b = flat(i + 1);
+    if (b <= a) continue;
+    bool below = false, above = false;
+    for (int k = i - degree; k <= i; ++k) {
+      const double s = side(lines, normal, curve->Pole(k));
+      below = below || s <= 0.0;
+      above = above || s >= 0.0;
+    }
+    if (!below || !above) continue;
+    constexpr int kSamples = 4;
+    double previousParameter = a, previousValue = valueAt(a);
+    for (int k = 1; k <= kSamples; ++k) {
+      const double parameter = a + (b - a) * k / kSamples;
+      const double value = valueAt(parameter);
+      if (previousValue == 0.0)
+        roots.push_back(previousParameter);
+      else if (previousValue * value < 0.0)
+        roots.push_back(bracketedRoot(valueAt, previousParameter, parameter, previousValue, value));
+      previousParameter = parameter;
+      previousValue = value;
+    }
+    if (i == poles && previousValue == 0.0) roots.push_back(b);
+  }
+  return roots;
+}
+
+/// Where the plane crosses the patch's boundary, sorted by t, corners found twice kept once.
+std::vector<PatchPoint> boundaryCrossings(const Patch& patch, const CrossingLines& lines, const gp_Vec& normal) {
+  std::vector<PatchPoint> crossings;
+  const auto add = [&](double u, double v) {
+    const gp_Pnt point = patch.surface->Value(u, v);
+    for (const PatchPoint& known : crossings)
+      if (known.point.Distance(point) < 1e-12 * (1.0 + gp_Vec(point.XYZ()).Magnitude())) return;
+    crossings.push_back({lines.lineThrough(point), u, v, point});
+  };
+  for (double u : {patch.u0, patch.u1}) {
+    const auto iso = Handle(Geom_BSplineCurve)::DownCast(patch.surface->UIso(u));
+    for (double v : planeCrossings(iso, lines, normal)) add(u, v);
+  }
+  for (double v : {patch.v0, patch.v1}) {
+    const auto iso = Handle(Geom_BSplineCurve)::DownCast(patch.surface->VIso(v));
+    for (double u : planeCrossings(iso, lines, normal)) add(u, v);
+  }
+  std::sort(crossings.begin(), crossings.end(), [](const PatchPoint& a, const PatchPoint& b) { return a.t < b.t; });
+  return crossings;
+}
+
+/// The point where the line through `base` along `direction` meets the patch, by Newton's
+/// method on (u, v, s) with S(u, v) = base + s * direction, from the guess in `point` (its u
+/// and v). False where the line meets the patch tangentially or not within its bounds.
+bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point) {
+  double u = point.u, v = point.v;
+  double s = gp_Vec(base, patch.surface->Value(u, v)).Dot(direction) / direction.SquareMagnitude();
+  const double uSpan = patch.u1 - patch.u0, vSpan = patch.v1 - patch.v0;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    gp_Pnt surfacePoint;
+    gp_Vec du, dv;
+    patch.surface->D1(u, v, surfacePoint, du, dv);
+    const gp_Mat jacobian(du.XYZ(), dv.XYZ(), direction.Reversed().XYZ());
+    const double determinant = jacobian.Determinant();
+    if (std::abs(determinant) < 1e-12 * du.Magnitude() * dv.Magnitude() * direction.Magnitude()) return false;
+    gp_XYZ step = base.XYZ() + s * direction.XYZ() - surfacePoint.XYZ();
+    step.Multiply(jacobian.Inverted());
+    // Held within the patch; the moves taken, not the steps asked for, tell convergence (at a
+    // bound the step may keep asking to leave by a rounding error).
+    const double nextU = std::clamp(u + step.X(), patch.u0, patch.u1);
+    const double nextV = std::clamp(v + step.Y(), patch.v0, patch.v1);
+    const bool settled = std::abs(nextU - u) <= 1e-13 * uSpan && std::abs(nextV - v) <= 1e-13 * vSpan;
+    u = nextU;
+    v = nextV;
+    s += step.Z();
+    if (settled) {
+      surfacePoint = patch.surface->Value(u, v);
+      const gp_Pnt onLine = base.Translated(s * direction);
+      if (surfacePoint.Distance(onLine) > 1e-9 * (1.0 + gp_Vec(base.XYZ()).Magnitude() + direction.Magnitude()))
+        return false;  // held at a bound: the line misses the patch
+      point.u = u;
+      point.v = v;
+      point.point = surfacePoint;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The point where the line at t meets the patch (from the guess in `point`), and in
+/// `tangent` the crossing's derivative along t there: from S(u, v) = base(t) + s * across,
+/// Su u' + Sv v' - across s' = along.
+bool meetLineAt(const Patch& patch, const CrossingLines& lines, double t, PatchPoint& point, gp_Vec& tangent) {
+  if (!meetLine(patch, lines.base(t), lines.across, point)) return false;
+  point.t = t;
+  gp_Pnt surfacePoint;
+  gp_Vec du, dv;
+  patch.surface->D1(point.u, point.v, surfacePoint, du, dv);
+  gp_XYZ rates = lines.along.XYZ();
+  rates.Multiply(gp_Mat(du.XYZ(), dv.XYZ(), lines.across.Reversed().XYZ()).Inverted());
+  tangent = rates.X() * du + rates.Y() * dv;
+  return true;
+}
+
+/// The piece of the crossing on one patch from `first` to `last` (already on the patch): a
+/// cubic through the points and derivatives of evenly spaced lines, refined until the points
+/// of the lines halfway between are within the tolerance.
+Handle(Geom_BSplineCurve) tracePiece(const Patch& patch, const CrossingLines& lines, const PatchPoint& first,
+                                     const PatchPoint& last, double tolerance) {
+  for (int intervals = 8; intervals <= 1024; intervals *= 2) {
+    Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, intervals + 1);
+    Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, intervals + 1);
+    TColgp_Array1OfVec tangents(1, intervals + 1);
+    Handle(TColStd_HArray1OfBoolean) flags = new TColStd_HArray1OfBoolean(1, intervals + 1);
+    PatchPoint current = first;
+    for (int i = 0; i <= intervals; ++i) {
+      const double t = first.t + (last.t - first.t) * i / intervals;
+      gp_Vec tangent;
+      if (!meetLineAt(patch, lines, t, current, tangent)) return nullptr;
+      // The ends are the given points exactly, so that pieces meet where their patches do.
+      const gp_Pnt point = i == 0 ? first.point : i == intervals ? last.point : current.point;
+      points->SetValue(i + 1, point);
+      parameters->SetValue(i + 1, t);
+      tangents.SetValue(i + 1, tangent);
+      flags->SetValue(i + 1, true);
+    }
+    GeomAPI_Interpolate interpolation(points, parameters, false, 1e-15);
+    interpolation.Load(tangents, flags, false);
+    interpolation.Perform();
+    if (!interpolation.IsDone()) return nullptr;
+    Handle(Geom_BSplineCurve) curve = interpolation.Curve();
+    double worst = 0.0;
+    current = first;
+    for (int i = 0; i < intervals; ++i) {
+      const double t = first.t + (last.t - first.t) * (i + 0.5) / intervals;
+      gp_Vec tangent;
+      if (!meetLineAt(patch, lines, t, current, tangent)) return nullptr;
+      worst = std::max(worst, current.point.Distance(curve->Value(t)));
+    }
+    if (worst <= tolerance) return curve;
+  }
+  return nullptr;
+}
+
+/// The point of the patch on the line at t, starting from the patch parameters that the line
+/// has between two known crossings.
+std::optional<PatchPoint> pointBetween(const Patch& patch, const CrossingLines& lines, const PatchPoint& a,
+                                       const PatchPoint& b, double t) {
+  const double share = (t - a.t) / (b.t - a.t);
+  PatchPoint point{t, a.u + share * (b.u - a.u), a.v + share * (b.v - a.v), {}};
+  gp_Vec tangent;
+  if (!meetLineAt(patch, lines, t, point, tangent)) return std::nullopt;
+  return point;
+}
+
+/// A patch the plane crosses, from one boundary crossing to the other.
+struct CrossedPatch {
+  Patch patch;
+  PatchPoint entry, exit;
+};
+
+/// The t at which a trace ends on the crossed patches (sorted, meeting end to end): its
+/// line's, where its border meets the skin, or the skin's first (last) crossing when open.
+std::optional<double> endOn(const std::vector<CrossedPatch>& crossed, const CrossingLines& lines,
+                            const CrossingEnd& end, bool isStart) {
+  switch (end.kind) {
+    case CrossingEnd::Kind::Open:
+      return isStart ? crossed.front().entry.t : crossed.back().exit.t;
+    case CrossingEnd::Kind::AtLine:
+      return end.t;
+    case CrossingEnd::Kind::AtBorder:
+      break;
+  }
+  // The border runs close to the family's line through its point: start from the skin there.
+  const double near = lines.lineThrough(end.through);
+  for (const CrossedPatch& patch : crossed) {
+    if (near < patch.entry.t || near > patch.exit.t) continue;
+    std::optional<PatchPoint> point = pointBetween(patch.patch, lines, patch.entry, patch.exit, near);
+    if (!point || !meetLine(patch.patch, end.through, end.direction, *point)) return std::nullopt;
+    return lines.lineThrough(point->point);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const CrossingLines& lines,
+                                              const CrossingEnd& fromEnd, const CrossingEnd& toEnd, double tolerance) {
+  const gp_Vec normal = lines.planeNormal();
+  std::vector<CrossedPatch> crossed;
+  for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
+    const std::optional<Patch> patch = patchOf(TopoDS::Face(explorer.Current()));
+    if (!patch) return std::nullopt;
+    if (!poleHullCrossesPlane(*patch, lines, normal)) continue;
+    const std::vector<PatchPoint> crossings = boundaryCrossings(*patch, lines, normal);
+    if (crossings.empty()) continue;
+    if (crossings.size() != 2 || crossings[1].t - crossings[0].t <= 0.0) return std::nullopt;
+    crossed.push_back({*patch, crossings[0], crossings[1]});
+  }
+  if (crossed.empty()) return std::nullopt;
+  std::sort(crossed.begin(), crossed.end(),
+            [](const CrossedPatch& a, const CrossedPatch& b) { return a.entry.t < b.entry.t; });
+  for (std::size_t i = 1; i < crossed.size(); ++i) {
+    if (crossed[i].entry.point.Distance(crossed[i - 1].exit.point) > tolerance) return std::nullopt;  // a gap
+    crossed[i].entry.point = crossed[i - 1].exit.point;  // one point where two patches meet
+  }
+  const double first = crossed.front().entry.t, last = crossed.back().exit.t;
+  const double slack = 1e-12 * (last - first);
+  const std::optional<double> from = endOn(crossed, lines, fromEnd, true), to = endOn(crossed, lines, toEnd, false);
+  if (!from || !to || *from < first - slack || *to > last + slack) return std::nullopt;  // the skin ends short
+  if (*to - *from <= slack) return std::nullopt;
+  SkinCrossing crossing;
+  for (const CrossedPatch& patch : crossed) {
+    const double a = std::max(patch.entry.t, *from), b = std::min(patch.exit.t, *to);
+    if (b - a <= slack) continue;
+    const auto start =
+        a - patch.entry.t <= slack ? patch.entry : pointBetween(patch.patch, lines, patch.entry, patch.exit, a);
+    const auto end =
+        patch.exit.t - b <= slack ? patch.exit : pointBetween(patch.patch, lines, patch.entry, patch.exit, b);
+    if (!start || !end) return std::nullopt;
+    PatchPoint startPoint = *start;
+    if (!crossing.pieces.empty()) startPoint.point = crossing.pieces.back()->EndPoint();
+    Handle(Geom_BSplineCurve) piece = tracePiece(patch.patch, lines, startPoint, *end, tolerance);
+    if (piece.IsNull()) return std::nullopt;
+    crossing.pieces.push_back(piece);
+  }
+  if (crossing.pieces.empty()) return std::nullopt;
+  return crossing;
+}
+
+}  // namespace airshape::structure

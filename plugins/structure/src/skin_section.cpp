@@ -1,0 +1,58 @@
+#include "skin_section.h"
+
+#include <vector>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <gp_Pln.hxx>
+
+namespace airshape::structure {
+
+namespace {
+
+/// The edges along a skin crossing, from `start` over a vertex at each piece's end; the last
+/// vertex is returned in `end`.
+std::vector<TopoDS_Edge> crossingEdges(const SkinCrossing& crossing, const TopoDS_Vertex& start, TopoDS_Vertex& end) {
+  std::vector<TopoDS_Edge> edges;
+  TopoDS_Vertex from = start;
+  for (const Handle(Geom_BSplineCurve) & piece : crossing.pieces) {
+    const TopoDS_Vertex to = BRepBuilderAPI_MakeVertex(piece->EndPoint());
+    edges.push_back(BRepBuilderAPI_MakeEdge(piece, from, to));
+    from = to;
+  }
+  end = from;
+  return edges;
+}
+
+}  // namespace
+
+std::optional<TopoDS_Face> sectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
+                                               const CrossingLines& lines, const CrossingEnd& from,
+                                               const CrossingEnd& to, double tolerance) {
+  const auto upper = traceSkinCrossing(upperSkin, lines, from, to, tolerance);
+  const auto lower = traceSkinCrossing(lowerSkin, lines, from, to, tolerance);
+  if (!upper || !lower) return std::nullopt;
+  if (upper->start().Distance(lower->start()) <= tolerance || upper->end().Distance(lower->end()) <= tolerance)
+    return std::nullopt;
+  const TopoDS_Vertex upperStart = BRepBuilderAPI_MakeVertex(upper->start());
+  const TopoDS_Vertex lowerStart = BRepBuilderAPI_MakeVertex(lower->start());
+  TopoDS_Vertex upperEnd, lowerEnd;
+  const std::vector<TopoDS_Edge> upperEdges = crossingEdges(*upper, upperStart, upperEnd);
+  const std::vector<TopoDS_Edge> lowerEdges = crossingEdges(*lower, lowerStart, lowerEnd);
+  BRepBuilderAPI_MakeWire outline;
+  for (const TopoDS_Edge& edge : upperEdges) outline.Add(edge);
+  outline.Add(BRepBuilderAPI_MakeEdge(upperEnd, lowerEnd).Edge());
+  for (auto edge = lowerEdges.rbegin(); edge != lowerEdges.rend(); ++edge) outline.Add(TopoDS::Edge(edge->Reversed()));
+  outline.Add(BRepBuilderAPI_MakeEdge(lowerStart, upperStart).Edge());
+  if (!outline.IsDone()) return std::nullopt;
+  BRepBuilderAPI_MakeFace face(gp_Pln(lines.origin, lines.planeNormal()), outline.Wire(), true);
+  if (!face.IsDone()) return std::nullopt;
+  return face.Face();
+}
+
+}  // namespace airshape::structure
