@@ -154,7 +154,8 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
     std::optional<TopoDS_Face> traced;
     if (outlines[i].lines) {
       const auto& [upper, lower] = skins();
-      traced = sectionBetweenSkins(upper, lower, *outlines[i].lines, outlines[i].start, outlines[i].end, 1e-9 * reach_);
+      traced = sectionBetweenSkins(upper, lower, *outlines[i].lines, outlines[i].start, outlines[i].end,
+                                   kTraceTolerance * reach_);
     }
     if (traced) {
       ribs[i] = {*traced};

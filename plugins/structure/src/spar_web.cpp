@@ -91,7 +91,7 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
   // skins with many knots); the others cut out of the component segment by one Boolean common.
   const TopoDS_Shape upperSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Upper);
   const TopoDS_Shape lowerSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Lower);
-  const double tolerance = 1e-9 * frame.reach();
+  const double tolerance = kTraceTolerance * frame.reach();
   std::vector<std::vector<TopoDS_Face>> pieces(wall.faces.size());
   std::vector<TopoDS_Face> toCut;
   std::vector<std::size_t> cutIndices;
