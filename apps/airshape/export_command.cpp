@@ -65,6 +65,8 @@ ExportCommandOptions parseExportOptions(const Arguments& arguments) {
       options.exportOptions.poses.insert(options.exportOptions.poses.end(), poses.begin(), poses.end());
     } else if (argument == "--structure") {
       options.exportOptions.structure = true;
+    } else if (argument == "--profiles") {
+      options.exportOptions.profiles = true;
     } else if (argument == "--mirror") {
       options.exportOptions.mirror = true;
     } else if (argument == "--fused") {
@@ -151,6 +153,7 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   options.exportOptions.skipFailed = true;  // each failure is said; the exit status tells
   const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);
   for (const std::string& leftOut : scene.leftOut) std::cerr << "export: left out " << leftOut << '\n';
+  for (const std::string& note : scene.notes) std::cerr << "export: note: " << note << '\n';
   if (const std::size_t unbuilt = withoutBuilder(configuration); unbuilt > 0 && !options.quiet)
     std::cerr << "export: " << unbuilt << " geometric elements have no builder yet and are not written ("
               << "`airshape build " << options.input << "` lists them)\n";

@@ -52,8 +52,8 @@ const std::map<std::string, Command>& commands() {
       {"export",
        {runExportModule,
         "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"
-        "                 [--deflect UID=P[,UID=P...]] [--structure] [--deflection LINEAR[,ANGULAR]]\n"
-        "                 [--force] [--quiet]",
+        "                 [--deflect UID=P[,UID=P...]] [--structure] [--profiles]\n"
+        "                 [--deflection LINEAR[,ANGULAR]] [--force] [--quiet]",
         "Builds the components and writes them, in the format each OUT's extension names:\n"
         "  .step .stp   STEP AP214, an assembly with one product per component (named by uID),\n"
         "               face names as STEP names            .iges .igs  IGES, names and levels\n"
@@ -70,6 +70,9 @@ const std::map<std::string, Command>& commands() {
         "               a solid of its own, its wing with their cut-outs (one Boolean cut)\n"
         "--structure    the structural model instead: per component segment its faces split\n"
         "               at spars and ribs, the spar webs and the ribs, one shell sharing edges\n"
+        "--profiles     frames and stringers with their structural profiles swept along their\n"
+        "               lines (each sheet a surface) instead of the lines; where a profile\n"
+        "               cannot be swept the line is written and a note says why\n"
         "--deflection   triangulation of STL/VTK/glTF/OBJ: largest distance to the surface\n"
         "               in metres (default per component: 1 % of volume/area), and the\n"
         "               largest angle between normals in radians (default 0.2)\n"

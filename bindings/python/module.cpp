@@ -92,10 +92,12 @@ py::dict cacheStatistics(PyConfiguration& self) {
 }
 
 void exportTo(PyConfiguration& self, const std::string& path, const std::vector<std::string>& components, bool mirror,
-              bool fused, double linearDeflection, double angularDeflection, const std::string& poses, bool structure) {
+              bool fused, double linearDeflection, double angularDeflection, const std::string& poses, bool structure,
+              bool profiles) {
   airshape::exporting::ExportOptions options;
   options.poses = airshape::exporting::parsePoses(poses);
   options.structure = structure;
+  options.profiles = profiles;
   options.components = components;
   options.mirror = mirror;
   options.fused = fused;
@@ -205,6 +207,8 @@ PYBIND11_MODULE(_airshape, m) {
       .def("export", &exportTo, py::arg("path"), py::arg("components") = std::vector<std::string>(),
            py::arg("mirror") = false, py::arg("fused") = false, py::arg("linear_deflection") = 0.0,
            py::arg("angular_deflection") = 0.0, py::arg("poses") = std::string(), py::arg("structure") = false,
-           "Writes STEP, IGES, BREP, STL, VTP, glTF/GLB or OBJ by extension; poses: UID=P,... devices deflected.")
+           py::arg("profiles") = false,
+           "Writes STEP, IGES, BREP, STL, VTP, glTF/GLB or OBJ by extension; poses: UID=P,... devices deflected; "
+           "profiles: frames and stringers with their structural profiles swept along them.")
       .def("cache_statistics", &cacheStatistics, "Objects built, reused and invalidated, and builds per key.");
 }

@@ -49,6 +49,17 @@ print(json.dumps({"surfaces": len(gmsh.model.getEntities(2)), "nodes": len(tags)
 gmsh.finalize()
 """
 
+GMSH_SURFACES = """
+import json, sys, gmsh
+gmsh.initialize(["-noenv"])
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.option.setString("Geometry.OCCTargetUnit", "M")
+gmsh.merge(sys.argv[1])
+print(json.dumps([[gmsh.model.getEntityName(2, tag), gmsh.model.occ.getMass(2, tag),
+                   list(gmsh.model.getBoundingBox(2, tag))] for _, tag in gmsh.model.getEntities(2)]))
+gmsh.finalize()
+"""
+
 VTK_ARRAYS = """
 import json, sys, vtk
 reader = vtk.vtkXMLPolyDataReader()
@@ -87,6 +98,13 @@ def gmsh_solids(path):
     BREP file, in metres."""
     _require_module("gmsh")
     return [tuple(v) for v in _run_python(GMSH_VOLUMES, path)]
+
+
+def gmsh_surfaces(path):
+    """[(entity name, area, [xmin, ymin, zmin, xmax, ymax, zmax])] of the surfaces gmsh reads from
+    a STEP file, in metres."""
+    _require_module("gmsh")
+    return [tuple(v) for v in _run_python(GMSH_SURFACES, path)]
 
 
 def gmsh_mesh_conformity(path, size):

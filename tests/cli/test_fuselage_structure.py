@@ -7,6 +7,7 @@ import math
 import pytest
 
 from conftest import airshape, query_answers as ask
+from independent_readers import gmsh_surfaces
 from test_fuselage import HEADER, circle, fuselage
 
 # The interpolated 64-point circle is a circle to about 1e-6.
@@ -231,3 +232,69 @@ def test_frames_and_stringers_are_lines_on_the_skin(tmp_path):
     assert math.isclose(riffled, 2, rel_tol=REL)
     assert math.isclose(riffled_box["min"][0], 4, abs_tol=1e-6) and math.isclose(riffled_box["max"][0], 6, abs_tol=1e-6)
     assert math.isclose(riffled_box["max"][2], 1, abs_tol=1e-5) and math.isclose(riffled_box["min"][2], 0, abs_tol=1e-6)
+
+
+# An L profile: a web from the skin 0.1 into the body, then a flange 0.03 along the profile's x.
+L_PROFILE = ('<structuralProfiles><structuralProfile2D uID="L"><name>L</name><pointList>'
+             '<point uID="L1"><x>0</x><y>0</y></point><point uID="L2"><x>0</x><y>0.1</y></point>'
+             '<point uID="L3"><x>0.03</x><y>0.1</y></point></pointList><sheetList>'
+             '<sheet uID="web"><fromPointUID>L1</fromPointUID><toPointUID>L2</toPointUID></sheet>'
+             '<sheet uID="flange"><fromPointUID>L2</fromPointUID><toPointUID>L3</toPointUID></sheet>'
+             "</sheetList></structuralProfile2D></structuralProfiles>")
+ELEMENTS = ('<structuralElements><profileBasedStructuralElements>'
+            '<profileBasedStructuralElement uID="LElement"><sheetProperties><sheetUID>web</sheetUID>'
+            "<materialUID>M</materialUID><thickness>0.002</thickness></sheetProperties>"
+            "<structuralProfileUID>L</structuralProfileUID></profileBasedStructuralElement>"
+            '<profileBasedStructuralElement uID="TElement"><sheetProperties><standardProfileSheetID>S1</standardProfileSheetID>'
+            "<length>0.1</length><materialUID>M</materialUID><thickness>0.002</thickness></sheetProperties>"
+            "<standardProfileType>T</standardProfileType></profileBasedStructuralElement>"
+            "</profileBasedStructuralElements></structuralElements>")
+
+
+def test_frames_and_stringers_export_with_their_profiles_swept(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    text = path.read_text().replace("</profiles>", L_PROFILE + "</profiles>" + ELEMENTS, 1)
+    for uid, element in (("F1", "LElement"), ("Top", "LElement"), ("Side", "LElement"), ("F0", "TElement")):
+        text = text.replace(f'uID="{uid}P0"><structuralElementUID>E<', f'uID="{uid}P0"><structuralElementUID>{element}<')
+    # Side's profile moved 0.05 into the body.
+    text = text.replace('<referenceAngle>90</referenceAngle></stringerPosition><stringerPosition uID="SideP1">',
+                        '<referenceAngle>90</referenceAngle><alignment uID="SideA"><translationLocZ>0.05</translationLocZ>'
+                        '</alignment></stringerPosition><stringerPosition uID="SideP1">', 1)
+    path.write_text(text)
+    out = tmp_path / "profiles.step"
+    result = airshape("export", str(path), "--profiles", "--components", "F1,Top,Side,F0", "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    # A standard profile is drawn only in the schema's picture: the line is written, with a note.
+    assert "note: F0: written as built, without its profile" in result.stderr and "standard profile" in result.stderr
+    # gmsh names surfaces by their component; its areas are good to about 1e-4.
+    surfaces = [(name.split("/")[-1], area, box) for name, area, box in gmsh_surfaces(out)]
+    assert {name for name, _, _ in surfaces} == {"F1", "Top", "Side"}
+
+    def total(component, kind):
+        return sum(area for name, area, box in surfaces if name == component and kind(box))
+
+    def extent(box, axis):
+        return box[axis + 3] - box[axis]
+
+    # Frame F1 at x = 7 round the unit circle: the web sweeps the annulus 0.9 <= r <= 1, the flange
+    # the band of radius 0.9 from x = 7 to 7.03 (the profile's x runs along the body's x axis).
+    assert math.isclose(total("F1", lambda box: extent(box, 0) < 1e-3), math.pi * (1 - 0.81), rel_tol=2e-4)
+    flanges = [box for name, _, box in surfaces if name == "F1" and extent(box, 0) > 1e-3]
+    assert math.isclose(total("F1", lambda box: extent(box, 0) > 1e-3), 2 * math.pi * 0.9 * 0.03, rel_tol=2e-4)
+    assert all(math.isclose(box[0], 7, abs_tol=1e-6) and math.isclose(box[3], 7.03, abs_tol=1e-6) for box in flanges)
+    # Stringer Top along the crown from x = 0 to 10: the web from z = 1 down to 0.9, the flange at
+    # z = 0.9 from y = 0 to -0.03 (local y = z × x with z down and x along the body).
+    top_webs = [box for name, _, box in surfaces if name == "Top" and extent(box, 2) > 1e-3]
+    assert math.isclose(total("Top", lambda box: extent(box, 2) > 1e-3), 1.0, rel_tol=2e-4)
+    assert math.isclose(total("Top", lambda box: extent(box, 2) < 1e-3), 0.3, rel_tol=2e-4)
+    assert all(math.isclose(box[2], 0.9, abs_tol=1e-6) and math.isclose(box[5], 1, abs_tol=1e-6) for box in top_webs)
+    assert all(math.isclose(box[1], -0.03, abs_tol=1e-6) for name, _, box in surfaces
+               if name == "Top" and extent(box, 2) < 1e-3)
+    # Stringer Side on the -y side, moved 0.05 into the body: its web from y = -0.95 to -0.85.
+    side_webs = [box for name, _, box in surfaces if name == "Side" and extent(box, 1) > 1e-3]
+    assert math.isclose(total("Side", lambda box: extent(box, 1) > 1e-3), 1.0, rel_tol=2e-4)
+    assert all(math.isclose(box[1], -0.95, abs_tol=1e-6) and math.isclose(box[4], -0.85, abs_tol=1e-6)
+               for box in side_webs)
+    # Queries keep answering for the lines.
+    assert ask(path, {"op": "component_surface_area", "uid": "F1"}) == [0]

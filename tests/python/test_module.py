@@ -244,7 +244,7 @@ def test_structure_of_a_component_segment(tmp_path):
     assert model.stat().st_size > web.stat().st_size
 
 
-def test_structure_of_a_fuselage():
+def test_structure_of_a_fuselage(tmp_path):
     config = airshape.Configuration.open(AIRLINER)
     kinds = {element.uid: element.type for element in config.fuselages[0].structure}
     assert kinds["Cargo_Door"] == "cargo_door" and kinds["Rear_Bulkhead"] == "pressure_bulkhead"
@@ -255,6 +255,11 @@ def test_structure_of_a_fuselage():
     assert door.bounding_box["min"][0] == pytest.approx(7, abs=1e-6)
     assert door.bounding_box["max"][0] == pytest.approx(9, abs=1e-6) and door.bounding_box["max"][1] < 0
     assert config.component("Stringer_Side").surface_area == 0
+    # Exported with its Z profile swept along it: the three sheets' surfaces, not a line.
+    lines, swept = tmp_path / "lines.brep", tmp_path / "swept.brep"
+    config.export(str(lines), components=["Frame_Door_Front"])
+    config.export(str(swept), components=["Frame_Door_Front"], profiles=True)
+    assert swept.stat().st_size > 3 * lines.stat().st_size
 
 
 def test_rotors_of_a_rotorcraft():

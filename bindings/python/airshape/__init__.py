@@ -601,14 +601,16 @@ class Configuration:
 
     def export(self, path: str, components: Optional[List[str]] = None, mirror: bool = False, fused: bool = False,
                linear_deflection: float = 0.0, angular_deflection: float = 0.0,
-               deflect: Optional[Dict[str, Union[float, str]]] = None, structure: bool = False) -> None:
+               deflect: Optional[Dict[str, Union[float, str]]] = None, structure: bool = False,
+               profiles: bool = False) -> None:
         """Writes the geometry in the format the extension names (docs/export.md). `deflect`
         maps device uIDs (or "all") to control parameters (a number, "min" or "max"): those
         devices are written deflected, their wings with the cut-outs (docs/controlsurfaces.md).
-        `structure` writes the structural model instead (docs/structure.md)."""
+        `structure` writes the structural model instead (docs/structure.md); `profiles` writes
+        frames and stringers with their structural profiles swept along them."""
         poses = ",".join(f"{uid}={_text(p)}" for uid, p in (deflect or {}).items())
         self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection, poses,
-                          structure)
+                          structure, profiles)
 
     def cache_statistics(self) -> dict:
         """{"built", "reused", "invalidated", "builds_by_key"}: what the geometry cache did."""

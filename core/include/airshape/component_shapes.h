@@ -40,6 +40,18 @@ class ComponentShapes {
     return entry == builders_.end() ? nullptr : &entry->second;
   }
 
+  /// A detailed shape for components whose shape is a simplification: frames and stringers
+  /// are lines, and their detailed shape the profile swept along the line. Exports ask for it
+  /// (ExportOptions::profiles); queries always measure the shape `add` builds.
+  void addDetailed(const std::string& nodeType, ShapeBuilder builder) {
+    detailedBuilders_[nodeType] = std::move(builder);
+  }
+  /// The detailed builder of a node type, or nullptr.
+  const ShapeBuilder* findDetailed(const std::string& nodeType) const {
+    const auto entry = detailedBuilders_.find(nodeType);
+    return entry == detailedBuilders_.end() ? nullptr : &entry->second;
+  }
+
   void addMotion(const std::string& nodeType, ComponentMotion motion) { motions_[nodeType] = std::move(motion); }
   /// How components of a node type move, or nullptr for those that do not.
   const ComponentMotion* findMotion(const std::string& nodeType) const {
@@ -62,6 +74,7 @@ class ComponentShapes {
 
  private:
   std::map<std::string, ShapeBuilder> builders_;
+  std::map<std::string, ShapeBuilder> detailedBuilders_;
   std::map<std::string, ComponentMotion> motions_;
 };
 

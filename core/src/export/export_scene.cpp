@@ -126,9 +126,27 @@ struct SceneSolid {
 
 /// The solids of the selected components that were built, with their mirrored halves on
 /// request: moving components posed, those they lie in with their cut-outs.
+/// The detailed shape of a component (ComponentShapes::addDetailed), or nothing when it has
+/// none or it cannot be built (then `notes` says why).
+std::optional<NamedShape> detailedShape(const Configuration& configuration, const graph::Component& component,
+                                        std::vector<std::string>& notes) {
+  const ShapeBuilder* builder = configuration.shapes().findDetailed(component.nodeType);
+  if (builder == nullptr) return std::nullopt;
+  try {
+    return (*builder)(configuration, component.uid);
+  } catch (const Error& error) {
+    notes.push_back(component.uid + ": written as built, without its profile: " + error.message() +
+                    (error.cpacsPath().empty() ? "" : " (" + error.cpacsPath() + ")"));
+  } catch (const Standard_Failure& failure) {
+    notes.push_back(component.uid +
+                    ": written as built, without its profile: geometry kernel failure: " + failure.GetMessageString());
+  }
+  return std::nullopt;
+}
+
 std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const std::vector<std::size_t>& selected,
                                     const std::vector<bool>& failed, const std::map<std::string, PosedComponent>& posed,
-                                    const ExportOptions& options) {
+                                    const ExportOptions& options, std::vector<std::string>& notes) {
   std::set<std::string> changed;  // posed, or hosting a posed one
   for (const auto& [uid, component] : posed) changed.insert({uid, component.host});
   std::vector<SceneSolid> solids;
@@ -137,6 +155,16 @@ std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const st
     const graph::Component& component = configuration.components().components()[index];
     const std::string& uid = component.uid;
     const bool asBuilt = changed.count(uid) == 0;
+    if (const auto detailed =
+            options.profiles && asBuilt ? detailedShape(configuration, component, notes) : std::nullopt) {
+      solids.push_back({uid, *detailed, component.typeName});
+      if (options.mirror && hasMirror(configuration, uid))
+        solids.push_back({uid + " (mirrored)",
+                          transformedNamedShape(*detailed, model::mirrorIn(model::resolvedSymmetry(configuration, uid)),
+                                                " (mirrored)"),
+                          component.typeName});
+      continue;
+    }
     const NamedShape shape =
         asBuilt ? configuration.shapes().namedShapeOf(configuration, uid) : posedSolid(configuration, uid, posed);
     solids.push_back({uid, shape, component.typeName});
@@ -154,7 +182,7 @@ std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const st
 
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options) {
   if (options.structure) {
-    ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}};
+    ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}, {}};
     for (const SceneComponent& model : structuralModels(configuration, options, scene.leftOut))
       scene.components.push_back(copied(model.name, model.shape));
     return scene;
@@ -162,7 +190,7 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
   const Clock::time_point start = Clock::now();
   const std::map<std::string, PosedComponent> posed = resolvePoses(configuration, options.poses);
   const std::vector<std::size_t> selected = selectedComponents(configuration, options, posed);
-  ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}};
+  ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}, {}};
   std::vector<bool> failed(configuration.components().components().size(), false);
   const auto failures = buildSelected(configuration, selected, options, start);
   if (!failures.empty() && !options.skipFailed)
@@ -172,7 +200,7 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
     scene.leftOut.push_back(configuration.components().components()[index].uid + ": " + why);
   }
 
-  const auto solids = sceneSolids(configuration, selected, failed, posed, options);
+  const auto solids = sceneSolids(configuration, selected, failed, posed, options, scene.notes);
   if (options.fused) {
     if (options.progress)
       options.progress(

@@ -212,6 +212,7 @@ void PluginHost::registerPlugin(LoadedPlugin loaded) {
   plugin->registerShapeBuilders(offered);
   for (const NodeType& type : loaded.nodeTypes) {  // only for the node types it was granted
     if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
+    if (const ShapeBuilder* detailed = offered.findDetailed(type.name)) shapes_.addDetailed(type.name, *detailed);
     if (const ComponentMotion* motion = offered.findMotion(type.name)) shapes_.addMotion(type.name, *motion);
   }
   plugins_.push_back(std::move(loaded));

@@ -1,8 +1,16 @@
 #include "skin_lines.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Section.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <Bnd_Box.hxx>
+#include <Precision.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include "airshape/error.h"
 #include "compounds.h"
@@ -14,23 +22,60 @@ namespace airshape::structure {
 
 namespace {
 
-/// Where the tool faces meet the fuselage's skin, as an edge shape; throws Error naming `where`
-/// when they do not meet.
-NamedShape onSkin(const FuselageFrame& fuselage, const std::vector<TopoDS_Face>& tools, const std::string& where) {
+/// The skin face an edge lies on where the section names none (an edge along a seam between two
+/// faces): the face nearest its middle.
+TopoDS_Face faceUnder(const TopoDS_Edge& edge, const std::vector<TopoDS_Face>& faces) {
+  BRepAdaptor_Curve curve(edge);
+  const gp_Pnt middle = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
+  const TopoDS_Vertex point = BRepBuilderAPI_MakeVertex(middle);
+  TopoDS_Face nearest;
+  double best = Precision::Infinite();
+  for (const TopoDS_Face& face : faces) {
+    Bnd_Box box;
+    BRepBndLib::Add(face, box, false);
+    if (box.IsOut(middle)) continue;
+    BRepExtrema_DistShapeShape distance(point, face);
+    if (distance.IsDone() && distance.Value() < best) {
+      best = distance.Value();
+      nearest = face;
+    }
+  }
+  return nearest;
+}
+
+/// Where the tool faces meet the fuselage's skin, edge by edge with the skin face each lies on;
+/// throws Error naming `where` when they do not meet.
+std::vector<SkinEdge> onSkin(const FuselageFrame& fuselage, const std::vector<TopoDS_Face>& tools,
+                             const std::string& where) {
   BRepAlgoAPI_Section section(compoundOf(fuselage.skinFaces()), compoundOf(tools), false);
   section.SetRunParallel(true);
   section.SetNonDestructive(true);  // the skin is shared, cached geometry
   section.Build();
   if (!section.IsDone() || section.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the line on the fuselage's skin cannot be found", {}, where);
-  if (!TopExp_Explorer(section.Shape(), TopAbs_EDGE).More())
+  std::vector<SkinEdge> pieces;
+  for (TopExp_Explorer edge(section.Shape(), TopAbs_EDGE); edge.More(); edge.Next()) {
+    TopoDS_Shape face;
+    const TopoDS_Edge& piece = TopoDS::Edge(edge.Current());
+    if (!section.HasAncestorFaceOn1(piece, face))  // the tool met the skin along an edge of its faces
+      face = faceUnder(piece, fuselage.skinFaces());
+    pieces.push_back({piece, face.IsNull() ? TopoDS_Face() : TopoDS::Face(face)});
+  }
+  if (pieces.empty())
     throw Error(ErrorCode::InvalidModel, "the positions' rays do not meet the fuselage's skin", {}, where);
-  return edgesOf(section.Shape());
+  return pieces;
+}
+
+NamedShape linesOf(const std::vector<SkinEdge>& pieces) {
+  std::vector<TopoDS_Edge> edges;
+  for (const SkinEdge& piece : pieces) edges.push_back(piece.edge);
+  return edgesOf(compoundOf(edges));
 }
 
 }  // namespace
 
-NamedShape frameLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
+std::vector<SkinEdge> frameOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
+                                  const std::string& uid) {
   const auto frame = frameElementNamed(configuration, uid, tanks);
   const FuselageFrame fuselage =
       FuselageFrame::ofHost(configuration, frame.hostUid, frame.fuselage, frame.vesselPlacement);
@@ -41,7 +86,8 @@ NamedShape frameLine(const Configuration& configuration, const tank::TankService
   return onSkin(fuselage, {BRepBuilderAPI_MakeFace(station, -reach, reach, -reach, reach).Face()}, frame.node->xpath);
 }
 
-NamedShape stringerLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
+std::vector<SkinEdge> stringerOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
+                                     const std::string& uid) {
   const auto stringer = stringerElementNamed(configuration, uid, tanks);
   const FuselageFrame fuselage =
       FuselageFrame::ofHost(configuration, stringer.hostUid, stringer.fuselage, stringer.vesselPlacement);
@@ -51,6 +97,14 @@ NamedShape stringerLine(const Configuration& configuration, const tank::TankServ
                 stringer.node->xpath);
   return onSkin(fuselage, path.surface(fuselage, path.firstX(), path.lastX(), fuselage.localReach()),
                 stringer.node->xpath);
+}
+
+NamedShape frameLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
+  return linesOf(frameOnSkin(configuration, tanks, uid));
+}
+
+NamedShape stringerLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
+  return linesOf(stringerOnSkin(configuration, tanks, uid));
 }
 
 }  // namespace airshape::structure

@@ -1,6 +1,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 
 #include "airshape/named_shape.h"
 #include "airshape/tank/tank_services.h"
@@ -11,14 +15,28 @@ class Configuration;
 
 namespace airshape::structure {
 
-/// A frame of a fuselage (or of a tank's vessel, found through `tanks` when given) as the line it runs along on the
-/// skin (edges, no faces): all round the fuselage in the plane x = positionX for a frame of one position, otherwise
-/// where the surface its positions sweep (position_rays.h) meets the skin. Throws Error naming the CPACS path when it
-/// cannot be built.
+/// A piece of a line on a body's skin: an edge and the skin face it lies on.
+struct SkinEdge {
+  TopoDS_Edge edge;
+  TopoDS_Face face;
+};
+
+/// A frame of a fuselage (or of a tank's vessel, found through `tanks` when given) as the pieces of
+/// the line it runs along on the skin: all round the fuselage in the plane x = positionX for a
+/// frame of one position, otherwise where the surface its positions sweep (position_rays.h) meets
+/// the skin. Throws Error naming the CPACS path when it cannot be built.
+std::vector<SkinEdge> frameOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
+                                  const std::string& uid);
+
+/// A fuselage stringer as the pieces of the line it runs along on the skin from its first to its
+/// last position (position_rays.h). Throws Error naming the CPACS path when it cannot be built.
+std::vector<SkinEdge> stringerOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
+                                     const std::string& uid);
+
+/// A frame (frameOnSkin) as its line: edges, no faces.
 NamedShape frameLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid);
 
-/// A fuselage stringer as the line it runs along on the skin from its first to its last position
-/// (edges, no faces; position_rays.h). Throws Error naming the CPACS path when it cannot be built.
+/// A stringer (stringerOnSkin) as its line: edges, no faces.
 NamedShape stringerLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid);
 
 }  // namespace airshape::structure

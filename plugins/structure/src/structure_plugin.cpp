@@ -14,6 +14,7 @@
 #include "fuselage_door.h"
 #include "fuselage_wall.h"
 #include "pressure_bulkhead.h"
+#include "profile_sweep.h"
 #include "rib_faces.h"
 #include "rib_list.h"
 #include "skin_lines.h"
@@ -92,6 +93,11 @@ class StructurePlugin final : public plugin::BasicPlugin {
                [tanks](const Configuration& c, const std::string& uid) { return frameLine(c, tanks.get(), uid); });
     shapes.add("stringer",
                [tanks](const Configuration& c, const std::string& uid) { return stringerLine(c, tanks.get(), uid); });
+    shapes.addDetailed(
+        "frame", [tanks](const Configuration& c, const std::string& uid) { return frameProfile(c, tanks.get(), uid); });
+    shapes.addDetailed("stringer", [tanks](const Configuration& c, const std::string& uid) {
+      return stringerProfile(c, tanks.get(), uid);
+    });
     shapes.add("wallSegment",
                [tanks](const Configuration& c, const std::string& uid) { return fuselageWall(c, tanks.get(), uid); });
   }

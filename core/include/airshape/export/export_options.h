@@ -43,6 +43,11 @@ struct ExportOptions {
   /// edges (a FEM mesher meshes it conformally). `components` then names the hosts (or their
   /// parents) whose structure to write.
   bool structure = false;
+  /// Write components that have a detailed shape (ComponentShapes::addDetailed: frames and
+  /// stringers with their profiles swept along their lines) with it instead of their shape;
+  /// where the detailed shape cannot be built, the shape is written and ExportScene::notes
+  /// says why.
+  bool profiles = false;
   /// Leave out components that fail to build (ExportScene::leftOut says which and why)
   /// instead of failing the export.
   bool skipFailed = false;
