@@ -88,6 +88,12 @@ airshape_status airshape_export_deflected(airshape_configuration* configuration,
 airshape_status airshape_export_structure(airshape_configuration* configuration, const char* path,
                                           const char* components);
 
+/* Writes the components named in components (comma-separated, NULL for all) with frames and
+ * stringers as their structural profiles swept along their lines (docs/structure.md); a frame
+ * whose profile cannot be swept is written as its line. */
+airshape_status airshape_export_profiles(airshape_configuration* configuration, const char* path,
+                                         const char* components);
+
 /* Control devices of a wing (1-based index, spoilers apart) and, by uID, their control
  * parameter range and rigid motion at p: matrix is [R | t] by rows (12 numbers), rotation the
  * hinge-line rotation in degrees. */

@@ -261,6 +261,19 @@ airshape_status airshape_export_structure(airshape_configuration* configuration,
   });
 }
 
+airshape_status airshape_export_profiles(airshape_configuration* configuration, const char* path,
+                                         const char* components) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(path, "path");
+    airshape::exporting::ExportOptions options;
+    if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
+    options.profiles = true;
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    airshape::exporting::exportConfiguration(configuration->configuration, path, options);
+  });
+}
+
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
                                 int mirror, int fused, double linear_deflection, double angular_deflection) {
   return airshape_export_deflected(configuration, path, components, nullptr, mirror, fused, linear_deflection,

@@ -105,6 +105,16 @@ static void typed_ops_agree_with_the_query(void) {
   airshape_close(c);
 }
 
+/* The size of a file in bytes, -1 when it cannot be opened. */
+static long file_size(const char* path) {
+  FILE* file = fopen(path, "rb");
+  if (!file) return -1;
+  fseek(file, 0, SEEK_END);
+  const long size = ftell(file);
+  fclose(file);
+  return size;
+}
+
 static void editing_and_exporting(const char* folder) {
   airshape_configuration* c = NULL;
   CHECK(airshape_open(airliner, &c) == AIRSHAPE_OK);
@@ -145,6 +155,15 @@ static void editing_and_exporting(const char* folder) {
   CHECK(airshape_export(c, path, "HTP", 1, 0, 0, 0) == AIRSHAPE_OK);
   snprintf(path, sizeof path, "%s/no/such/folder/x.step", folder);
   CHECK(airshape_export(c, path, NULL, 0, 0, 0, 0) == AIRSHAPE_WRITE_FAILED);
+  /* A frame with its Z profile swept along it: surfaces, a much larger file than its line. */
+  char line_path[1024], swept_path[1024];
+  snprintf(line_path, sizeof line_path, "%s/c_api_frame_line.brep", folder);
+  snprintf(swept_path, sizeof swept_path, "%s/c_api_frame_swept.brep", folder);
+  remove(line_path);
+  remove(swept_path);
+  CHECK(airshape_export(c, line_path, "Frame_Door_Front", 0, 0, 0, 0) == AIRSHAPE_OK);
+  CHECK(airshape_export_profiles(c, swept_path, "Frame_Door_Front") == AIRSHAPE_OK);
+  CHECK(file_size(swept_path) > 3 * file_size(line_path));
   snprintf(path, sizeof path, "%s/edited.xml", folder);
   CHECK(airshape_save(c, path) == AIRSHAPE_OK);
   airshape_close(c);
