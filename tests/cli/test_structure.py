@@ -122,6 +122,24 @@ def test_ribs_between_two_spars_in_closed_form(tmp_path):
     assert by_spar == pytest.approx(area, rel=1e-9)
 
 
+def test_ribs_to_the_wing_edges_in_closed_form(tmp_path):
+    # The parabolic-arc skins meet in sharp edges at ξ = 0 and 1: a chordwise rib from the
+    # leading to the trailing edge is the whole section, ∫ 0.6 ξ(1−ξ) dx over x = 1 + 2ξ = 0.2; from
+    # the leading edge to the rear spar at ξ 0.6, ∫ over ξ from 0 to 0.6.
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6))
+    spars = segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1")
+    whole = with_spars(tmp_path, positions, spars, ribs("Ribs", 0.1, 0.9, 3, rib_start="leadingEdge",
+                                                       rib_end="trailingEdge"))
+    area, box = (a["ok"] for a in ask(whole, {"op": "component_surface_area", "uid": "Ribs"},
+                                      {"op": "bounding_box", "uid": "Ribs"}))
+    assert area == pytest.approx(3 * 0.2, rel=1e-9)
+    assert box["min"][0] == pytest.approx(1.0, abs=1e-7) and box["max"][0] == pytest.approx(3.0, abs=1e-7)
+    to_spar = with_spars(tmp_path, positions, spars, ribs("Ribs", 0.1, 0.9, 3, rib_start="leadingEdge"))
+    front, = (a["ok"] for a in ask(to_spar, {"op": "component_surface_area", "uid": "Ribs"}))
+    assert front == pytest.approx(3 * 2 * 0.6 * (0.6 ** 2 / 2 - 0.6 ** 3 / 3), rel=1e-9)
+
+
 def test_an_explicitly_positioned_rib_between_two_spars(tmp_path):
     positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
                  position("PosR1", 1, 0.6))

@@ -110,10 +110,9 @@ std::vector<gp_Pnt> RibCutter::side(const std::string& border, const gp_Pnt& ori
   return points;
 }
 
-std::optional<CrossingEnd> RibCutter::sparBorder(const std::string& border, const gp_Pln& plane,
-                                                 const std::string& where) const {
-  if (isWingEdge(border)) return std::nullopt;
-  const std::vector<gp_Pnt> section = sparSection(border, plane, where);  // symmetric about the spar's line
+CrossingEnd RibCutter::border(const std::string& name, const gp_Pln& plane, const std::string& where) const {
+  if (isWingEdge(name)) return CrossingEnd::open();                     // the rib runs on to where the skins meet
+  const std::vector<gp_Pnt> section = sparSection(name, plane, where);  // symmetric about the spar's line
   return CrossingEnd::atBorder(gp_Pnt((section.front().XYZ() + section.back().XYZ()) / 2.0),
                                gp_Vec(section.front(), section.back()));
 }
@@ -131,14 +130,9 @@ RibOutline RibCutter::outline(const gp_Pnt& point, const gp_Vec& direction, cons
   polygon.Close();
   BRepBuilderAPI_MakeFace face(plane, polygon.Wire(), true);
   if (!face.IsDone()) throw Error(ErrorCode::InvalidModel, "the outline of " + name + " is not plane", {}, where);
-  RibOutline outline{face.Face(), std::nullopt, {}, {}};
-  const auto start = sparBorder(ribStart, plane, where + "/ribStart");
-  const auto end = sparBorder(ribEnd, plane, where + "/ribEnd");
-  if (start && end) {
-    outline.lines = CrossingLines{frame_.toGlobal(point), frame_.toGlobal(direction), frame_.toGlobal(up)};
-    outline.start = *start;
-    outline.end = *end;
-  }
+  RibOutline outline{face.Face(),
+                     CrossingLines{frame_.toGlobal(point), frame_.toGlobal(direction), frame_.toGlobal(up)},
+                     border(ribStart, plane, where + "/ribStart"), border(ribEnd, plane, where + "/ribEnd")};
   return outline;
 }
 
@@ -151,12 +145,10 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
   std::vector<TopoDS_Face> toCut;
   std::vector<std::size_t> cutIndices;
   for (std::size_t i = 0; i < outlines.size(); ++i) {
-    std::optional<TopoDS_Face> traced;
-    if (outlines[i].lines) {
-      const auto& [upper, lower] = skins();
-      traced = sectionBetweenSkins(upper, lower, *outlines[i].lines, outlines[i].start, outlines[i].end,
-                                   kTraceTolerance * reach_);
-    }
+    const auto& [upper, lower] = skins();
+    const std::optional<TopoDS_Face> traced =
+        sectionBetweenSkins(upper, lower, outlines[i].lines, outlines[i].start, outlines[i].end,
+                            kTraceTolerance * reach_, OpenEnds::SkinsMeet);
     if (traced) {
       ribs[i] = {*traced};
     } else {

@@ -23,12 +23,13 @@ bool isWingEdge(const std::string& name);
 bool sameName(const std::string& a, const char* b);
 
 /// A rib's plane between its start and end border: the plane face reaching beyond the wing
-/// (global frame) that a Boolean cut trims to the component segment, and, where both borders
-/// are spars, the lines along the rib's up direction and the border lines where the rib meets
-/// the spars' webs, between which the rib is made straight from the skins instead.
+/// (global frame) that a Boolean cut trims to the component segment, and the lines along the
+/// rib's up direction with its borders (where the rib meets a spar's web, or open where it
+/// runs to the leading or trailing edge), from which the rib is made straight from the skins
+/// where they allow it.
 struct RibOutline {
   TopoDS_Face face;
-  std::optional<CrossingLines> lines;
+  CrossingLines lines;
   CrossingEnd start, end;
 };
 
@@ -73,8 +74,9 @@ class RibCutter {
   std::vector<gp_Pnt> side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards, const gp_Vec& up,
                            const gp_Pln& plane, const std::string& where) const;
   const std::pair<TopoDS_Shape, TopoDS_Shape>& skins() const;
-  /// Where the plane meets a spar's web, as a border line of a trace; nothing for a wing edge.
-  std::optional<CrossingEnd> sparBorder(const std::string& border, const gp_Pln& plane, const std::string& where) const;
+  /// A rib's start or end as the end of a trace: the line where its plane meets a spar's web,
+  /// or open at the wing's leading or trailing edge.
+  CrossingEnd border(const std::string& name, const gp_Pln& plane, const std::string& where) const;
 
   const Configuration& configuration_;
   const StructureFrame& frame_;

@@ -15,6 +15,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Mat.hxx>
+#include <gp_Vec2d.hxx>
 
 namespace airshape::structure {
 
@@ -304,6 +305,166 @@ Handle(Geom_BSplineCurve) tracePiece(const Patch& patch, const CrossingLines& li
   return !hermite.IsNull() && within(hermite, middles, tolerance) ? hermite : nullptr;
 }
 
+/// The crossing's curve in a patch's parameters: where f(u, v) = n · (S(u, v) - origin) is 0.
+class LevelCurve {
+ public:
+  LevelCurve(const Patch& patch, const CrossingLines& lines) : patch_(patch), lines_(lines) {
+    normal_ = lines.planeNormal();
+  }
+
+  /// Moves (u, v) onto the curve along the gradient of f (Newton's method); false where f has
+  /// no gradient (the plane touches the patch) or the point leaves the patch.
+  bool settle(double& u, double& v) const {
+    for (int iteration = 0; iteration < 30; ++iteration) {
+      gp_Pnt point;
+      gp_Vec du, dv;
+      patch_.surface->D1(u, v, point, du, dv);
+      const double f = gp_Vec(lines_.origin, point).Dot(normal_), fu = du.Dot(normal_), fv = dv.Dot(normal_);
+      const double slope = fu * fu + fv * fv;
+      if (slope <= 1e-30) return false;
+      const double nextU = u - f * fu / slope, nextV = v - f * fv / slope;
+      if (nextU < patch_.u0 - kOutside * (patch_.u1 - patch_.u0) ||
+          nextU > patch_.u1 + kOutside * (patch_.u1 - patch_.u0) ||
+          nextV < patch_.v0 - kOutside * (patch_.v1 - patch_.v0) ||
+          nextV > patch_.v1 + kOutside * (patch_.v1 - patch_.v0))
+        return false;
+      const bool settled = std::abs(nextU - u) <= 1e-14 * (patch_.u1 - patch_.u0) &&
+                           std::abs(nextV - v) <= 1e-14 * (patch_.v1 - patch_.v0);
+      u = std::clamp(nextU, patch_.u0, patch_.u1);
+      v = std::clamp(nextV, patch_.v0, patch_.v1);
+      if (settled) return true;
+    }
+    return false;
+  }
+
+  /// The curve's unit direction in space at (u, v) and the step in (u, v) per unit of length
+  /// along it, both turned by `sense` (+1 or -1).
+  bool direction(double u, double v, double sense, gp_Vec& tangent, gp_Vec2d& rate) const {
+    gp_Pnt point;
+    gp_Vec du, dv;
+    patch_.surface->D1(u, v, point, du, dv);
+    const gp_Vec2d across(-dv.Dot(normal_), du.Dot(normal_));
+    const gp_Vec along = across.X() * du + across.Y() * dv;
+    if (along.Magnitude() <= 1e-300) return false;
+    tangent = sense * along / along.Magnitude();
+    rate = sense * across / along.Magnitude();
+    return true;
+  }
+
+  gp_Pnt point(double u, double v) const { return patch_.surface->Value(u, v); }
+  bool inside(double u, double v) const { return u >= patch_.u0 && u <= patch_.u1 && v >= patch_.v0 && v <= patch_.v1; }
+
+ private:
+  static constexpr double kOutside = 1e-9;
+  const Patch& patch_;
+  const CrossingLines& lines_;
+  gp_Vec normal_;
+};
+
+/// The sense in which the curve runs from `first` towards `last`: into the patch where
+/// `first` lies on its boundary and only one sense enters it, else towards `last`.
+std::optional<double> senseFrom(const LevelCurve& curve, const PatchPoint& first, const PatchPoint& last) {
+  const double length = first.point.Distance(last.point);
+  std::optional<double> entering;
+  int entered = 0;
+  for (double sense : {1.0, -1.0}) {
+    gp_Vec tangent;
+    gp_Vec2d rate;
+    if (!curve.direction(first.u, first.v, sense, tangent, rate)) return std::nullopt;
+    const double step = 1e-4 * length;
+    if (curve.inside(first.u + step * rate.X(), first.v + step * rate.Y())) {
+      ++entered;
+      entering = sense;
+    }
+  }
+  if (entered == 1) return entering;
+  gp_Vec tangent;
+  gp_Vec2d rate;
+  curve.direction(first.u, first.v, 1.0, tangent, rate);
+  return tangent.Dot(gp_Vec(first.point, last.point)) >= 0.0 ? 1.0 : -1.0;
+}
+
+/// The piece of the crossing from `first` to `last` traced along the curve itself, for a
+/// piece no line of the family meets once (a rib round a leading edge, where the lines along
+/// up touch the skin): steps along the curve's direction, each settled onto it, shortened
+/// where the direction turns fast; the points then joined by the cubic through them and
+/// their directions, parametrised by the length between them, with points added until the
+/// crossing halfway between any two is within the tolerance.
+Handle(Geom_BSplineCurve) traceAlongCurve(const Patch& patch, const CrossingLines& lines, const PatchPoint& first,
+                                          const PatchPoint& last, double tolerance) {
+  const LevelCurve curve(patch, lines);
+  const std::optional<double> sense = senseFrom(curve, first, last);
+  if (!sense) return nullptr;
+  const double length = first.point.Distance(last.point);
+  std::vector<PatchPoint> points{first};
+  std::vector<gp_Vec> tangents(1);
+  gp_Vec2d rate;
+  if (!curve.direction(first.u, first.v, *sense, tangents[0], rate)) return nullptr;
+  double step = length / 16.0;
+  for (int steps = 0; steps < 4000; ++steps) {
+    const PatchPoint& here = points.back();
+    if (here.point.Distance(last.point) <= 1.5 * step && gp_Vec(here.point, last.point).Dot(tangents.back()) > 0.0) {
+      gp_Vec tangent;
+      if (!curve.direction(last.u, last.v, *sense, tangent, rate)) return nullptr;
+      points.push_back(last);
+      tangents.push_back(tangent);
+      break;
+    }
+    gp_Vec tangent;
+    curve.direction(here.u, here.v, *sense, tangent, rate);
+    double u = here.u + step * rate.X(), v = here.v + step * rate.Y();
+    gp_Vec nextTangent;
+    if (!curve.settle(u, v) || !curve.direction(u, v, *sense, nextTangent, rate) || nextTangent.Angle(tangent) > 0.15) {
+      step /= 2.0;
+      if (step < 1e-9 * length) return nullptr;
+      continue;
+    }
+    const gp_Pnt point = curve.point(u, v);
+    if (point.Distance(here.point) < 1e-3 * step) return nullptr;  // held at the patch's boundary
+    points.push_back({0.0, u, v, point});
+    tangents.push_back(nextTangent);
+    step = std::min(step * 1.5, length / 4.0);
+  }
+  if (points.back().point.Distance(last.point) > 0.0) return nullptr;
+  // The cubic through the points, refined where its middles stray from the curve.
+  for (int round = 0; round < 12; ++round) {
+    std::vector<TracedPoint> nodes;
+    double parameter = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (i > 0) parameter += points[i].point.Distance(points[i - 1].point);
+      nodes.push_back({{parameter, points[i].u, points[i].v, points[i].point}, tangents[i]});
+    }
+    Handle(Geom_BSplineCurve) fitted = interpolated(nodes, true);
+    if (fitted.IsNull()) return nullptr;
+    std::vector<PatchPoint> refinedPoints{points.front()};
+    std::vector<gp_Vec> refinedTangents{tangents.front()};
+    bool strayed = false;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      double u = 0.5 * (points[i - 1].u + points[i].u), v = 0.5 * (points[i - 1].v + points[i].v);
+      gp_Vec tangent;
+      if (!curve.settle(u, v) || !curve.direction(u, v, *sense, tangent, rate)) return nullptr;
+      const gp_Pnt middle = curve.point(u, v);
+      const double at = 0.5 * (nodes[i - 1].at.t + nodes[i].at.t);
+      gp_Pnt onFit;
+      gp_Vec fitTangent;
+      fitted->D1(at, onFit, fitTangent);
+      gp_Vec off(onFit, middle);
+      if (fitTangent.Magnitude() > 0.0) off -= off.Dot(fitTangent.Normalized()) * fitTangent.Normalized();
+      if (off.Magnitude() > tolerance) {
+        strayed = true;
+        refinedPoints.push_back({0.0, u, v, middle});
+        refinedTangents.push_back(tangent);
+      }
+      refinedPoints.push_back(points[i]);
+      refinedTangents.push_back(tangents[i]);
+    }
+    if (!strayed) return fitted;
+    points = refinedPoints;
+    tangents = refinedTangents;
+  }
+  return nullptr;
+}
+
 /// The point of the patch on the line at t, starting from the patch parameters that the line
 /// has between two known crossings.
 std::optional<PatchPoint> pointBetween(const Patch& patch, const CrossingLines& lines, const PatchPoint& a,
@@ -383,6 +544,7 @@ std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const Cr
     PatchPoint startPoint = *start;
     if (!crossing.pieces.empty()) startPoint.point = crossing.pieces.back()->EndPoint();
     Handle(Geom_BSplineCurve) piece = tracePiece(patch.patch, lines, startPoint, *end, tolerance);
+    if (piece.IsNull()) piece = traceAlongCurve(patch.patch, lines, startPoint, *end, tolerance);
     if (piece.IsNull()) return std::nullopt;
     crossing.pieces.push_back(piece);
   }

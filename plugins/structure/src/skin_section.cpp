@@ -6,6 +6,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <TopExp.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
@@ -33,22 +34,37 @@ std::vector<TopoDS_Edge> crossingEdges(const SkinCrossing& crossing, const TopoD
 
 std::optional<TopoDS_Face> sectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
                                                const CrossingLines& lines, const CrossingEnd& from,
-                                               const CrossingEnd& to, double tolerance) {
+                                               const CrossingEnd& to, double tolerance, OpenEnds openEnds) {
   const auto upper = traceSkinCrossing(upperSkin, lines, from, to, tolerance);
   const auto lower = traceSkinCrossing(lowerSkin, lines, from, to, tolerance);
   if (!upper || !lower) return std::nullopt;
-  if (upper->start().Distance(lower->start()) <= tolerance || upper->end().Distance(lower->end()) <= tolerance)
-    return std::nullopt;
+  // At each end the skins' crossings either meet (a sharp edge of the wing, where an open end
+  // of a rib lies) or are joined by a straight line (a line of the plane, or a flat end cap).
+  const bool startsTogether = upper->start().Distance(lower->start()) <= tolerance;
+  const bool endsTogether = upper->end().Distance(lower->end()) <= tolerance;
+  const auto closable = [&](const CrossingEnd& end, bool together) {
+    if (end.kind != CrossingEnd::Kind::Open) return !together;
+    return together || openEnds == OpenEnds::ClosedStraight;
+  };
+  if (!closable(from, startsTogether) || !closable(to, endsTogether)) return std::nullopt;
   const TopoDS_Vertex upperStart = BRepBuilderAPI_MakeVertex(upper->start());
-  const TopoDS_Vertex lowerStart = BRepBuilderAPI_MakeVertex(lower->start());
+  const TopoDS_Vertex lowerStart =
+      startsTogether ? upperStart : TopoDS_Vertex(BRepBuilderAPI_MakeVertex(lower->start()));
   TopoDS_Vertex upperEnd, lowerEnd;
   const std::vector<TopoDS_Edge> upperEdges = crossingEdges(*upper, upperStart, upperEnd);
-  const std::vector<TopoDS_Edge> lowerEdges = crossingEdges(*lower, lowerStart, lowerEnd);
+  std::vector<TopoDS_Edge> lowerEdges = crossingEdges(*lower, lowerStart, lowerEnd);
+  if (endsTogether) {  // the lower crossing's last edge ends at the upper's last vertex
+    const Handle(Geom_BSplineCurve)& last = lower->pieces.back();
+    const TopoDS_Vertex lastStart =
+        lowerEdges.size() > 1 ? TopExp::LastVertex(lowerEdges[lowerEdges.size() - 2], true) : lowerStart;
+    lowerEdges.back() = BRepBuilderAPI_MakeEdge(last, lastStart, upperEnd);
+    lowerEnd = upperEnd;
+  }
   BRepBuilderAPI_MakeWire outline;
   for (const TopoDS_Edge& edge : upperEdges) outline.Add(edge);
-  outline.Add(BRepBuilderAPI_MakeEdge(upperEnd, lowerEnd).Edge());
+  if (!endsTogether) outline.Add(BRepBuilderAPI_MakeEdge(upperEnd, lowerEnd).Edge());
   for (auto edge = lowerEdges.rbegin(); edge != lowerEdges.rend(); ++edge) outline.Add(TopoDS::Edge(edge->Reversed()));
-  outline.Add(BRepBuilderAPI_MakeEdge(lowerStart, upperStart).Edge());
+  if (!startsTogether) outline.Add(BRepBuilderAPI_MakeEdge(lowerStart, upperStart).Edge());
   if (!outline.IsDone()) return std::nullopt;
   BRepBuilderAPI_MakeFace face(gp_Pln(lines.origin, lines.planeNormal()), outline.Wire(), true);
   if (!face.IsDone()) return std::nullopt;

@@ -15,14 +15,19 @@ namespace airshape::structure {
 /// slows with the edges' poles.
 inline constexpr double kTraceTolerance = 1e-8;
 
+/// What closes an open end of a section (where the plane leaves the skins): a straight line
+/// between the skins' ends (the plane's section of a flat end cap: a spar carried beyond the
+/// component segment), or nothing, the skins meeting there (a rib reaching a sharp leading or
+/// trailing edge; where they do not meet, a blunt trailing edge, the section is not made).
+enum class OpenEnds { ClosedStraight, SkinsMeet };
+
 /// The face of the plane of `lines` between a wing's upper and lower skin, from one end to the
-/// other (skin_crossing.h), made directly from where the plane meets the skins, each end
-/// closed by the straight line between the skins' ends there: on the family's line or the
-/// border line given, or where an end is open, the plane's section of the component segment's
-/// flat end airfoil. Nothing when the skins are not what the direct trace handles,
-/// or when they meet at an end; the caller then cuts the face by a Boolean operation.
+/// other (skin_crossing.h), made directly from where the plane meets the skins: each end on a
+/// line (of the family, or a border) closed by the straight line between the skins' ends there,
+/// an open end as `openEnds` says. Nothing when the skins are not what the direct trace handles;
+/// the caller then cuts the face by a Boolean operation.
 std::optional<TopoDS_Face> sectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
                                                const CrossingLines& lines, const CrossingEnd& from,
-                                               const CrossingEnd& to, double tolerance);
+                                               const CrossingEnd& to, double tolerance, OpenEnds openEnds);
 
 }  // namespace airshape::structure

@@ -100,9 +100,9 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
     const bool beyondOuter = i + 1 == wall.faces.size() && wall.carriedAfterLast;
     // The piece's plane: lines along up from one spar point (t = 0) to the next (t = 1).
     const CrossingLines lines{wall.points[i], gp_Vec(wall.points[i], wall.points[i + 1]), wall.up};
-    const auto traced =
-        sectionBetweenSkins(upperSkin, lowerSkin, lines, beyondInner ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
-                            beyondOuter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance);
+    const auto traced = sectionBetweenSkins(
+        upperSkin, lowerSkin, lines, beyondInner ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
+        beyondOuter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance, OpenEnds::ClosedStraight);
     if (traced) {
       pieces[i] = {*traced};
     } else {
