@@ -1,4 +1,4 @@
-// Rotors, pylons, nacelles, tanks, ducts, systems, decks and external objects through their
+// Rotors, pylons, nacelles, tanks, ducts, systems, decks, external objects and wing structure through their
 // plugins, as a user meets them: the file opened (not timed), then one component's shape built
 // with everything it needs (a rotor its blade, a nacelle its profiles), or every component of a
 // file. Issue aims: under 50 ms for any one of them; a whole file's under a second.
@@ -78,6 +78,16 @@ BENCHMARK_CAPTURE(buildComponent, wing_fuel_tank_box, kCpacs + "CPACS_30_D250_10
 BENCHMARK_CAPTURE(buildComponent, wing_fuel_tank_stepped, kCpacs + "CPACS_30_D250_10.xml", "FT2")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(buildComponent, wing_component_segment, kCpacs + "CPACS_30_D250_10.xml", "D250_wing_CS")
+    ->Unit(benchmark::kMillisecond);
+// Wing structure (issue aims: any one under 0.1 s): spar webs and rib sets made from the skins,
+// a skin cell cut by a Boolean prism; each with its wing built.
+BENCHMARK_CAPTURE(buildComponent, spar_web_iea22_web1, kCpacs + "IEA-22-280-RWT_DLR_loads_CPACS.xml", "web1")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(buildComponent, rib_set_d250_ribs_OW, kCpacs + "CPACS_30_D250_10.xml", "ribs_OW")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(buildComponent, rib_set_to_a_blunt_trailing_edge, kCpacs + "CPACS_30_D250_10.xml", "rib_winglet_2_6")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(buildComponent, skin_cell_d250_wingLS, kCpacs + "CPACS_30_D250_10.xml", "wingLS")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(buildEveryComponent, file_fuelTanks, kCpacs + "simpletest-fuelTanks.cpacs.xml")
     ->Unit(benchmark::kMillisecond);
