@@ -113,6 +113,21 @@ airshape_status opened(airshape_configuration** configuration, airshape::Configu
   return AIRSHAPE_OK;
 }
 
+/// Writes the components named (comma-separated, NULL for all) with one export option set: the
+/// structural model, or frames and stringers with their profiles.
+airshape_status exportWith(airshape_configuration* configuration, const char* path, const char* components,
+                           bool airshape::exporting::ExportOptions::*option) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(path, "path");
+    airshape::exporting::ExportOptions options;
+    if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
+    options.*option = true;
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    airshape::exporting::exportConfiguration(configuration->configuration, path, options);
+  });
+}
+
 }  // namespace
 
 extern "C" {
@@ -250,28 +265,12 @@ airshape_status airshape_export_deflected(airshape_configuration* configuration,
 
 airshape_status airshape_export_structure(airshape_configuration* configuration, const char* path,
                                           const char* components) {
-  return guarded([&] {
-    require(configuration, "configuration");
-    require(path, "path");
-    airshape::exporting::ExportOptions options;
-    if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
-    options.structure = true;
-    const std::lock_guard<std::mutex> guard(configuration->lock);
-    airshape::exporting::exportConfiguration(configuration->configuration, path, options);
-  });
+  return exportWith(configuration, path, components, &airshape::exporting::ExportOptions::structure);
 }
 
 airshape_status airshape_export_profiles(airshape_configuration* configuration, const char* path,
                                          const char* components) {
-  return guarded([&] {
-    require(configuration, "configuration");
-    require(path, "path");
-    airshape::exporting::ExportOptions options;
-    if (components != nullptr) options.components = airshape::exporting::splitAtCommas(components);
-    options.profiles = true;
-    const std::lock_guard<std::mutex> guard(configuration->lock);
-    airshape::exporting::exportConfiguration(configuration->configuration, path, options);
-  });
+  return exportWith(configuration, path, components, &airshape::exporting::ExportOptions::profiles);
 }
 
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
