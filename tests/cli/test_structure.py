@@ -350,6 +350,28 @@ def test_cells_bounded_by_contour_coordinates(tmp_path):
     assert "cell[4]" in answers[-1]["error"] and "needs them on all four borders" in answers[-1]["error"]
 
 
+def test_cells_of_contour_coordinates_between_etas(tmp_path):
+    # Chordwise contour coordinates 0.2 to 0.6 (ξ), spanwise from a quarter into the 4 m segment
+    # (y = 2) to its outer end (y = 5), given by the segment's eta: the cell "Aft" above.
+    def eta_border(name, eta):
+        return (f"<{name}><eta1><eta>{eta}</eta><referenceUID>RS2</referenceUID></eta1>"
+                f"<eta2><eta>{eta}</eta><referenceUID>RS2</referenceUID></eta2></{name}>")
+
+    cell = ('<cell uID="ByEta">' + eta_border("positioningInnerBorder", 0.25) +
+            "<positioningLeadingEdge><contourCoordinate>0.2</contourCoordinate></positioningLeadingEdge>" +
+            eta_border("positioningOuterBorder", 1) +
+            "<positioningTrailingEdge><contourCoordinate>0.6</contourCoordinate></positioningTrailingEdge></cell>")
+    slanted = cell.replace('uID="ByEta"', 'uID="Slanted"').replace("<eta2><eta>0.25</eta>", "<eta2><eta>0.5</eta>")
+    path = two_segment_wing(tmp_path, f"<upperShell><skin/><cells>{cell}{slanted}</cells></upperShell>")
+    area, box, slanted_error = ask(path, {"op": "component_surface_area", "uid": "ByEta"},
+                                   {"op": "bounding_box", "uid": "ByEta"},
+                                   {"op": "component_surface_area", "uid": "Slanted"})
+    assert area["ok"] == pytest.approx(3.0 * skin_length(0.2, 0.6), rel=1e-6)
+    assert box["ok"]["min"][1] == pytest.approx(2.0, abs=1e-6) and box["ok"]["max"][1] == pytest.approx(5.0, abs=1e-6)
+    # A border whose two etas differ runs across the contour coordinates: refused with its path.
+    assert "cell[2]" in slanted_error["error"] and "at one eta each" in slanted_error["error"]
+
+
 def test_cells_bounded_by_ribs(tmp_path):
     # The chordwise ribs y = 0.5, 2.5, 4.5 between spars at ξ 0.2 and 0.6 (as above); a cell from
     # rib 1 to rib 2, from the front spar to xsi 0.6: the upper skin between ξ 0.2 and 0.6 over 2 m.

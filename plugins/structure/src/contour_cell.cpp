@@ -129,27 +129,80 @@ double contourCoordinate(const std::optional<double>& value, const std::string& 
   return *value;
 }
 
+/// The span coordinate of a component segment eta: in the face of the wing segment that holds
+/// it, the share of that segment's eta (exact at the sections between segments, where the
+/// faces meet).
+double spanAtEta(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell,
+                 const std::vector<SkinFace>& faces, double eta, const std::string& where) {
+  const std::vector<std::string> segments = wing.componentSegmentSegmentUids(configuration, cell.componentSegmentUid);
+  const auto csEta = [&](std::size_t k, double segmentEta) {
+    return wing.componentSegmentEta(configuration, cell.componentSegmentUid, segments[k], segmentEta);
+  };
+  for (std::size_t k = 0; k < segments.size() && k < faces.size(); ++k) {
+    if (eta < csEta(k, 0.0) - 1e-12 || eta > csEta(k, 1.0) + 1e-12) continue;
+    double low = 0.0, high = 1.0;
+    for (int step = 0; step < 60; ++step) {
+      const double middle = 0.5 * (low + high);
+      (csEta(k, middle) < eta ? low : high) = middle;
+    }
+    const double share = 0.5 * (low + high);
+    return faces[k].span.from + share * (faces[k].span.to - faces[k].span.from);
+  }
+  throw Error(ErrorCode::InvalidModel, "eta " + std::to_string(eta) + " lies outside the component segment", {}, where);
+}
+
+/// A spanwise border's span coordinate: its contour coordinate, or that of its one eta.
+double spanwiseCoordinate(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell,
+                          const std::vector<SkinFace>& faces, const schema::CellPositioningSpanwiseType& border,
+                          const std::string& where) {
+  if (border.contourCoordinate) return contourCoordinate(border.contourCoordinate, where);
+  double eta = 0.0;
+  try {
+    eta =
+        wing.componentSegmentEta(configuration, cell.componentSegmentUid, border.eta1->referenceUID, border.eta1->eta);
+  } catch (const Error& error) {
+    throw Error(error.code(), error.message(), {}, where + "/eta1");
+  }
+  return spanAtEta(configuration, wing, cell, faces, eta, where + "/eta1");
+}
+
 }  // namespace
 
 bool boundedByContourCoordinates(const WingCell& cell) {
   const auto& node = *cell.node;
+  const bool chordwise = node.positioningLeadingEdge && node.positioningLeadingEdge->contourCoordinate &&
+                         node.positioningTrailingEdge && node.positioningTrailingEdge->contourCoordinate;
   const int count = (node.positioningInnerBorder && node.positioningInnerBorder->contourCoordinate) +
                     (node.positioningOuterBorder && node.positioningOuterBorder->contourCoordinate) +
                     (node.positioningLeadingEdge && node.positioningLeadingEdge->contourCoordinate) +
                     (node.positioningTrailingEdge && node.positioningTrailingEdge->contourCoordinate);
-  if (count != 0 && count != 4)
-    throw Error(
-        ErrorCode::InvalidModel,
-        "a cell bounded by contour coordinates needs them on all four borders; this one has " + std::to_string(count),
-        {}, cell.xpath);
-  return count == 4;
+  if (count == 0) return false;
+  if (count == 4) return true;
+  // Chordwise contour coordinates between spanwise borders at one eta each: the span coordinate
+  // of that eta bounds the cell (spanwiseRange).
+  const auto atOneEta = [](const auto& border) {
+    return border && !border->contourCoordinate && border->eta1 && border->eta2 &&
+           border->eta1->eta == border->eta2->eta && border->eta1->referenceUID == border->eta2->referenceUID;
+  };
+  const auto spanwiseUsable = [&](const auto& border) {
+    return (border && border->contourCoordinate) || atOneEta(border);
+  };
+  if (chordwise && spanwiseUsable(node.positioningInnerBorder) && spanwiseUsable(node.positioningOuterBorder))
+    return true;
+  throw Error(ErrorCode::InvalidModel,
+              "a cell bounded by contour coordinates needs them on all four borders, or on its leading and trailing "
+              "edge with spanwise borders at one eta each; this one has " +
+                  std::to_string(count),
+              {}, cell.xpath);
 }
 
 NamedShape contourCellSkin(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell) {
   const auto& node = *cell.node;
-  const Range span{
-      contourCoordinate(node.positioningInnerBorder->contourCoordinate, cell.xpath + "/positioningInnerBorder"),
-      contourCoordinate(node.positioningOuterBorder->contourCoordinate, cell.xpath + "/positioningOuterBorder")};
+  const std::vector<SkinFace> faces = skinFaces(configuration, wing, cell);
+  const Range span{spanwiseCoordinate(configuration, wing, cell, faces, *node.positioningInnerBorder,
+                                      cell.xpath + "/positioningInnerBorder"),
+                   spanwiseCoordinate(configuration, wing, cell, faces, *node.positioningOuterBorder,
+                                      cell.xpath + "/positioningOuterBorder")};
   const Range chord{
       contourCoordinate(node.positioningLeadingEdge->contourCoordinate, cell.xpath + "/positioningLeadingEdge"),
       contourCoordinate(node.positioningTrailingEdge->contourCoordinate, cell.xpath + "/positioningTrailingEdge")};
@@ -159,7 +212,7 @@ NamedShape contourCellSkin(const Configuration& configuration, const wing::WingS
                 "leading edge",
                 {}, cell.xpath);
   std::vector<TopoDS_Face> patches;
-  for (const SkinFace& face : skinFaces(configuration, wing, cell))
+  for (const SkinFace& face : faces)
     if (const TopoDS_Face patch = trimmed(face, span, chord); !patch.IsNull()) patches.push_back(patch);
   NamedFaces patch;
   patch.add(cell.uid + "/skin", patches);
