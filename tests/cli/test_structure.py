@@ -135,9 +135,18 @@ def test_ribs_to_the_wing_edges_in_closed_form(tmp_path):
                                       {"op": "bounding_box", "uid": "Ribs"}))
     assert area == pytest.approx(3 * 0.2, rel=1e-9)
     assert box["min"][0] == pytest.approx(1.0, abs=1e-7) and box["max"][0] == pytest.approx(3.0, abs=1e-7)
+    edge_to_edge = whole.read_text()
     to_spar = with_spars(tmp_path, positions, spars, ribs("Ribs", 0.1, 0.9, 3, rib_start="leadingEdge"))
     front, = (a["ok"] for a in ask(to_spar, {"op": "component_surface_area", "uid": "Ribs"}))
     assert front == pytest.approx(3 * 2 * 0.6 * (0.6 ** 2 / 2 - 0.6 ** 3 / 3), rel=1e-9)
+    # A blunt trailing edge 0.02 of the chord thick (CST: each side ξ·0.01 further out): this flat
+    # wing's trailing edge face is plane, crossed by the rib in a straight line; 0.2 + 2·0.02 each.
+    blunt = tmp_path / "blunt.xml"
+    blunt.write_text(edge_to_edge.replace('<lowerB mapType="vector">0.15</lowerB>',
+                                               '<lowerB mapType="vector">0.15</lowerB>'
+                                               "<trailingEdgeThickness>0.02</trailingEdgeThickness>", 1))
+    blunt_area, = (a["ok"] for a in ask(blunt, {"op": "component_surface_area", "uid": "Ribs"}))
+    assert blunt_area == pytest.approx(3 * (0.2 + 2 * 0.02), rel=1e-9)
 
 
 def test_an_explicitly_positioned_rib_between_two_spars(tmp_path):

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -476,6 +477,31 @@ std::optional<PatchPoint> pointBetween(const Patch& patch, const CrossingLines& 
   return point;
 }
 
+/// The boundary of the patch a point on it lies on, when that boundary is a straight line
+/// (within the tolerance at three points between its corners): its corners.
+std::optional<SkinCrossing::StraightEdge> straightBoundaryAt(const Patch& patch, const PatchPoint& point,
+                                                             double tolerance) {
+  const double uSlack = 1e-9 * (patch.u1 - patch.u0), vSlack = 1e-9 * (patch.v1 - patch.v0);
+  std::function<gp_Pnt(double)> along;
+  if (std::abs(point.u - patch.u0) <= uSlack || std::abs(point.u - patch.u1) <= uSlack) {
+    const double u = std::abs(point.u - patch.u0) <= uSlack ? patch.u0 : patch.u1;
+    along = [&patch, u](double share) { return patch.surface->Value(u, patch.v0 + share * (patch.v1 - patch.v0)); };
+  } else if (std::abs(point.v - patch.v0) <= vSlack || std::abs(point.v - patch.v1) <= vSlack) {
+    const double v = std::abs(point.v - patch.v0) <= vSlack ? patch.v0 : patch.v1;
+    along = [&patch, v](double share) { return patch.surface->Value(patch.u0 + share * (patch.u1 - patch.u0), v); };
+  } else {
+    return std::nullopt;
+  }
+  const gp_Pnt first = along(0.0), last = along(1.0);
+  const gp_Vec chord(first, last);
+  if (chord.Magnitude() <= tolerance) return std::nullopt;
+  for (double share : {0.25, 0.5, 0.75}) {
+    const gp_Vec off(first, along(share));
+    if (off.Crossed(chord.Normalized()).Magnitude() > tolerance) return std::nullopt;
+  }
+  return SkinCrossing::StraightEdge{first, last};
+}
+
 /// A patch the plane crosses, from one boundary crossing to the other.
 struct CrossedPatch {
   Patch patch;
@@ -549,6 +575,10 @@ std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const Cr
     crossing.pieces.push_back(piece);
   }
   if (crossing.pieces.empty()) return std::nullopt;
+  if (fromEnd.kind == CrossingEnd::Kind::Open)
+    crossing.startEdge = straightBoundaryAt(crossed.front().patch, crossed.front().entry, tolerance);
+  if (toEnd.kind == CrossingEnd::Kind::Open)
+    crossing.endEdge = straightBoundaryAt(crossed.back().patch, crossed.back().exit, tolerance);
   return crossing;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Geom_BSplineCurve.hxx>
@@ -46,7 +47,13 @@ struct CrossingEnd {
 /// sharing their end points, each within `tolerance` of the true crossing. The pieces lie in
 /// the plane.
 struct SkinCrossing {
+  /// A straight edge of the skin: its two corners.
+  using StraightEdge = std::pair<gp_Pnt, gp_Pnt>;
+
   std::vector<Handle(Geom_BSplineCurve)> pieces;
+  /// Where an open end leaves the skin across a straight edge of it (a trailing edge's line),
+  /// that edge.
+  std::optional<StraightEdge> startEdge, endEdge;
 
   gp_Pnt start() const { return pieces.front()->StartPoint(); }
   gp_Pnt end() const { return pieces.back()->EndPoint(); }

@@ -30,6 +30,17 @@ std::vector<TopoDS_Edge> crossingEdges(const SkinCrossing& crossing, const TopoD
   return edges;
 }
 
+/// Whether the skins end in straight edges that lie in one plane (a flat blunt trailing edge):
+/// whatever surface closes the wing between them is that plane, and the section crosses it in
+/// a straight line.
+bool flatBetween(const std::optional<SkinCrossing::StraightEdge>& top,
+                 const std::optional<SkinCrossing::StraightEdge>& bottom, double tolerance) {
+  if (!top || !bottom) return false;
+  const gp_Vec normal = gp_Vec(top->first, top->second).Crossed(gp_Vec(top->first, bottom->first));
+  if (normal.Magnitude() <= 1e-300) return false;
+  return std::abs(gp_Vec(top->first, bottom->second).Dot(normal.Normalized())) <= tolerance;
+}
+
 }  // namespace
 
 std::optional<TopoDS_Face> sectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
@@ -42,11 +53,14 @@ std::optional<TopoDS_Face> sectionBetweenSkins(const TopoDS_Shape& upperSkin, co
   // of a rib lies) or are joined by a straight line (a line of the plane, or a flat end cap).
   const bool startsTogether = upper->start().Distance(lower->start()) <= tolerance;
   const bool endsTogether = upper->end().Distance(lower->end()) <= tolerance;
-  const auto closable = [&](const CrossingEnd& end, bool together) {
+  const auto closable = [&](const CrossingEnd& end, bool together, const std::optional<SkinCrossing::StraightEdge>& top,
+                            const std::optional<SkinCrossing::StraightEdge>& bottom) {
     if (end.kind != CrossingEnd::Kind::Open) return !together;
-    return together || openEnds == OpenEnds::ClosedStraight;
+    return together || openEnds == OpenEnds::ClosedStraight || flatBetween(top, bottom, tolerance);
   };
-  if (!closable(from, startsTogether) || !closable(to, endsTogether)) return std::nullopt;
+  if (!closable(from, startsTogether, upper->startEdge, lower->startEdge) ||
+      !closable(to, endsTogether, upper->endEdge, lower->endEdge))
+    return std::nullopt;
   const TopoDS_Vertex upperStart = BRepBuilderAPI_MakeVertex(upper->start());
   const TopoDS_Vertex lowerStart =
       startsTogether ? upperStart : TopoDS_Vertex(BRepBuilderAPI_MakeVertex(lower->start()));

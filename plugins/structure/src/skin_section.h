@@ -18,7 +18,8 @@ inline constexpr double kTraceTolerance = 1e-8;
 /// What closes an open end of a section (where the plane leaves the skins): a straight line
 /// between the skins' ends (the plane's section of a flat end cap: a spar carried beyond the
 /// component segment), or nothing, the skins meeting there (a rib reaching a sharp leading or
-/// trailing edge; where they do not meet, a blunt trailing edge, the section is not made).
+/// trailing edge), or, where they end in straight edges lying in one plane (a flat blunt
+/// trailing edge), the straight line across it; at any other blunt edge the section is not made.
 enum class OpenEnds { ClosedStraight, SkinsMeet };
 
 /// The face of the plane of `lines` between a wing's upper and lower skin, from one end to the
