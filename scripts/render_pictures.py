@@ -108,12 +108,13 @@ def write_png(image, path):
                   chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
-def exported(source, components, deflection):
-    """The groups of an OBJ export of some components of a file."""
+def exported(source, components, deflection, profiles=False):
+    """The groups of an OBJ export of some components of a file (frames and stringers with their
+    profiles swept, with `profiles`)."""
     with tempfile.TemporaryDirectory() as folder:
         obj = os.path.join(folder, "structure.obj")
         subprocess.run([AIRSHAPE, "export", source, "--components", ",".join(components), "--deflection",
-                        str(deflection), "-q", "-o", obj], check=True)
+                        str(deflection), "-q", "-o", obj] + (["--profiles"] if profiles else []), check=True)
         return read_obj(obj)
 
 
@@ -127,6 +128,10 @@ def main():
     groups = exported(AIRLINER, ["Fuselage", "Rear_Bulkhead", "Cargo_Door"], 0.05)
     write_png(render(groups, ["Rear_Bulkhead", "Cargo_Door"], azimuth=-60, elevation=15),
               os.path.join(images, "structure-fuselage.png"))
+    # The frames round the cargo door with their Z profiles swept along them, and the door.
+    groups = exported(AIRLINER, ["Frame_Door_Front", "Frame_Door_Rear", "Cargo_Door"], 0.002, profiles=True)
+    write_png(render(groups, ["Frame_Door_Front", "Frame_Door_Rear", "Cargo_Door"], azimuth=-60, elevation=15),
+              os.path.join(images, "structure-frames.png"))
     groups = exported(AIRLINER, ["Wing", "Wing_InnerTank", "Wing_OuterTank"], 0.02)
     write_png(render(groups, ["Wing_InnerTank", "Wing_OuterTank"], azimuth=-20, elevation=50),
               os.path.join(images, "structure-tanks.png"))
