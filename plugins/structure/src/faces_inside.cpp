@@ -54,4 +54,24 @@ std::vector<std::vector<TopoDS_Face>> facesInsideEach(const std::vector<TopoDS_F
   return inside;
 }
 
+std::vector<std::vector<TopoDS_Face>> facesInsideEach(
+    const std::vector<TopoDS_Face>& faces, const std::function<const TopoDS_Shape&()>& solid,
+    const std::function<std::optional<TopoDS_Face>(std::size_t index)>& direct) {
+  std::vector<std::vector<TopoDS_Face>> pieces(faces.size());
+  std::vector<TopoDS_Face> toCut;
+  std::vector<std::size_t> cutIndices;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (const std::optional<TopoDS_Face> piece = direct(i)) {
+      pieces[i] = {*piece};
+    } else {
+      toCut.push_back(faces[i]);
+      cutIndices.push_back(i);
+    }
+  }
+  if (toCut.empty()) return pieces;
+  const std::vector<std::vector<TopoDS_Face>> cut = facesInsideEach(toCut, solid());
+  for (std::size_t k = 0; k < cut.size(); ++k) pieces[cutIndices[k]] = cut[k];
+  return pieces;
+}
+
 }  // namespace airshape::structure

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include <TopoDS_Face.hxx>
@@ -15,5 +17,13 @@ std::vector<TopoDS_Face> facesInside(const TopoDS_Shape& faces, const TopoDS_Sha
 /// For each face, its parts inside `solid`, found by one Boolean common for all of them (much
 /// faster than one each: the solid is prepared once). Throws Error when the common fails.
 std::vector<std::vector<TopoDS_Face>> facesInsideEach(const std::vector<TopoDS_Face>& faces, const TopoDS_Shape& solid);
+
+/// For each face, the piece `direct` makes of it without a Boolean operation (a section traced
+/// from the skins), or, where it makes none, its parts inside the solid `solid` gives (asked for
+/// only then: building it may cost more than the pieces): one Boolean common for all of those.
+/// Throws Error when the common fails.
+std::vector<std::vector<TopoDS_Face>> facesInsideEach(
+    const std::vector<TopoDS_Face>& faces, const std::function<const TopoDS_Shape&()>& solid,
+    const std::function<std::optional<TopoDS_Face>(std::size_t index)>& direct);
 
 }  // namespace airshape::structure

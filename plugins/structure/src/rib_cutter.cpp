@@ -141,28 +141,19 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
                                                         const std::string& where) const {
   // Ribs between lines straight from the skins where they allow it (much faster than a Boolean
   // cut of skins with many knots); the others cut out of the component segment by one common.
-  std::vector<std::vector<TopoDS_Face>> ribs(outlines.size());
-  std::vector<TopoDS_Face> toCut;
-  std::vector<std::size_t> cutIndices;
-  for (std::size_t i = 0; i < outlines.size(); ++i) {
-    const auto& [upper, lower] = skins();
-    const std::optional<TopoDS_Face> traced =
-        sectionBetweenSkins(upper, lower, outlines[i].lines, outlines[i].start, outlines[i].end,
-                            kTraceTolerance * reach_, OpenEnds::SkinsMeet);
-    if (traced) {
-      ribs[i] = {*traced};
-    } else {
-      toCut.push_back(outlines[i].face);
-      cutIndices.push_back(i);
-    }
-  }
-  if (!toCut.empty()) {
-    try {
-      const std::vector<std::vector<TopoDS_Face>> cut = facesInsideEach(toCut, frame_.solid());
-      for (std::size_t k = 0; k < cut.size(); ++k) ribs[cutIndices[k]] = cut[k];
-    } catch (const Error&) {
-      throw Error(ErrorCode::InvalidModel, "the ribs cannot be cut out of their component segment", {}, where);
-    }
+  const auto& [upper, lower] = skins();
+  std::vector<TopoDS_Face> faces;
+  for (const RibOutline& outline : outlines) faces.push_back(outline.face);
+  const auto traced = [&](std::size_t i) {
+    return sectionBetweenSkins(upper, lower, outlines[i].lines, outlines[i].start, outlines[i].end,
+                               kTraceTolerance * reach_, OpenEnds::SkinsMeet);
+  };
+  std::vector<std::vector<TopoDS_Face>> ribs;
+  try {
+    ribs = facesInsideEach(
+        faces, [&]() -> const TopoDS_Shape& { return frame_.solid(); }, traced);
+  } catch (const Error&) {
+    throw Error(ErrorCode::InvalidModel, "the ribs cannot be cut out of their component segment", {}, where);
   }
   for (std::size_t i = 0; i < ribs.size(); ++i)
     if (ribs[i].empty())

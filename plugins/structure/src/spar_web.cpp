@@ -92,31 +92,21 @@ NamedShape sparWeb(const Configuration& configuration, const wing::WingServices&
   const TopoDS_Shape upperSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Upper);
   const TopoDS_Shape lowerSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Lower);
   const double tolerance = kTraceTolerance * frame.reach();
-  std::vector<std::vector<TopoDS_Face>> pieces(wall.faces.size());
-  std::vector<TopoDS_Face> toCut;
-  std::vector<std::size_t> cutIndices;
-  for (std::size_t i = 0; i < wall.faces.size(); ++i) {
+  const auto traced = [&](std::size_t i) {
     const bool beyondInner = i == 0 && wall.carriedBeforeFirst;
     const bool beyondOuter = i + 1 == wall.faces.size() && wall.carriedAfterLast;
     // The piece's plane: lines along up from one spar point (t = 0) to the next (t = 1).
     const CrossingLines lines{wall.points[i], gp_Vec(wall.points[i], wall.points[i + 1]), wall.up};
-    const auto traced = sectionBetweenSkins(
+    return sectionBetweenSkins(
         upperSkin, lowerSkin, lines, beyondInner ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
         beyondOuter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance, OpenEnds::ClosedStraight);
-    if (traced) {
-      pieces[i] = {*traced};
-    } else {
-      toCut.push_back(wall.faces[i]);
-      cutIndices.push_back(i);
-    }
-  }
-  if (!toCut.empty()) {
-    try {
-      const std::vector<std::vector<TopoDS_Face>> cut = facesInsideEach(toCut, frame.solid());
-      for (std::size_t k = 0; k < cut.size(); ++k) pieces[cutIndices[k]] = cut[k];
-    } catch (const Error& error) {
-      throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
-    }
+  };
+  std::vector<std::vector<TopoDS_Face>> pieces;
+  try {
+    pieces = facesInsideEach(
+        wall.faces, [&]() -> const TopoDS_Shape& { return frame.solid(); }, traced);
+  } catch (const Error& error) {
+    throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
   }
   NamedFaces web;
   for (const std::vector<TopoDS_Face>& inside : pieces) web.add(spar.uid + "/web", inside);
