@@ -135,7 +135,7 @@ class RibSet {
   /// rib by its cross section's x rotation.
   std::pair<gp_Vec, gp_Vec> ribAxes(const gp_Pnt& point, double eta, bool onSpar) const {
     const bool sparEnd = !isWingEdge(positioning_.ribReference) && (eta < 1e-7 || eta > 1.0 - 1e-7);
-    gp_Vec up = onSpar || sparEnd ? gp_Vec(0, 0, 1) : frame_.midplaneNormal(frame_.etaOf(point));
+    gp_Vec up = onSpar || sparEnd ? frame_.uprightAtSparPosition(point) : frame_.midplaneNormal(frame_.etaOf(point));
     const gp_Vec direction = ribDirection(point, up);
     up.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(direction)), (xRotationOf(ribs_) - 90.0) * kDegrees);
     return {direction, up};
@@ -229,14 +229,14 @@ class ExplicitRib {
   }
 
   /// The up direction a spar gives at the rib's start (or end): along the line where the plane
-  /// across the rib (through the midplane normal) meets the spar's web; the wing's z axis at a
-  /// spar position; nothing at the wing's edges.
+  /// across the rib (through the midplane normal) meets the spar's web; how the spar stands at
+  /// a spar position (StructureFrame::uprightAtSparPosition); nothing at the wing's edges.
   gp_Vec upAt(const gp_Pnt& start, const gp_Pnt& end, bool atStart) const {
     const auto& sparPosition = atStart ? positioning_.startSparPositionUID : positioning_.endSparPositionUID;
-    if (sparPosition) return gp_Vec(0, 0, 1);
+    const gp_Pnt at = atStart ? start : end;
+    if (sparPosition) return frame_.uprightAtSparPosition(at);
     const std::string& spar = atStart ? positioning_.ribStart : positioning_.ribEnd;
     if (isWingEdge(spar)) return gp_Vec(0, 0, 0);
-    const gp_Pnt at = atStart ? start : end;
     const gp_Vec across = frame_.midplaneNormal(frame_.etaOf(at)).Crossed(gp_Vec(start, end));
     const gp_Pln plane(frame_.toGlobal(at), gp_Dir(frame_.toGlobal(across)));
     std::vector<gp_Pnt> points = cutter_.sparSection(spar, plane, xpath() + (atStart ? "/ribStart" : "/ribEnd"));

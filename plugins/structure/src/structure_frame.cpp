@@ -102,6 +102,18 @@ gp_Vec StructureFrame::thicknessDirection(double eta, double xsi) const {
   return toWing(gp_Vec(lower, upper));
 }
 
+gp_Vec StructureFrame::uprightAtSparPosition(const gp_Pnt& point) const {
+  const double eta = etaOf(point);
+  for (const double section : sectionEtas()) {
+    if (std::abs(section - eta) > 1e-9) continue;
+    const gp_Vec chord(chordPoint("", section, 0.0), chordPoint("", section, 1.0));
+    const gp_Vec sectionNormal = chord.Crossed(thicknessDirection(section, 0.5));
+    const gp_Vec upright = sectionNormal.Crossed(gp_Vec(1, 0, 0));
+    if (upright.Magnitude() > 1e-12 * sectionNormal.Magnitude()) return upright.Normalized();
+  }
+  return gp_Vec(0, 0, 1);
+}
+
 gp_Vec StructureFrame::etaDirection(double eta) const {
   const Polyline edge = leadingEdge();
   std::vector<gp_Pnt> seenFromFront;
