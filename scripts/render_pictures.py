@@ -132,6 +132,12 @@ def main():
     groups = exported(AIRLINER, ["Frame_Door_Front", "Frame_Door_Rear", "Cargo_Door"], 0.002, profiles=True)
     write_png(render(groups, ["Frame_Door_Front", "Frame_Door_Rear", "Cargo_Door"], azimuth=-60, elevation=15),
               os.path.join(images, "structure-frames.png"))
+    # A flap's own structure, where the shared D250 file is at hand.
+    d250 = os.path.join(SOURCE, "..", "shared", "data", "cpacs", "CPACS_30_D250_10.xml")
+    if os.path.exists(d250):
+        flap = ["T1Spar1_IF", "T1Spar2_IF", "TED1R1", "TED1R2"]
+        groups = exported(d250, ["D250_InnerFlap"] + flap, 0.005)
+        write_png(render(groups, flap, azimuth=-30, elevation=35), os.path.join(images, "structure-device.png"))
     groups = exported(AIRLINER, ["Wing", "Wing_InnerTank", "Wing_OuterTank"], 0.02)
     write_png(render(groups, ["Wing_InnerTank", "Wing_OuterTank"], azimuth=-20, elevation=50),
               os.path.join(images, "structure-tanks.png"))

@@ -12,8 +12,8 @@ from conftest import BUILD, EXAMPLE, SOURCE, airshape
 def test_built_in_plugins_are_listed():
     result = airshape("plugins")
     assert result.returncode == 0, result.stderr
-    for name, version in (("wing", "0.1.0"), ("fuselage", "0.3.0"), ("controlsurfaces", "0.2.0"),
-                          ("structure", "0.6.0"), ("nacelle", "0.2.0"), ("rotor", "0.2.0"), ("tank", "0.2.0")):
+    for name, version in (("wing", "0.1.0"), ("fuselage", "0.3.0"), ("controlsurfaces", "0.3.0"),
+                          ("structure", "0.7.0"), ("nacelle", "0.2.0"), ("rotor", "0.2.0"), ("tank", "0.2.0")):
         assert f"\n{name} {version}" in result.stdout
     assert "wing_count" in result.stdout and "bounding_box" in result.stdout
 

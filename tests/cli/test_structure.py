@@ -470,3 +470,50 @@ def test_spar_positions_on_curves(tmp_path):
     assert "sparPosition[7]/sparPositionCurve/referenceUID" in loop["error"]
     assert "positioned on itself" in loop["error"]
     assert "sparPosition[8]/sparPositionCurve/referenceUID" in dangling["error"] and "'Nothing'" in dangling["error"]
+
+
+def test_the_structure_of_a_flap_in_its_own_coordinates(tmp_path):
+    # The flap of the test wing spans component segment eta 0.2 to 0.8 (y 1 to 4) aft of xsi 0.7
+    # (x 2.4 to 3). Its own spar at device xsi 0.5 (ξ 0.85, x 2.7) from its inner to its outer
+    # border, positioned with the component segment as reference (as the D150 and D250 files
+    # do), its own rib at device eta 0.5 (y 2.5) from its leading to its trailing edge, and a
+    # cell of its upper skin aft of its spar.
+    def eta_xsi(kind, eta, xsi):
+        return f"<{kind}><eta>{eta}</eta><xsi>{xsi}</xsi><referenceUID>RectCS</referenceUID></{kind}>"
+
+    structure = (
+        "<structure><upperShell><skin/><cells><cell uID=\"FlapCell\">"
+        "<positioningLeadingEdge><sparUID>FlapSpar</sparUID></positioningLeadingEdge>"
+        "<positioningTrailingEdge><xsi1>1</xsi1><xsi2>1</xsi2></positioningTrailingEdge>"
+        "<positioningInnerBorder><eta1><eta>0</eta><referenceUID>Flap</referenceUID></eta1>"
+        "<eta2><eta>0</eta><referenceUID>Flap</referenceUID></eta2></positioningInnerBorder>"
+        "<positioningOuterBorder><eta1><eta>1</eta><referenceUID>Flap</referenceUID></eta1>"
+        "<eta2><eta>1</eta><referenceUID>Flap</referenceUID></eta2></positioningOuterBorder>"
+        "</cell></cells></upperShell>"
+        '<ribsDefinitions><ribsDefinition uID="FlapRib"><name>r</name><ribExplicitPositioning>'
+        f"{eta_xsi('startEtaXsiPoint', 0.5, 0)}{eta_xsi('endEtaXsiPoint', 0.5, 1)}"
+        "<ribStart>le</ribStart><ribEnd>trailingEdge</ribEnd></ribExplicitPositioning></ribsDefinition>"
+        "</ribsDefinitions><spars><sparPositions>"
+        + position("FlapSpar0", 0, 0.5) + position("FlapSpar1", 1, 0.5)
+        + "</sparPositions><sparSegments>" + segment("FlapSpar", "FlapSpar0", "FlapSpar1")
+        + "</sparSegments></spars></structure>")
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    flap = '<trailingEdgeDevice uID="Flap">'
+    at = text.index("<path>", text.index(flap))
+    path = tmp_path / "flap-structure.xml"
+    path.write_text(text[:at] + structure + text[at:])
+    answers = ask(path, {"op": "component_surface_area", "uid": "FlapSpar"}, {"op": "bounding_box", "uid": "FlapSpar"},
+                  {"op": "component_surface_area", "uid": "FlapRib"}, {"op": "bounding_box", "uid": "FlapRib"},
+                  {"op": "component_surface_area", "uid": "FlapCell"}, {"op": "component_type", "uid": "FlapSpar"})
+    spar_area, spar_box, rib_area, rib_box, cell_area, kind = (a.get("ok", a) for a in answers)
+    assert kind == "wing_spar"
+    # The flap is cut from the wing by a Boolean operation: what is cut from the flap carries its
+    # tolerance (micrometres), so the figures hold to 1e-5.
+    assert spar_area == pytest.approx(3 * height(0.85), rel=1e-5)
+    assert spar_box["min"][0] == pytest.approx(2.7, abs=1e-5) and spar_box["max"][0] == pytest.approx(2.7, abs=1e-5)
+    assert spar_box["min"][1] == pytest.approx(1, abs=1e-5) and spar_box["max"][1] == pytest.approx(4, abs=1e-5)
+    # The flap's section at y = 2.5: 2 · ∫ from ξ 0.7 to 1 of 0.6 ξ(1 − ξ) dξ.
+    assert rib_area == pytest.approx(1.2 * ((1 / 2 - 1 / 3) - (0.7 ** 2 / 2 - 0.7 ** 3 / 3)), rel=1e-5)
+    assert rib_box["min"][1] == pytest.approx(2.5, abs=1e-5) and rib_box["min"][0] == pytest.approx(2.4, abs=1e-5)
+    assert cell_area == pytest.approx(3 * skin_length(0.85, 1), rel=1e-5)

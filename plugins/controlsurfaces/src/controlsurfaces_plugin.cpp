@@ -18,6 +18,7 @@
 #include "airshape/query/model_selection.h"
 #include "device_geometry.h"
 #include "device_list.h"
+#include "device_services.h"
 #include "hinge_motion.h"
 
 namespace airshape::controlsurfaces {
@@ -57,12 +58,16 @@ Json motionJson(double p, const gp_Trsf& motion) {
 class ControlSurfacesPlugin final : public plugin::BasicPlugin {
  public:
   ControlSurfacesPlugin()
-      : BasicPlugin("controlsurfaces", "0.2.0", "flaps, slats, ailerons and spoilers of wings",
+      : BasicPlugin("controlsurfaces", "0.3.0", "flaps, slats, ailerons and spoilers of wings",
                     {{"trailingEdgeDevice", ""}, {"leadingEdgeDevice", ""}, {"spoiler", ""}},
                     {{"wing", "0.1.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     wing_ = services.find<wing::WingServices>(wing::kWingServices);
+  }
+
+  void offerServices(plugin::ServiceRegistry& services) const override {
+    services.offer<DeviceServices>(kDeviceServices, makeDeviceServices(wing_));
   }
 
   void registerShapeBuilders(ComponentShapes& shapes) const override {

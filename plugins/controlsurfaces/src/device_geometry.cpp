@@ -62,6 +62,37 @@ double DeviceGeometry::componentSegmentEta(const RelativeCoordinate& eta, const 
   }
 }
 
+std::pair<double, double> DeviceGeometry::componentSegmentCoordinates(double eta, double xsi) const {
+  const BorderDefinition &inner = device_.innerBorder, &outer = device_.outerBorder;
+  const auto between = [](double a, double b, double share) { return a + share * (b - a); };
+  const double innerEta = between(componentSegmentEta(inner.etaLE, inner.xpath + "/etaLE"),
+                                  componentSegmentEta(inner.etaTE, inner.xpath + "/etaTE"), xsi);
+  const double outerEta = between(componentSegmentEta(outer.etaLE, outer.xpath + "/etaLE"),
+                                  componentSegmentEta(outer.etaTE, outer.xpath + "/etaTE"), xsi);
+  const double innerXsi = between(inner.xsiLE, inner.xsiTE, xsi), outerXsi = between(outer.xsiLE, outer.xsiTE, xsi);
+  return {between(innerEta, outerEta, eta), between(innerXsi, outerXsi, eta)};
+}
+
+gp_Pnt DeviceGeometry::ownChordPoint(double eta, double xsi) const {
+  const BorderDefinition &inner = device_.innerBorder, &outer = device_.outerBorder;
+  // An edge on the wing's own edge follows the wing; one within the wing runs straight.
+  const auto edgePoint = [&](bool leading) {
+    const RelativeCoordinate &innerEta = leading ? inner.etaLE : inner.etaTE,
+                             &outerEta = leading ? outer.etaLE : outer.etaTE;
+    const double innerXsi = leading ? inner.xsiLE : inner.xsiTE, outerXsi = leading ? outer.xsiLE : outer.xsiTE;
+    const bool onWingEdge = (innerXsi == 0.0 && outerXsi == 0.0) || (innerXsi == 1.0 && outerXsi == 1.0);
+    const gp_Pnt innerPoint = chordPoint(innerEta, innerXsi, inner.xpath);
+    const gp_Pnt outerPoint = chordPoint(outerEta, outerXsi, outer.xpath);
+    if (!onWingEdge) return innerPoint.Translated(eta * gp_Vec(innerPoint, outerPoint));
+    const double csEta =
+        componentSegmentEta(innerEta, inner.xpath) +
+        eta * (componentSegmentEta(outerEta, outer.xpath) - componentSegmentEta(innerEta, inner.xpath));
+    return wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, csEta, innerXsi, Surface::Chord);
+  };
+  const gp_Pnt leadingEdge = edgePoint(true), trailingEdge = edgePoint(false);
+  return leadingEdge.Translated(xsi * gp_Vec(leadingEdge, trailingEdge));
+}
+
 gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const {
   return wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, componentSegmentEta(eta, xpath), xsi,
                                      Surface::Chord);

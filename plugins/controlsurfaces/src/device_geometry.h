@@ -48,6 +48,12 @@ class DeviceGeometry {
   /// The control parameters of the first and the last step (QUERY-components §3.3).
   std::pair<double, double> parameterRange() const;
 
+  /// Where the device's own (eta, xsi) lie in its component segment's coordinates: bilinear
+  /// between its borders' leading- and trailing-edge points (DeviceServices).
+  std::pair<double, double> componentSegmentCoordinates(double eta, double xsi) const;
+  /// The point of the device's own chord surface at its (eta, xsi) (DeviceServices::chordPoint).
+  gp_Pnt ownChordPoint(double eta, double xsi) const;
+
   const Device& device() const { return device_; }
 
  private:

@@ -19,6 +19,7 @@ struct WingCell {
   bool upper = true;  ///< of the upper shell, else of the lower
   const schema::WingCellType* node = nullptr;
   const schema::WingComponentSegmentStructureType* structure = nullptr;  ///< holds its spars and ribs
+  std::string deviceUid;  ///< the control device whose own structure it is, if any
 };
 
 /// The cell with this uID in any model. Throws Error when none has it.

@@ -28,9 +28,8 @@ using Surface = wing::WingServices::Surface;
 
 class CellCorners {
  public:
-  CellCorners(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell,
-              const StructureFrame& frame)
-      : configuration_(configuration), wing_(wing), cell_(cell), frame_(frame) {}
+  CellCorners(const Configuration& configuration, const WingCell& cell, const StructureFrame& frame)
+      : configuration_(configuration), cell_(cell), frame_(frame) {}
 
   /// A corner on the chord surface (wing frame): at the inner or outer border, at the leading
   /// or trailing edge.
@@ -98,7 +97,7 @@ class CellCorners {
     const std::string element = where + (leadingEdge ? "/eta1" : "/eta2");
     if (const auto bare = bareNumber(element)) return *bare;
     try {
-      return wing_.componentSegmentEta(configuration_, cell_.componentSegmentUid, eta->referenceUID, eta->eta);
+      return frame_.frameEta(eta->referenceUID, eta->eta);
     } catch (const Error& error) {
       throw Error(error.code(), error.message(), {}, where);
     }
@@ -142,17 +141,21 @@ class CellCorners {
   }
 
   const Configuration& configuration_;
-  const wing::WingServices& wing_;
   const WingCell& cell_;
   const StructureFrame& frame_;
 };
 
 }  // namespace
 
-NamedShape cellSkin(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell) {
-  if (boundedByContourCoordinates(cell)) return contourCellSkin(configuration, wing, cell);
-  const StructureFrame frame(configuration, wing, cell.componentSegmentUid, cell.wingUid);
-  const CellCorners corners(configuration, wing, cell, frame);
+NamedShape cellSkin(const Configuration& configuration, const StructureServices& services, const WingCell& cell) {
+  if (boundedByContourCoordinates(cell)) {
+    if (!cell.deviceUid.empty())
+      throw Error(ErrorCode::NotImplemented, "a control device's cell bounded by contour coordinates is not built", {},
+                  cell.xpath);
+    return contourCellSkin(configuration, services.wing, cell);
+  }
+  const StructureFrame frame(configuration, services, cell.componentSegmentUid, cell.wingUid, cell.deviceUid);
+  const CellCorners corners(configuration, cell, frame);
   // The outline: the four corners, following a spar's kinks between them where a spar gives
   // the leading or trailing edge.
   const gp_Pnt innerFront = corners.at(true, true), outerFront = corners.at(false, true);
@@ -187,8 +190,7 @@ NamedShape cellSkin(const Configuration& configuration, const wing::WingServices
   prism.Build();
   if (!prism.IsDone()) throw Error(ErrorCode::InvalidModel, "the cell's corners enclose nothing", {}, cell.xpath);
 
-  const TopoDS_Shape skin =
-      wing.componentSegmentSkin(configuration, cell.componentSegmentUid, cell.upper ? Surface::Upper : Surface::Lower);
+  const TopoDS_Shape skin = frame.skin(cell.upper);
   std::vector<TopoDS_Face> inside;
   try {
     inside = facesInside(skin, prism.Shape());

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "airshape/named_shape.h"
-#include "airshape/wing/wing_services.h"
 #include "cell_list.h"
+#include "structure_services.h"
 
 namespace airshape::structure {
 
@@ -14,7 +14,8 @@ namespace airshape::structure {
 /// eta2 at the trailing edge). Faces are named "<uID>/skin". Throws Error naming the CPACS path
 /// of what cannot be built. A border on a rib (ribDefinitionUID, ribNumber) has its corners
 /// where the rib's plane crosses the leading and trailing edge's lines on the chord surface (an
-/// xsi, or a spar's midplane line). A cell bounded by contour coordinates is contourCellSkin's.
-NamedShape cellSkin(const Configuration& configuration, const wing::WingServices& wing, const WingCell& cell);
+/// xsi, or a spar's midplane line). A cell bounded by contour coordinates is contourCellSkin's
+/// (not built in a control device).
+NamedShape cellSkin(const Configuration& configuration, const StructureServices& services, const WingCell& cell);
 
 }  // namespace airshape::structure

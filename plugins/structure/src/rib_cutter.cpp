@@ -22,7 +22,11 @@ bool sameName(const std::string& a, const char* b) {
          });
 }
 
-bool isWingEdge(const std::string& name) { return sameName(name, "leadingEdge") || sameName(name, "trailingEdge"); }
+bool isLeadingEdge(const std::string& name) { return sameName(name, "leadingEdge") || sameName(name, "le"); }
+
+bool isWingEdge(const std::string& name) {
+  return isLeadingEdge(name) || sameName(name, "trailingEdge") || sameName(name, "te");
+}
 
 RibCutter::RibCutter(const Configuration& configuration, const StructureFrame& frame,
                      const schema::WingComponentSegmentStructureType& structure)
@@ -52,7 +56,7 @@ std::vector<gp_Pnt> RibCutter::sparSection(const std::string& spar, const gp_Pln
   if (known == walls_.end()) {
     try {
       known = walls_
-                  .emplace(spar, sparWall(configuration_, frame_.wing(), frame_, sparSegmentNamed(configuration_, spar),
+                  .emplace(spar, sparWall(frame_, sparSegmentNamed(configuration_, spar),
                                           SparWall::Ends::CarriedAtComponentSegmentEnds))
                   .first;
     } catch (const Error& error) {
@@ -82,12 +86,7 @@ std::vector<gp_Pnt> RibCutter::sparSection(const std::string& spar, const gp_Pln
 }
 
 const std::pair<TopoDS_Shape, TopoDS_Shape>& RibCutter::skins() const {
-  using Surface = wing::WingServices::Surface;
-  if (!skins_) {
-    const std::string& uid = frame_.componentSegmentUid();
-    skins_.emplace(frame_.wing().componentSegmentSkin(configuration_, uid, Surface::Upper),
-                   frame_.wing().componentSegmentSkin(configuration_, uid, Surface::Lower));
-  }
+  if (!skins_) skins_.emplace(frame_.skin(true), frame_.skin(false));
   return *skins_;
 }
 

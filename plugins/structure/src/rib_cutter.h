@@ -17,8 +17,12 @@
 
 namespace airshape::structure {
 
-/// Whether a rib's start, end or reference is the wing's leading or trailing edge (not a spar).
+/// Whether a rib's start, end or reference is the wing's leading or trailing edge (not a spar):
+/// `leadingEdge` or `trailingEdge`, or as some files shorten them (D150's flap ribs), `le` or
+/// `te`.
 bool isWingEdge(const std::string& name);
+/// Whether such a name is the leading edge's.
+bool isLeadingEdge(const std::string& name);
 /// CPACS names compared as the reference library compares them: ignoring case.
 bool sameName(const std::string& a, const char* b);
 

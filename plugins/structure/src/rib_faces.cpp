@@ -271,8 +271,8 @@ RibPlacement ribPlacement(const Configuration& configuration, const RibsDefiniti
   return all[static_cast<std::size_t>(number - 1)];
 }
 
-NamedShape ribFaces(const Configuration& configuration, const wing::WingServices& wing, const RibsDefinition& ribs) {
-  const StructureFrame frame(configuration, wing, ribs.componentSegmentUid, ribs.wingUid);
+NamedShape ribFaces(const Configuration& configuration, const StructureServices& services, const RibsDefinition& ribs) {
+  const StructureFrame frame(configuration, services, ribs.componentSegmentUid, ribs.wingUid, ribs.deviceUid);
   const RibCutter cutter(configuration, frame, *ribs.structure);
   if (ribs.node->ribsPositioning) return RibSet(ribs, cutter).build();
   if (ribs.node->ribExplicitPositioning) return ExplicitRib(ribs, cutter).build();

@@ -4,8 +4,8 @@
 #include <gp_Vec.hxx>
 
 #include "airshape/named_shape.h"
-#include "airshape/wing/wing_services.h"
 #include "rib_list.h"
+#include "structure_services.h"
 
 namespace airshape::structure {
 
@@ -31,6 +31,6 @@ RibPlacement ribPlacement(const Configuration& configuration, const RibsDefiniti
 /// (or x) axis, tilted by the cross section's x rotation; or one rib from a start to an end
 /// point (`ribExplicitPositioning`). Faces are named "<uID>/rib <n>".
 /// Throws Error naming the CPACS path of what cannot be built.
-NamedShape ribFaces(const Configuration& configuration, const wing::WingServices& wing, const RibsDefinition& ribs);
+NamedShape ribFaces(const Configuration& configuration, const StructureServices& services, const RibsDefinition& ribs);
 
 }  // namespace airshape::structure

@@ -7,11 +7,12 @@
 namespace airshape::structure {
 
 RibsDefinition ribsDefinitionNamed(const Configuration& configuration, const std::string& uid) {
-  for (const auto& [wing, componentSegment] : everyComponentSegment(configuration)) {
-    if (!componentSegment->structure || !componentSegment->structure->ribsDefinitions) continue;
-    for (const auto& ribs : componentSegment->structure->ribsDefinitions->ribsDefinition)
+  for (const StructureHost& host : everyStructure(configuration)) {
+    if (!host.structure->ribsDefinitions) continue;
+    for (const auto& ribs : host.structure->ribsDefinitions->ribsDefinition)
       if (ribs.uID == uid)
-        return {ribs.uID, ribs.xpath, componentSegment->uID, wing->uID, &ribs, &*componentSegment->structure};
+        return {ribs.uID,       ribs.xpath,    host.componentSegment->uID, host.wing->uID, &ribs,
+                host.structure, host.deviceUid};
   }
   throw Error(ErrorCode::InvalidArgument, "no ribs definition with uID '" + uid + "'");
 }

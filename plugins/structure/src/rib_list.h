@@ -18,6 +18,7 @@ struct RibsDefinition {
   std::string wingUid;
   const schema::WingRibsDefinitionType* node = nullptr;
   const schema::WingComponentSegmentStructureType* structure = nullptr;  ///< holds its spars
+  std::string deviceUid;  ///< the control device whose own structure it is, if any
 };
 
 /// The ribs definition with this uID in any model. Throws Error when none has it.

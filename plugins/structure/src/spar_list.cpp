@@ -35,8 +35,8 @@ SparPosition sparPositionOf(const schema::SparPositionType& node) {
 namespace {
 
 SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSparType& spars,
-                      const schema::ComponentSegmentType& componentSegment, const schema::WingType& wing) {
-  SparSegment segment{node.uID, node.xpath, componentSegment.uID, wing.uID, {}};
+                      const StructureHost& host) {
+  SparSegment segment{node.uID, node.xpath, host.componentSegment->uID, host.wing->uID, {}, host.deviceUid};
   if (!node.sparPositionUIDs) return segment;
   for (const std::string& uid : node.sparPositionUIDs->sparPositionUID) {
     const schema::SparPositionType* found = nullptr;
@@ -54,12 +54,12 @@ SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSpa
 }  // namespace
 
 SparSegment sparSegmentNamed(const Configuration& configuration, const std::string& uid) {
-  for (const auto& [wing, componentSegment] : everyComponentSegment(configuration)) {
-    if (!componentSegment->structure || !componentSegment->structure->spars) continue;
-    const schema::WingSparType& spars = *componentSegment->structure->spars;
+  for (const StructureHost& host : everyStructure(configuration)) {
+    if (!host.structure->spars) continue;
+    const schema::WingSparType& spars = *host.structure->spars;
     if (!spars.sparSegments) continue;
     for (const auto& segment : spars.sparSegments->sparSegment)
-      if (segment.uID == uid) return segmentOf(segment, spars, *componentSegment, *wing);
+      if (segment.uID == uid) return segmentOf(segment, spars, host);
   }
   throw Error(ErrorCode::InvalidArgument, "no spar segment with uID '" + uid + "'");
 }

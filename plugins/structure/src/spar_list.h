@@ -32,6 +32,7 @@ struct SparSegment {
   std::string componentSegmentUid;
   std::string wingUid;
   std::vector<SparPosition> positions;
+  std::string deviceUid;  ///< the control device whose own structure it is, if any
 };
 
 /// A spar position as the schema gives it, read.

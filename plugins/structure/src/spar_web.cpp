@@ -15,24 +15,20 @@ namespace airshape::structure {
 
 namespace {
 
-using Surface = wing::WingServices::Surface;
-
 /// A spar position's point on the chord surface and its component segment eta.
 struct PlacedPosition {
   gp_Pnt point;
   double eta = 0.0;
 };
 
-PlacedPosition placed(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
-                      const SparSegment& spar, const SparPosition& position) {
+PlacedPosition placed(const StructureFrame& frame, const SparPosition& position) {
   if (position.kind != SparPosition::Kind::EtaXsi) {
     const gp_Pnt point = frame.positionPoint(position);
     return {frame.toGlobal(point), frame.etaOf(point)};
   }
   try {
-    return {wing.pointRelativeTo(configuration, spar.componentSegmentUid, position.referenceUid, position.eta,
-                                 position.xsi, Surface::Chord),
-            wing.componentSegmentEta(configuration, spar.componentSegmentUid, position.referenceUid, position.eta)};
+    return {frame.toGlobal(frame.chordPoint(position.referenceUid, position.eta, position.xsi)),
+            frame.frameEta(position.referenceUid, position.eta)};
   } catch (const Error& error) {
     throw Error(error.code(), error.message(), {}, position.xpath + "/sparPositionEtaXsi");
   }
@@ -55,14 +51,12 @@ TopoDS_Face wallFace(const gp_Pnt& inner, const gp_Pnt& outer, bool beyondInner,
 
 }  // namespace
 
-SparWall sparWall(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
-                  const SparSegment& spar, SparWall::Ends ends) {
+SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall::Ends ends) {
   if (spar.positions.size() < 2)
     throw Error(ErrorCode::InvalidModel, "a spar segment needs at least two spar positions", {},
                 spar.xpath + "/sparPositionUIDs");
   std::vector<PlacedPosition> placedPositions;
-  for (const SparPosition& position : spar.positions)
-    placedPositions.push_back(placed(configuration, wing, frame, spar, position));
+  for (const SparPosition& position : spar.positions) placedPositions.push_back(placed(frame, position));
   const double reach = frame.reach();
   const gp_Vec up = frame.toGlobal(gp_Vec(0, 0, 1)).Normalized();  // the wing's own z axis
   const bool always = ends == SparWall::Ends::AlwaysCarried;
@@ -84,13 +78,12 @@ SparWall sparWall(const Configuration& configuration, const wing::WingServices& 
   return wall;
 }
 
-NamedShape sparWeb(const Configuration& configuration, const wing::WingServices& wing, const SparSegment& spar) {
-  const StructureFrame frame(configuration, wing, spar.componentSegmentUid, spar.wingUid);
-  const SparWall wall = sparWall(configuration, wing, frame, spar, SparWall::Ends::CarriedAtComponentSegmentEnds);
+NamedShape sparWeb(const Configuration& configuration, const StructureServices& services, const SparSegment& spar) {
+  const StructureFrame frame(configuration, services, spar.componentSegmentUid, spar.wingUid, spar.deviceUid);
+  const SparWall wall = sparWall(frame, spar, SparWall::Ends::CarriedAtComponentSegmentEnds);
   // Each piece straight from the skins where they allow it (much faster than a Boolean cut of
   // skins with many knots); the others cut out of the component segment by one Boolean common.
-  const TopoDS_Shape upperSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Upper);
-  const TopoDS_Shape lowerSkin = wing.componentSegmentSkin(configuration, spar.componentSegmentUid, Surface::Lower);
+  const TopoDS_Shape upperSkin = frame.skin(true), lowerSkin = frame.skin(false);
   const double tolerance = kTraceTolerance * frame.reach();
   const auto traced = [&](std::size_t i) {
     const bool beyondInner = i == 0 && wall.carriedBeforeFirst;

@@ -7,8 +7,8 @@
 #include <gp_Vec.hxx>
 
 #include "airshape/named_shape.h"
-#include "airshape/wing/wing_services.h"
 #include "spar_list.h"
+#include "structure_services.h"
 
 namespace airshape::structure {
 
@@ -28,12 +28,11 @@ struct SparWall {
   gp_Vec up;
   bool carriedBeforeFirst = false, carriedAfterLast = false;
 };
-SparWall sparWall(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
-                  const SparSegment& spar, SparWall::Ends ends);
+SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall::Ends ends);
 
 /// The web of a spar segment (QUERY-components §1, `wing_spar`): the part of its wall inside
 /// the component segment's solid, reaching the end caps where the spar ends at them. Faces
 /// are named "<uID>/web". Throws Error naming the CPACS path of what cannot be built.
-NamedShape sparWeb(const Configuration& configuration, const wing::WingServices& wing, const SparSegment& spar);
+NamedShape sparWeb(const Configuration& configuration, const StructureServices& services, const SparSegment& spar);
 
 }  // namespace airshape::structure

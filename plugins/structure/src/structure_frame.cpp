@@ -5,7 +5,9 @@
 #include <set>
 
 #include <BRepBndLib.hxx>
+#include <BRep_Builder.hxx>
 #include <Bnd_Box.hxx>
+#include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -43,19 +45,32 @@ gp_Vec linearly(const model::Transform& transform, const gp_Vec& v) {
 
 }  // namespace
 
-StructureFrame::StructureFrame(const Configuration& configuration, const wing::WingServices& wing,
-                               std::string componentSegmentUid, std::string wingUid)
+StructureFrame::StructureFrame(const Configuration& configuration, const StructureServices& services,
+                               std::string componentSegmentUid, std::string wingUid, std::string deviceUid)
     : configuration_(configuration),
-      wing_(wing),
+      services_(services),
       componentSegmentUid_(std::move(componentSegmentUid)),
+      deviceUid_(std::move(deviceUid)),
       toGlobal_(model::componentTransform(configuration, wingUid)),
       toWing_(toGlobal_.inverse()) {}
 
 gp_Vec StructureFrame::toGlobal(const gp_Vec& v) const { return linearly(toGlobal_, v); }
 gp_Vec StructureFrame::toWing(const gp_Vec& v) const { return linearly(toWing_, v); }
 
+std::pair<double, double> StructureFrame::componentSegmentCoordinates(double eta, double xsi) const {
+  if (!inDevice()) return {eta, xsi};
+  const auto point = services_.devices.componentSegmentPoint(configuration_, deviceUid_, eta, xsi);
+  return {point.eta, point.xsi};
+}
+
 gp_Pnt StructureFrame::chordPoint(const std::string& referenceUid, double eta, double xsi) const {
-  return toWing(wing_.pointRelativeTo(configuration_, componentSegmentUid_, referenceUid, eta, xsi, Surface::Chord));
+  if (inDevice()) return toWing(services_.devices.chordPoint(configuration_, deviceUid_, eta, xsi));
+  return toWing(wing().pointRelativeTo(configuration_, componentSegmentUid_, referenceUid, eta, xsi, Surface::Chord));
+}
+
+double StructureFrame::frameEta(const std::string& referenceUid, double eta) const {
+  if (inDevice()) return eta;
+  return wing().componentSegmentEta(configuration_, componentSegmentUid_, referenceUid, eta);
 }
 
 double StructureFrame::etaOf(const gp_Pnt& point) const {
@@ -83,26 +98,30 @@ double StructureFrame::etaOf(const gp_Pnt& point) const {
 }
 
 gp_Vec StructureFrame::midplaneNormal(double eta) const {
-  return toWing(wing_.midplaneNormal(configuration_, componentSegmentUid_, std::clamp(eta, 0.0, 1.0))).Normalized();
+  const double csEta = componentSegmentCoordinates(std::clamp(eta, 0.0, 1.0), 0.5).first;
+  return toWing(wing().midplaneNormal(configuration_, componentSegmentUid_, csEta)).Normalized();
 }
 
 std::vector<double> StructureFrame::sectionEtas() const {
   std::vector<double> etas{0.0};
-  const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+  if (inDevice()) return {0.0, 1.0};  // the device's borders
+  const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
   for (std::size_t k = 0; k + 1 < segments.size(); ++k)
-    etas.push_back(wing_.componentSegmentEta(configuration_, componentSegmentUid_, segments[k], 1.0));
+    etas.push_back(wing().componentSegmentEta(configuration_, componentSegmentUid_, segments[k], 1.0));
   etas.push_back(1.0);
   return etas;
 }
 
 gp_Vec StructureFrame::thicknessDirection(double eta, double xsi) const {
   using Surface = wing::WingServices::Surface;
-  const gp_Pnt upper = wing_.componentSegmentPoint(configuration_, componentSegmentUid_, eta, xsi, Surface::Upper);
-  const gp_Pnt lower = wing_.componentSegmentPoint(configuration_, componentSegmentUid_, eta, xsi, Surface::Lower);
+  const auto [csEta, csXsi] = componentSegmentCoordinates(eta, xsi);
+  const gp_Pnt upper = wing().componentSegmentPoint(configuration_, componentSegmentUid_, csEta, csXsi, Surface::Upper);
+  const gp_Pnt lower = wing().componentSegmentPoint(configuration_, componentSegmentUid_, csEta, csXsi, Surface::Lower);
   return toWing(gp_Vec(lower, upper));
 }
 
 gp_Vec StructureFrame::uprightAtSparPosition(const gp_Pnt& point) const {
+  if (inDevice()) return gp_Vec(0, 0, 1);  // a device's borders are no sections
   const double eta = etaOf(point);
   for (const double section : sectionEtas()) {
     if (std::abs(section - eta) > 1e-9) continue;
@@ -122,7 +141,9 @@ gp_Vec StructureFrame::etaDirection(double eta) const {
 }
 
 Polyline StructureFrame::edgeLine(double xsi) const {
-  const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+  // A device's edges within the wing are straight lines (the schema's controlSurface remarks).
+  if (inDevice()) return Polyline({chordPoint("", 0.0, xsi), chordPoint("", 1.0, xsi)});
+  const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
   std::vector<gp_Pnt> points = {chordPoint(segments.front(), 0.0, xsi)};
   for (const std::string& segment : segments) points.push_back(chordPoint(segment, 1.0, xsi));
   return Polyline(points);
@@ -132,7 +153,7 @@ Polyline StructureFrame::midplaneLine(const gp_Pnt& from, const gp_Pnt& to) cons
   const gp_Vec along(from, to);
   const gp_Vec normal = along.Crossed(gp_Vec(0, 0, 1));
   std::vector<std::pair<double, gp_Pnt>> crossings;
-  const std::vector<std::string> segments = wing_.componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+  const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
   for (std::size_t k = 0; k + 1 < segments.size(); ++k) {
     const gp_Pnt front = chordPoint(segments[k], 1.0, 0.0), back = chordPoint(segments[k], 1.0, 1.0);
     const double a = gp_Vec(from, front).Dot(normal), b = gp_Vec(from, back).Dot(normal);
@@ -165,7 +186,7 @@ gp_Pnt StructureFrame::positionPoint(const SparPosition& position) const {
 }
 
 Polyline StructureFrame::lineNamed(const std::string& name, const std::string& where) const {
-  if (isWingEdge(name)) return sameName(name, "leadingEdge") ? leadingEdge() : trailingEdge();
+  if (isWingEdge(name)) return isLeadingEdge(name) ? leadingEdge() : trailingEdge();
   try {
     return sparLine(sparSegmentNamed(configuration_, name));
   } catch (const Error& error) {
@@ -188,16 +209,27 @@ Polyline StructureFrame::sparLine(const SparSegment& spar) const {
 }
 
 const TopoDS_Shape& StructureFrame::solid() const {
-  return configuration_.shapes().shapeOf(configuration_, componentSegmentUid_);
+  return configuration_.shapes().shapeOf(configuration_, inDevice() ? deviceUid_ : componentSegmentUid_);
+}
+
+TopoDS_Shape StructureFrame::skin(bool upper) const {
+  if (!inDevice())
+    return wing().componentSegmentSkin(configuration_, componentSegmentUid_, upper ? Surface::Upper : Surface::Lower);
+  const NamedShape& device = configuration_.shapes().namedShapeOf(configuration_, deviceUid_);
+  const std::string name = deviceUid_ + (upper ? "/upper" : "/lower");
+  TopoDS_Compound faces;
+  BRep_Builder builder;
+  builder.MakeCompound(faces);
+  for (const auto& [faceName, face] : device.faces)
+    if (faceName == name) builder.Add(faces, face);
+  return faces;
 }
 
 double StructureFrame::reach() const {
   // The box of the skins' poles holds the component segment (a B-spline lies in the hull of its
   // poles), without sewing the solid for it.
-  using Surface = wing::WingServices::Surface;
   Bnd_Box box;
-  for (Surface surface : {Surface::Upper, Surface::Lower})
-    BRepBndLib::Add(wing_.componentSegmentSkin(configuration_, componentSegmentUid_, surface), box, false);
+  for (const bool upper : {true, false}) BRepBndLib::Add(skin(upper), box, false);
   return std::sqrt(box.SquareExtent());
 }
 

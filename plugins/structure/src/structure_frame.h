@@ -10,16 +10,22 @@
 #include "airshape/wing/wing_services.h"
 #include "polyline.h"
 #include "spar_list.h"
+#include "structure_services.h"
 
 namespace airshape::structure {
 
 /// A component segment as its structure is defined on it: in the wing's own frame (where the
 /// schema's "up", "global y" and the reference library's structure live), with the lines and
 /// normals rib positions refer to, and the solid structure is cut from (in the global frame).
+///
+/// The structure of a control device (`deviceUid`) lives in the device's own coordinates
+/// instead: eta from its inner to its outer border, xsi from its leading to its trailing edge
+/// (DeviceServices), whatever component segment or wing segment an eta names as its reference;
+/// its leading and trailing edge are the device's, its solid and skins the device's at rest.
 class StructureFrame {
  public:
-  StructureFrame(const Configuration& configuration, const wing::WingServices& wing, std::string componentSegmentUid,
-                 std::string wingUid);
+  StructureFrame(const Configuration& configuration, const StructureServices& services, std::string componentSegmentUid,
+                 std::string wingUid, std::string deviceUid);
 
   gp_Pnt toGlobal(const gp_Pnt& p) const { return model::apply(toGlobal_, p); }
   gp_Vec toGlobal(const gp_Vec& v) const;
@@ -29,6 +35,9 @@ class StructureFrame {
   /// A point on the chord surface at (eta, xsi) relative to the component segment or one of
   /// its wing's segments, in the wing frame.
   gp_Pnt chordPoint(const std::string& referenceUid, double eta, double xsi) const;
+  /// The eta of the frame (the component segment's, or the device's own) of an eta given
+  /// relative to `referenceUid`.
+  double frameEta(const std::string& referenceUid, double eta) const;
   /// The component segment eta of a point on (or near) its chord surface, in the wing frame.
   double etaOf(const gp_Pnt& point) const;
   /// The unit normal of the chord surface at eta (towards the upper skin), in the wing frame.
@@ -42,7 +51,7 @@ class StructureFrame {
   /// The up direction of a rib at a spar position (wing frame, unit): the wing's z axis,
   /// except at a section (the root, the tip, a section between wing segments), where it is the
   /// line in the section's plane square to the wing's x axis, as the reference library's ribs
-  /// starting at such a spar position show.
+  /// starting at such a spar position show (in a device: the wing's z axis throughout).
   gp_Vec uprightAtSparPosition(const gp_Pnt& point) const;
   /// The direction in which eta grows at eta (wing frame, unit): the leading edge seen from
   /// the front (x dropped), along which the component segment's eta is measured.
@@ -62,20 +71,26 @@ class StructureFrame {
   /// at a share of the length of a line (`lineNamed`).
   gp_Pnt positionPoint(const SparPosition& position) const;
 
-  /// The component segment's solid (global frame), and the size of a box that holds it (a
-  /// length that surely reaches across it).
+  /// The component segment's (or device's) solid (global frame), and the size of a box that
+  /// holds it (a length that surely reaches across it).
   const TopoDS_Shape& solid() const;
   double reach() const;
+  /// The upper or the lower skin structure is bounded by (global frame): the component
+  /// segment's, or the device's faces named upper or lower.
+  TopoDS_Shape skin(bool upper) const;
 
   const std::string& componentSegmentUid() const { return componentSegmentUid_; }
-  const wing::WingServices& wing() const { return wing_; }
+  bool inDevice() const { return !deviceUid_.empty(); }
+  const wing::WingServices& wing() const { return services_.wing; }
 
  private:
   Polyline edgeLine(double xsi) const;
+  /// The component segment coordinates of a point in the frame's (eta, xsi).
+  std::pair<double, double> componentSegmentCoordinates(double eta, double xsi) const;
 
   const Configuration& configuration_;
-  const wing::WingServices& wing_;
-  std::string componentSegmentUid_;
+  StructureServices services_;
+  std::string componentSegmentUid_, deviceUid_;
   model::Transform toGlobal_, toWing_;
 };
 

@@ -1,6 +1,7 @@
 // The structure plugin: spars, ribs and cells of wings; frames, stringers, bulkheads, doors,
 // floor beams and walls of fuselages. It builds on the wing plugin's public interface
-// (airshape/wing/wing_services.h), on the fuselages' component shapes and, for walls in tank
+// (airshape/wing/wing_services.h), on the control-surfaces plugin's for the structure of flaps, slats
+// and spoilers (airshape/controlsurfaces/device_services.h), on the fuselages' component shapes and, for walls in tank
 // vessels, on the tank plugin's public interface (airshape/tank/tank_services.h). Spar webs, ribs,
 // cells, wing fuel tanks, frames and stringers (as lines), pressure bulkheads, doors, walls and cross beams are built;
 // the other node types are claimed (graph/component_graph.h) and wait for their builders.
@@ -26,20 +27,19 @@
 namespace airshape::structure {
 namespace {
 
-/// Structure is built in component segments; a control device's own structure is not yet.
-void requireComponentSegmentStructure(const Configuration& configuration, const std::string& uid) {
-  const long index = configuration.components().find(uid);
-  if (index < 0) return;  // the builder says that the uID names nothing
-  const std::string& xpath = configuration.components().components()[static_cast<std::size_t>(index)].xpath;
-  if (xpath.find("/controlSurfaces/") != std::string::npos)
-    throw Error(ErrorCode::NotImplemented, "the structure of control devices is not built yet", {}, xpath);
-}
+/// The services the wing structure builders hold: the wing's, and the control devices'.
+struct HeldServices {
+  std::shared_ptr<const wing::WingServices> wing;
+  std::shared_ptr<const controlsurfaces::DeviceServices> devices;
+
+  StructureServices operator*() const { return {*wing, *devices}; }
+};
 
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
       : BasicPlugin(
-            "structure", "0.6.0",
+            "structure", "0.7.0",
             "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, frames and stringers (lines), "
             "pressure bulkheads, doors, walls, cross beams, struts and long floor beams",
             {{"sparSegment", ""},
@@ -58,25 +58,26 @@ class StructurePlugin final : public plugin::BasicPlugin {
              {"window", ""},
              {"intercostal", ""},
              {"structuralMember", ""}},
-            {{"wing", "0.1.0", "1.0.0"}, {"fuselage", "0.1.0", "1.0.0"}, {"tank", "0.2.0", "1.0.0"}}) {}
+            {{"wing", "0.1.0", "1.0.0"},
+             {"fuselage", "0.1.0", "1.0.0"},
+             {"tank", "0.2.0", "1.0.0"},
+             {"controlsurfaces", "0.3.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
-    wing_ = services.find<wing::WingServices>(wing::kWingServices);
+    wing_.wing = services.find<wing::WingServices>(wing::kWingServices);
+    wing_.devices = services.find<controlsurfaces::DeviceServices>(controlsurfaces::kDeviceServices);
     tanks_ = services.find<tank::TankServices>(tank::kTankServices);
   }
 
   void registerShapeBuilders(ComponentShapes& shapes) const override {
-    const std::shared_ptr<const wing::WingServices> wing = wing_;
+    const HeldServices wing = wing_;
     shapes.add("sparSegment", [wing](const Configuration& c, const std::string& uid) {
-      requireComponentSegmentStructure(c, uid);
       return sparWeb(c, *wing, sparSegmentNamed(c, uid));
     });
     shapes.add("ribsDefinition", [wing](const Configuration& c, const std::string& uid) {
-      requireComponentSegmentStructure(c, uid);
       return ribFaces(c, *wing, ribsDefinitionNamed(c, uid));
     });
     shapes.add("wingCell", [wing](const Configuration& c, const std::string& uid) {
-      requireComponentSegmentStructure(c, uid);
       return cellSkin(c, *wing, wingCellNamed(c, uid));
     });
     shapes.add("wingFuelTank", [wing](const Configuration& c, const std::string& uid) {
@@ -103,7 +104,7 @@ class StructurePlugin final : public plugin::BasicPlugin {
   }
 
  private:
-  std::shared_ptr<const wing::WingServices> wing_;
+  HeldServices wing_;
   std::shared_ptr<const tank::TankServices> tanks_;
 };
 

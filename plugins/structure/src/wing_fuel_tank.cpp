@@ -41,15 +41,15 @@ struct Border {
   throw Error(error.code(), what + ": " + error.message(), {}, xpath);
 }
 
-Border sparBorder(const Configuration& configuration, const wing::WingServices& wing, const StructureFrame& frame,
-                  const WingFuelTank& tank, const std::string& sparUid, const std::string& xpath) {
+Border sparBorder(const Configuration& configuration, const StructureFrame& frame, const WingFuelTank& tank,
+                  const std::string& sparUid, const std::string& xpath) {
   SparSegment spar;
   SparWall wall;
   try {
     spar = sparSegmentNamed(configuration, sparUid);
     if (spar.componentSegmentUid != tank.componentSegmentUid)
       throw Error(ErrorCode::InvalidModel, "it lies in component segment '" + spar.componentSegmentUid + "'");
-    wall = sparWall(configuration, wing, frame, spar, SparWall::Ends::AlwaysCarried);
+    wall = sparWall(frame, spar, SparWall::Ends::AlwaysCarried);
   } catch (const Error& error) {
     rethrowAt(error, "the spar '" + sparUid + "' cannot bound the tank", xpath + "/sparUID");
   }
@@ -102,13 +102,13 @@ Border ribBorder(const Configuration& configuration, const StructureFrame& frame
   return border;
 }
 
-std::vector<Border> bordersOf(const Configuration& configuration, const wing::WingServices& wing,
-                              const StructureFrame& frame, const WingFuelTank& tank) {
+std::vector<Border> bordersOf(const Configuration& configuration, const StructureFrame& frame,
+                              const WingFuelTank& tank) {
   if (!tank.node->geometry) throw NoShape("the tank has no geometry (no borders): no shape", tank.xpath);
   std::vector<Border> borders;
   for (const auto& border : tank.node->geometry->border) {
     if (border.sparUID)
-      borders.push_back(sparBorder(configuration, wing, frame, tank, *border.sparUID, border.xpath));
+      borders.push_back(sparBorder(configuration, frame, tank, *border.sparUID, border.xpath));
     else if (border.ribDefinitionUID && border.ribNumber)
       borders.push_back(
           ribBorder(configuration, frame, tank, *border.ribDefinitionUID, *border.ribNumber, border.xpath));
@@ -143,10 +143,10 @@ TopoDS_Solid unionOfCells(const std::vector<TopoDS_Shape>& cells) {
 
 }  // namespace
 
-NamedShape wingFuelTankSolid(const Configuration& configuration, const wing::WingServices& wing,
+NamedShape wingFuelTankSolid(const Configuration& configuration, const StructureServices& services,
                              const WingFuelTank& tank) {
-  const StructureFrame frame(configuration, wing, tank.componentSegmentUid, tank.wingUid);
-  const std::vector<Border> borders = bordersOf(configuration, wing, frame, tank);
+  const StructureFrame frame(configuration, services, tank.componentSegmentUid, tank.wingUid, "");
+  const std::vector<Border> borders = bordersOf(configuration, frame, tank);
   std::vector<TankOutline::Border> lines;
   for (const Border& border : borders) lines.push_back(border.outline);
   const std::vector<std::size_t> order = TankOutline::orderAround(lines);

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "airshape/named_shape.h"
-#include "airshape/wing/wing_services.h"
+#include "structure_services.h"
 #include "wing_fuel_tank_list.h"
 
 namespace airshape::structure {
@@ -14,7 +14,7 @@ namespace airshape::structure {
 /// nearer to the tank's corners closes it. Faces are named "<uID>/<spar uID>" and
 /// "<uID>/<ribs uID>/rib <n>" on the walls, "<uID>/<the wing's face name>" on the skins and
 /// end caps. Throws Error naming the CPACS path of what cannot be built.
-NamedShape wingFuelTankSolid(const Configuration& configuration, const wing::WingServices& wing,
+NamedShape wingFuelTankSolid(const Configuration& configuration, const StructureServices& services,
                              const WingFuelTank& tank);
 
 }  // namespace airshape::structure
