@@ -156,7 +156,7 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
   }
   for (std::size_t i = 0; i < ribs.size(); ++i)
     if (ribs[i].empty())
-      throw Error(ErrorCode::InvalidModel, names[i] + " does not cross its component segment", {}, where);
+      throw Error(ErrorCode::InvalidModel, names[i] + " does not cross " + frame_.hostName(), {}, where);
   return ribs;
 }
 

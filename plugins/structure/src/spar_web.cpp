@@ -99,12 +99,12 @@ NamedShape sparWeb(const Configuration& configuration, const StructureServices& 
     pieces = facesInsideEach(
         wall.faces, [&]() -> const TopoDS_Shape& { return frame.solid(); }, traced);
   } catch (const Error& error) {
-    throw Error(error.code(), "the spar cannot be cut out of its component segment", {}, spar.xpath);
+    throw Error(error.code(), std::string("the spar cannot be cut out of ") + frame.hostName(), {}, spar.xpath);
   }
   NamedFaces web;
   for (const std::vector<TopoDS_Face>& inside : pieces) web.add(spar.uid + "/web", inside);
   if (web.empty())
-    throw Error(ErrorCode::InvalidModel, "the spar does not cross its component segment", {}, spar.xpath);
+    throw Error(ErrorCode::InvalidModel, std::string("the spar does not cross ") + frame.hostName(), {}, spar.xpath);
   return web.shape();
 }
 

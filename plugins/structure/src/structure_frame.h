@@ -81,6 +81,8 @@ class StructureFrame {
 
   const std::string& componentSegmentUid() const { return componentSegmentUid_; }
   bool inDevice() const { return !deviceUid_.empty(); }
+  /// What structure lies in, for messages: "its component segment" or "its device".
+  const char* hostName() const { return inDevice() ? "its device" : "its component segment"; }
   const wing::WingServices& wing() const { return services_.wing; }
 
  private:
