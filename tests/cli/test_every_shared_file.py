@@ -19,6 +19,7 @@ KNOWN = [
     "not built yet",
     "a rib does not meet spar",
     "does not cross its component segment",  # D150 HTP_R1: a root rib square to a swept spar runs inboard of the root
+    "does not cross its device",  # D250's spoiler spars on the spoilers' very leading edges, one rib on a border
     "the cell covers no skin",
     "no run of segments joins elements",
     "is not one given by eta and xsi",
