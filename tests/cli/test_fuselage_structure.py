@@ -64,12 +64,14 @@ def structure():
              door("Rising", "F0", "F1", "Tilted", "Top") + door("Astray", "F0", "F1", "Side", "Nowhere") +
              door("Flat", "F1", "F1", "Side", "Top"))
     frames = (frame("F1", (7, 0)) + frame("Path", (4, -0.5), (4, 0), (4, 0.5)) +
-              frame("Riffled", (4, 0), (5, 0), (6, 0)) + frame("F0", (3, 0)))
+              frame("Riffled", (4, 0), (5, 0), (6, 0)) + frame("F0", (3, 0)) + frame("Pair", (4.5, -0.5), (4.5, 0.5)))
     bulkheads = ('<pressureBulkheads><pressureBulkhead uID="B1"><frameUID>F1</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
                  '<pressureBulkhead uID="OnPath"><frameUID>Path</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
                  '<pressureBulkhead uID="OnRiffles"><frameUID>Riffled</frameUID>'
+                 "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
+                 '<pressureBulkhead uID="OnPair"><frameUID>Pair</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead></pressureBulkheads>")
     positions = (position("P1", 0.3, 0, x=2) + position("P2", 0.3, 0, bulkhead="B1") +
                  position("P3", -0.5, 0, section="TubeS1") + position("P4", -0.5, 0, x=9) +
@@ -133,6 +135,17 @@ def test_a_bulkhead_on_a_frame_path(tmp_path):
     angle = math.pi / 3
     assert math.isclose(area, (angle - math.sin(angle)) / 2, rel_tol=1e-5)
     assert math.isclose(box["min"][2], math.sqrt(3) / 2, abs_tol=1e-6) and math.isclose(box["max"][2], 1, abs_tol=1e-5)
+
+
+def test_a_bulkhead_on_a_frame_of_two_positions(tmp_path):
+    path = tmp_path / "tube.xml"
+    write(path, structure())
+    area, box = ask(path, {"op": "component_surface_area", "uid": "OnPair"}, {"op": "bounding_box", "uid": "OnPair"})
+    # The frame runs between the rays straight up from y = −0.5 and 0.5 at x = 4.5, over the top
+    # (the ray halfway between them, from y = 0, tells the side): the same circular segment.
+    angle = math.pi / 3
+    assert math.isclose(area, (angle - math.sin(angle)) / 2, rel_tol=1e-5)
+    assert math.isclose(box["min"][2], math.sqrt(3) / 2, abs_tol=1e-6) and math.isclose(box["min"][0], 4.5, abs_tol=1e-6)
 
 
 def test_cross_beams_and_struts_are_their_axes(tmp_path):

@@ -19,20 +19,34 @@ namespace airshape::structure {
 
 namespace {
 
+/// The rays of a frame's positions at one station, as the frame runs through them: each
+/// position's, and for a frame of two positions the ray halfway between them too (the frame
+/// runs along the ruled surface between their rays, position_rays.h), which tells the side.
+/// Each ray comes with the CPACS path an error about it names.
+std::vector<std::pair<PositionRay, std::string>> raysAlong(const FuselageFrame& fuselage,
+                                                           const schema::FrameType& frame) {
+  std::vector<std::pair<PositionRay, std::string>> rays;
+  for (const auto& position : frame.framePosition)
+    rays.emplace_back(PositionRay::of(fuselage, position), position.xpath);
+  if (rays.size() == 2) {
+    const PositionRay middle = PositionRay::between(rays[0].first, rays[1].first, 0.5);
+    if (middle.direction.Magnitude() < 1e-9)
+      throw Error(ErrorCode::InvalidModel,
+                  "the frame's two positions point opposite ways: the side its bulkhead lies on is not given", {},
+                  frame.xpath);
+    rays.insert(rays.begin() + 1, {middle, frame.xpath});
+  }
+  return rays;
+}
+
 /// A bulkhead on a frame of several positions at one station: each position's ray
 /// (position_rays.h) meets the skin; the frame runs along the skin from the first of these points
 /// to the last, and the bulkhead is the part of the cross section that the chord between them
 /// cuts off on the side of the points in between.
 std::vector<TopoDS_Face> sectionPart(const FuselageFrame& fuselage, const schema::FrameType& frame) {
-  const auto& positions = frame.framePosition;
-  if (positions.size() < 3)
-    throw Error(ErrorCode::NotImplemented, "bulkheads on frames of two positions are not built yet", {}, frame.xpath);
   std::vector<gp_Pnt> hits;
-  for (const auto& position : positions) {
-    const PositionRay ray = PositionRay::of(fuselage, position);
-    hits.push_back(
-        fuselage.skinAhead(fuselage.toGlobal(ray.origin), fuselage.toGlobal(gp_Dir(ray.direction)), position.xpath));
-  }
+  for (const auto& [ray, where] : raysAlong(fuselage, frame))
+    hits.push_back(fuselage.skinAhead(fuselage.toGlobal(ray.origin), fuselage.toGlobal(gp_Dir(ray.direction)), where));
   const gp_Dir normal = fuselage.toGlobal(gp_Dir(1, 0, 0));
   const gp_Vec chord(hits.front(), hits.back());
   if (chord.Magnitude() < 1e-9 || chord.Crossed(gp_Vec(normal)).Magnitude() < 1e-12)
