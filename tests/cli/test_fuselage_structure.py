@@ -311,3 +311,32 @@ def test_frames_and_stringers_export_with_their_profiles_swept(tmp_path):
                for box in side_webs)
     # Queries keep answering for the lines.
     assert ask(path, {"op": "component_surface_area", "uid": "F1"}) == [0]
+
+
+def test_a_wall_bounded_by_a_system_component(tmp_path):
+    # The upright wall y = 0.3 from x = 2 to the bulkhead at x = 7, bounded by a box (x 4 to 6,
+    # y 0 to 1, z −0.5 to 2.5) of a generic system: the box's faces cut it, and the pieces that
+    # hold the wall's base points stay: x 2 to 4 and 6 to 7.
+    box = ('<genericComponent uID="BoxElement"><name>e</name><geometry><cuboids><cuboid><lengthX>2</lengthX>'
+           "<depthY>1</depthY><heightZ>3</heightZ></cuboid></cuboids></geometry></genericComponent>")
+    system = ('<systems><genericSystems><genericSystem uID="Plant"><name>s</name><components>'
+              '<component uID="Box"><name>c</name><systemElementUID>BoxElement</systemElementUID>'
+              "<transformation><translation><x>4</x><z>-0.5</z></translation></transformation></component>"
+              "</components></genericSystem></genericSystems></systems>")
+    fenced = structure().replace(
+        "</wallSegments>", wall("Fenced", 0, "P1", "P2", extra="<boundingElementUIDs><boundingElementUID>Box"
+                                                               "</boundingElementUID></boundingElementUIDs>") +
+        wall("Unbounded", 0, "P1", "P2", extra="<boundingElementUIDs><boundingElementUID>Nothing"
+                                                "</boundingElementUID></boundingElementUIDs>") + "</wallSegments>")
+    path = tmp_path / "tube.xml"
+    write(path, fenced)
+    text = path.read_text().replace("</fuselages></model>", "</fuselages>" + system + "</model>", 1)
+    path.write_text(text.replace("</profiles>", f"</profiles><systems><genericComponents>{box}</genericComponents>"
+                                                "</systems>", 1))
+    area, bounds = ask(path, {"op": "component_surface_area", "uid": "Fenced"}, {"op": "bounding_box", "uid": "Fenced"})
+    assert math.isclose(area, 3 * math.sqrt(1 - 0.3 ** 2), rel_tol=REL)
+    assert math.isclose(bounds["min"][0], 2, abs_tol=1e-6) and math.isclose(bounds["max"][0], 7, abs_tol=1e-6)
+    unbounded = airshape("query", str(path), stdin=json.dumps({"op": "component_surface_area", "uid": "Unbounded"}) + "\n")
+    assert "bounding element 'Nothing' names no component" in unbounded.stdout
+    assert "wallSegment[8]/boundingElementUIDs" in unbounded.stdout
+

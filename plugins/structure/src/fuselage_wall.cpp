@@ -212,6 +212,32 @@ std::vector<TopoDS_Face> cutBack(const std::vector<TopoDS_Face>& faces, const st
   return kept;
 }
 
+/// What bounds a wall: another wall's surface carried beyond its ends, or the faces of any other
+/// component with a shape (a generic geometry component, a floor where a plugin builds one).
+std::vector<TopoDS_Face> boundingFaces(const Configuration& configuration, const tank::TankServices* tanks,
+                                       const std::string& bounding, const std::string& where) {
+  std::optional<FuselageElement<schema::WallSegmentType>> wall;
+  try {
+    wall = wallSegmentNamed(configuration, bounding, tanks);
+  } catch (const Error&) {
+    // not a wall: another component
+  }
+  if (wall) return layoutOf(configuration, *wall).cutters;
+  if (configuration.components().find(bounding) < 0)
+    throw Error(ErrorCode::InvalidModel, "bounding element '" + bounding + "' names no component", {}, where);
+  std::vector<TopoDS_Face> faces;
+  try {
+    const TopoDS_Shape& shape = configuration.shapes().shapeOf(configuration, bounding);
+    for (TopExp_Explorer face(shape, TopAbs_FACE); face.More(); face.Next())
+      faces.push_back(TopoDS::Face(face.Current()));
+  } catch (const Error& error) {
+    throw Error(error.code(), "bounding element '" + bounding + "': " + error.message(), {}, where);
+  }
+  if (faces.empty())
+    throw Error(ErrorCode::InvalidModel, "bounding element '" + bounding + "' has no faces", {}, where);
+  return faces;
+}
+
 }  // namespace
 
 NamedShape fuselageWall(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
@@ -228,19 +254,8 @@ NamedShape fuselageWall(const Configuration& configuration, const tank::TankServ
   }
   if (wall.node->boundingElementUIDs) {
     const std::string where = wall.node->xpath + "/boundingElementUIDs";
-    for (const std::string& bounding : wall.node->boundingElementUIDs->boundingElementUID) {
-      FuselageElement<schema::WallSegmentType> other;
-      try {
-        other = wallSegmentNamed(configuration, bounding, tanks);
-      } catch (const Error&) {
-        throw Error(ErrorCode::NotImplemented,
-                    "bounding element '" + bounding +
-                        "' is not a wall of a fuselage (floors and generic geometry "
-                        "as bounds are not built yet)",
-                    {}, where);
-      }
-      faces = cutBack(faces, layoutOf(configuration, other).cutters, layout.basePoints, where);
-    }
+    for (const std::string& bounding : wall.node->boundingElementUIDs->boundingElementUID)
+      faces = cutBack(faces, boundingFaces(configuration, tanks, bounding, where), layout.basePoints, where);
   }
   NamedFaces shape;
   shape.add(uid + "/wall", faces);
