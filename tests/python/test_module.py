@@ -222,6 +222,27 @@ def test_control_surfaces_of_a_wing(tmp_path):
 WITH_STRUCTURE = os.path.join(SOURCE, "tests", "data", "wing-cst-structure.xml")
 
 
+def test_structure_of_a_flap(tmp_path):
+    # A spar of the flap at its own xsi 0.5 (x 2.7 on the test wing), from its inner to its outer
+    # border (y 1 to 4).
+    positions = "".join(f'<sparPosition uID="P{eta}"><sparPositionEtaXsi><eta>{eta}</eta><xsi>0.5</xsi>'
+                        f"<referenceUID>Flap</referenceUID></sparPositionEtaXsi></sparPosition>" for eta in (0, 1))
+    structure = (f"<structure><spars><sparPositions>{positions}</sparPositions><sparSegments>"
+                 '<sparSegment uID="FlapSpar"><name>s</name><sparPositionUIDs><sparPositionUID>P0</sparPositionUID>'
+                 "<sparPositionUID>P1</sparPositionUID></sparPositionUIDs></sparSegment></sparSegments></spars>"
+                 "</structure>")
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    at = text.index("<path>", text.index('<trailingEdgeDevice uID="Flap">'))
+    path = tmp_path / "flap.xml"
+    path.write_text(text[:at] + structure + text[at:])
+    flap = airshape.Configuration.open(str(path)).wings[0].control_surfaces["Flap"]
+    spar, = flap.spars
+    assert spar.uid == "FlapSpar" and spar.type == "wing_spar" and flap.ribs == [] and flap.cells == []
+    assert spar.bounding_box["min"][0] == pytest.approx(2.7, abs=1e-5)
+    assert spar.surface_area == pytest.approx(3 * 0.6 * 0.85 * 0.15, rel=1e-5)
+
+
 def test_structure_of_a_component_segment(tmp_path):
     config = airshape.Configuration.open(WITH_STRUCTURE)
     segment, = config.wings["Rect"].component_segments

@@ -390,6 +390,25 @@ class ControlSurface:
         found["matrix"] = np.array(found["matrix"])
         return found
 
+    def _own(self, kind: str) -> List["Component"]:
+        return [_component(self._config, child["uid"], child["type"])
+                for child in self._config.query("component_children", uid=self.uid) if child["type"] == kind]
+
+    @property
+    def spars(self) -> List["Component"]:
+        """Its own spars (its structure, in its own coordinates: docs/structure.md)."""
+        return self._own("wing_spar")
+
+    @property
+    def ribs(self) -> List["Component"]:
+        """Its own ribs definitions."""
+        return self._own("wing_rib")
+
+    @property
+    def cells(self) -> List["Component"]:
+        """Its own cells."""
+        return self._own("wing_cell")
+
     def _measure(self, what: str, p: Optional[float]) -> Any:
         if p is None:
             return self._config.query(f"component_{what}" if what != "bounding_box" else what, uid=self.uid)
