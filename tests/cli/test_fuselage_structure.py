@@ -126,26 +126,19 @@ def test_bulkheads_and_walls_in_closed_form(tmp_path):
     assert volume == 0 and wall_kind == "fuselage_wall"
 
 
-def test_a_bulkhead_on_a_frame_path(tmp_path):
+@pytest.mark.parametrize("uid, x", [("OnPath", 4), ("OnPair", 4.5)])
+def test_a_bulkhead_on_a_frame_at_one_station(tmp_path, uid, x):
     path = tmp_path / "tube.xml"
     write(path, structure())
-    area, box = ask(path, {"op": "component_surface_area", "uid": "OnPath"}, {"op": "bounding_box", "uid": "OnPath"})
-    # Rays straight up from y = −0.5, 0, 0.5 at x = 4 meet the unit circle; the chord between the
-    # first and last cuts off the circular segment of central angle π/3 above z = √3/2.
+    area, box = ask(path, {"op": "component_surface_area", "uid": uid}, {"op": "bounding_box", "uid": uid})
+    # OnPath: rays straight up from y = −0.5, 0, 0.5 meet the unit circle; the chord between the
+    # first and last cuts off the circular segment of central angle π/3 above z = √3/2. OnPair:
+    # the frame runs between the rays from y = −0.5 and 0.5 over the top (the ray halfway between
+    # them tells the side): the same segment.
     angle = math.pi / 3
     assert math.isclose(area, (angle - math.sin(angle)) / 2, rel_tol=1e-5)
     assert math.isclose(box["min"][2], math.sqrt(3) / 2, abs_tol=1e-6) and math.isclose(box["max"][2], 1, abs_tol=1e-5)
-
-
-def test_a_bulkhead_on_a_frame_of_two_positions(tmp_path):
-    path = tmp_path / "tube.xml"
-    write(path, structure())
-    area, box = ask(path, {"op": "component_surface_area", "uid": "OnPair"}, {"op": "bounding_box", "uid": "OnPair"})
-    # The frame runs between the rays straight up from y = −0.5 and 0.5 at x = 4.5, over the top
-    # (the ray halfway between them, from y = 0, tells the side): the same circular segment.
-    angle = math.pi / 3
-    assert math.isclose(area, (angle - math.sin(angle)) / 2, rel_tol=1e-5)
-    assert math.isclose(box["min"][2], math.sqrt(3) / 2, abs_tol=1e-6) and math.isclose(box["min"][0], 4.5, abs_tol=1e-6)
+    assert math.isclose(box["min"][0], x, abs_tol=1e-6)
 
 
 def test_cross_beams_and_struts_are_their_axes(tmp_path):
