@@ -63,19 +63,16 @@ std::vector<gp_Pnt> RibCutter::sparSection(const std::string& spar, const gp_Pln
       throw Error(error.code(), "spar '" + spar + "': " + error.message(), {}, where);
     }
   }
-  const SparWall& wall = known->second;
-  const std::vector<gp_Pnt>& points = wall.points;
-  const gp_Vec& up = wall.up;
   const gp_Vec normal(plane.Axis().Direction());
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const gp_Vec piece(points[i - 1], points[i]);
+  for (const SparWall::Piece& wallPiece : known->second.pieces) {
+    const gp_Vec piece(wallPiece.from, wallPiece.to);
     const double across = piece.Dot(normal);
     if (std::abs(across) < 1e-12 * piece.Magnitude()) continue;  // the piece runs along the plane
-    const double t = gp_Vec(points[i - 1], plane.Location()).Dot(normal) / across;
-    const bool carriedBefore = i == 1 && wall.carriedBeforeFirst,
-               carriedAfter = i + 1 == points.size() && wall.carriedAfterLast;
-    if ((t < -1e-9 && !carriedBefore) || (t > 1.0 + 1e-9 && !carriedAfter)) continue;
-    const gp_Pnt crossing = points[i - 1].Translated(t * piece);
+    const double t = gp_Vec(wallPiece.from, plane.Location()).Dot(normal) / across;
+    if ((t < -1e-9 && !wallPiece.carriedBefore) || (t > 1.0 + 1e-9 && !wallPiece.carriedAfter)) continue;
+    const gp_Pnt crossing = wallPiece.from.Translated(t * piece);
+    // On a twisted piece, the wall's line at the crossing (a ruling of the ruled surface).
+    const gp_Vec up = wallPiece.upAt(std::clamp(t, 0.0, 1.0));
     gp_Vec along = normal.Crossed(piece.Crossed(up));
     if (along.Magnitude() < 1e-12) continue;
     along.Normalize();

@@ -1,7 +1,9 @@
 #include "spar_web.h"
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepFill.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "airshape/configuration.h"
@@ -49,7 +51,41 @@ TopoDS_Face wallFace(const gp_Pnt& inner, const gp_Pnt& outer, bool beyondInner,
   return BRepBuilderAPI_MakeFace(outline.Wire(), true).Face();
 }
 
+/// The piece between two positions: a plane face, carried on where asked, or the ruled surface
+/// between the lines along their different directions, with a plane piece of its own beyond a
+/// carried end.
+std::vector<SparWall::Piece> piecesBetween(const gp_Pnt& from, const gp_Pnt& to, const gp_Vec& fromUp,
+                                           const gp_Vec& toUp, bool carriedBefore, bool carriedAfter, double reach) {
+  SparWall::Piece piece{{}, from, to, fromUp, toUp, carriedBefore, carriedAfter};
+  if (piece.plane()) {
+    piece.face = wallFace(from, to, carriedBefore, carriedAfter, fromUp, reach);
+    return {piece};
+  }
+  piece.carriedBefore = piece.carriedAfter = false;
+  piece.face =
+      BRepFill::Face(BRepBuilderAPI_MakeEdge(from.Translated(-reach * fromUp), from.Translated(reach * fromUp)),
+                     BRepBuilderAPI_MakeEdge(to.Translated(-reach * toUp), to.Translated(reach * toUp)));
+  std::vector<SparWall::Piece> pieces;
+  const gp_Vec along = gp_Vec(from, to).Normalized();
+  if (carriedBefore) {
+    const gp_Pnt before = from.Translated(-along);
+    pieces.push_back({wallFace(before, from, true, false, fromUp, reach), before, from, fromUp, fromUp, true, false});
+  }
+  pieces.push_back(piece);
+  if (carriedAfter) {
+    const gp_Pnt after = to.Translated(along);
+    pieces.push_back({wallFace(to, after, false, true, toUp, reach), to, after, toUp, toUp, false, true});
+  }
+  return pieces;
+}
+
 }  // namespace
+
+std::vector<TopoDS_Face> SparWall::faces() const {
+  std::vector<TopoDS_Face> all;
+  for (const Piece& piece : pieces) all.push_back(piece.face);
+  return all;
+}
 
 SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall::Ends ends) {
   if (spar.positions.size() < 2)
@@ -58,7 +94,9 @@ SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall
   std::vector<PlacedPosition> placedPositions;
   for (const SparPosition& position : spar.positions) placedPositions.push_back(placed(frame, position));
   const double reach = frame.reach();
-  const gp_Vec up = frame.toGlobal(gp_Vec(0, 0, 1)).Normalized();  // the wing's own z axis
+  std::vector<gp_Vec> ups;
+  for (const PlacedPosition& position : placedPositions)
+    ups.push_back(frame.toGlobal(frame.uprightAtSparPosition(frame.toWing(position.point))).Normalized());
   const bool always = ends == SparWall::Ends::AlwaysCarried;
   SparWall wall;
   for (std::size_t i = 1; i < placedPositions.size(); ++i) {
@@ -69,12 +107,11 @@ SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall
                   spar.xpath);
     const bool beyondInner = (always && i == 1) || inner.eta <= 1e-7;
     const bool beyondOuter = (always && i + 1 == placedPositions.size()) || outer.eta >= 1.0 - 1e-7;
-    wall.faces.push_back(wallFace(inner.point, outer.point, beyondInner, beyondOuter, up, reach));
-    if (i == 1) wall.carriedBeforeFirst = beyondInner;
-    if (i + 1 == placedPositions.size()) wall.carriedAfterLast = beyondOuter;
+    for (SparWall::Piece& piece :
+         piecesBetween(inner.point, outer.point, ups[i - 1], ups[i], beyondInner, beyondOuter, reach))
+      wall.pieces.push_back(std::move(piece));
   }
   for (const PlacedPosition& position : placedPositions) wall.points.push_back(position.point);
-  wall.up = up;
   return wall;
 }
 
@@ -85,19 +122,19 @@ NamedShape sparWeb(const Configuration& configuration, const StructureServices& 
   // skins with many knots); the others cut out of the component segment by one Boolean common.
   const TopoDS_Shape upperSkin = frame.skin(true), lowerSkin = frame.skin(false);
   const double tolerance = kTraceTolerance * frame.reach();
-  const auto traced = [&](std::size_t i) {
-    const bool beyondInner = i == 0 && wall.carriedBeforeFirst;
-    const bool beyondOuter = i + 1 == wall.faces.size() && wall.carriedAfterLast;
+  const auto traced = [&](std::size_t i) -> std::optional<TopoDS_Face> {
+    const SparWall::Piece& piece = wall.pieces[i];
+    if (!piece.plane()) return std::nullopt;  // a twisted piece: cut by the Boolean
     // The piece's plane: lines along up from one spar point (t = 0) to the next (t = 1).
-    const CrossingLines lines{wall.points[i], gp_Vec(wall.points[i], wall.points[i + 1]), wall.up};
+    const CrossingLines lines{piece.from, gp_Vec(piece.from, piece.to), piece.fromUp};
     return sectionBetweenSkins(
-        upperSkin, lowerSkin, lines, beyondInner ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
-        beyondOuter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance, OpenEnds::ClosedStraight);
+        upperSkin, lowerSkin, lines, piece.carriedBefore ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
+        piece.carriedAfter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance, OpenEnds::ClosedStraight);
   };
   std::vector<std::vector<TopoDS_Face>> pieces;
   try {
     pieces = facesInsideEach(
-        wall.faces, [&]() -> const TopoDS_Shape& { return frame.solid(); }, traced);
+        wall.faces(), [&]() -> const TopoDS_Shape& { return frame.solid(); }, traced);
   } catch (const Error& error) {
     throw Error(error.code(), std::string("the spar cannot be cut out of ") + frame.hostName(), {}, spar.xpath);
   }

@@ -15,18 +15,34 @@ namespace airshape::structure {
 class StructureFrame;
 
 /// The surface a spar segment stands in, reaching across its component segment's solid: for
-/// each two consecutive spar positions, the plane face through the lines along the wing's up
-/// direction (its own z axis) at the positions' points on the chord surface, reaching the
-/// frame's reach above and below. Its first and last face are carried the reach beyond their
-/// end where the spar ends at the component segment's inner or outer end (eta 0 or 1), or at
-/// every end when the wall bounds a region (a fuel tank). The points and `up` are in the global
-/// frame.
+/// each two consecutive spar positions, the face through the lines along the directions the
+/// spar stands in at the positions' points on the chord surface (StructureFrame::
+/// uprightAtSparPosition: the wing's z axis, or in a section's plane), reaching the frame's
+/// reach above and below: a plane face where both stand alike, else the ruled surface between
+/// the two lines (a twisted piece). The wall is carried the reach beyond its first and last
+/// position where the spar ends at the component segment's inner or outer end (eta 0 or 1), or
+/// at every end when the wall bounds a region (a fuel tank): a plane piece carried on, or beyond
+/// a twisted piece a plane piece of its own. Everything is in the global frame.
 struct SparWall {
   enum class Ends { CarriedAtComponentSegmentEnds, AlwaysCarried };
-  std::vector<gp_Pnt> points;
-  std::vector<TopoDS_Face> faces;
-  gp_Vec up;
-  bool carriedBeforeFirst = false, carriedAfterLast = false;
+
+  /// One piece of the wall: from one point to the next, the lines through them along `fromUp`
+  /// and `toUp` (unit); a plane piece may be carried on beyond either point.
+  struct Piece {
+    TopoDS_Face face;
+    gp_Pnt from, to;
+    gp_Vec fromUp, toUp;
+    bool carriedBefore = false, carriedAfter = false;
+
+    bool plane() const { return fromUp.IsParallel(toUp, 1e-12); }
+    /// The direction of the wall's line at share t from `from` to `to`.
+    gp_Vec upAt(double t) const { return (1.0 - t) * fromUp + t * toUp; }
+  };
+
+  std::vector<gp_Pnt> points;  ///< the spar positions' points
+  std::vector<Piece> pieces;   ///< in order along the spar
+
+  std::vector<TopoDS_Face> faces() const;
 };
 SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall::Ends ends);
 

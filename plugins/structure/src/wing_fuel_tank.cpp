@@ -55,7 +55,7 @@ Border sparBorder(const Configuration& configuration, const StructureFrame& fram
   }
   Border border;
   NamedFaces faces;
-  faces.add(tank.uid + "/" + sparUid, wall.faces);
+  faces.add(tank.uid + "/" + sparUid, wall.faces());
   border.wall = faces.shape();
   border.outline.spar = true;
   border.outline.firstEta = frame.etaOf(frame.toWing(wall.points.front()));
