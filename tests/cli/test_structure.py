@@ -184,9 +184,31 @@ def test_an_explicit_rib_in_the_tip_section_is_the_tip(tmp_path):
     assert box["min"][1] == pytest.approx(5, abs=1e-6) and box["max"][0] == pytest.approx(3, abs=1e-6)
 
 
+def tilted_tip(path):
+    """The file with the wing's tip section turned 30° about x: its profile stands along
+    (0, −sin 30°, cos 30°)."""
+    path.write_text(path.read_text().replace(
+        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>',
+        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
+        "<rotation><x>30</x><y>0</y><z>0</z></rotation>", 1))
+    return path
+
+
+def test_a_spar_web_twists_into_a_tilted_tip(tmp_path):
+    # A spar from the root at ξ 0.2 (x 1.4) to the tilted tip at ξ 0.6 (x 2.2) stands along z at
+    # the root and in the tip's plane at the tip: its web ends on the tip's line through the
+    # position, x = 2.2 from its upper to its lower corner, the lower one 0.3 · 0.6 · 0.4 = 0.072
+    # down that line (y 5 + 0.036).
+    path = tilted_tip(with_spars(tmp_path, position("P0", 0, 0.2) + position("P1", 1, 0.6),
+                                 segment("Twisted", "P0", "P1")))
+    box, = (a["ok"] for a in ask(path, {"op": "bounding_box", "uid": "Twisted"}))
+    assert box["max"][0] == pytest.approx(2.2, abs=1e-6)
+    assert box["max"][1] == pytest.approx(5 + 0.072 * 0.5, abs=1e-6)
+    assert box["min"][0] == pytest.approx(1.4, abs=1e-6) and box["min"][1] == pytest.approx(0, abs=1e-6)
+
+
 def test_an_explicit_rib_from_a_spar_position_on_a_tilted_tip_stands_in_the_tip(tmp_path):
-    # The tip section turned 30° about x: its profile stands along (0, −sin 30°, cos 30°). A rib
-    # from the spar position at the tip (ξ 0.2) to the trailing edge at mid span starts on the
+    # A rib from the spar position at the tip (ξ 0.2) to the trailing edge at mid span starts on the
     # tip's line along that direction through the position, as the spar stands there: nothing of
     # it lies ahead of x = 1.4, and its lowest tip corner is 0.3 · 0.2 · 0.8 = 0.048 down that
     # line (the reference library's Rib_SPEX_full of wing_explicitRibPositioning.xml).
@@ -194,12 +216,8 @@ def test_an_explicit_rib_from_a_spar_position_on_a_tilted_tip_stands_in_the_tip(
     rib = ('<ribsDefinitions><ribsDefinition uID="FromTip"><name>t</name><ribExplicitPositioning>'
            f"<startSparPositionUID>P1</startSparPositionUID>{end}<ribStart>leadingEdge</ribStart>"
            "<ribEnd>trailingEdge</ribEnd></ribExplicitPositioning></ribsDefinition></ribsDefinitions>")
-    path = with_spars(tmp_path, position("P0", 0, 0.2) + position("P1", 1, 0.2), segment("Front", "P0", "P1"), rib)
-    text = path.read_text().replace(
-        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>',
-        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
-        "<rotation><x>30</x><y>0</y><z>0</z></rotation>", 1)
-    path.write_text(text)
+    path = tilted_tip(with_spars(tmp_path, position("P0", 0, 0.2) + position("P1", 1, 0.2),
+                                 segment("Front", "P0", "P1"), rib))
     box, = (a["ok"] for a in ask(path, {"op": "bounding_box", "uid": "FromTip"}))
     assert box["min"][0] == pytest.approx(1.4, abs=1e-6)
     assert box["max"][1] == pytest.approx(5 + 0.048 * 0.5, abs=1e-6)
@@ -310,7 +328,7 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage and vessel walls, cross beams and struts are built
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 483, output[-3000:]
+    assert passed >= 487, output[-3000:]
 
 
 def two_segment_wing(tmp_path, shells):
