@@ -5,7 +5,6 @@
 
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepLib.hxx>
-#include <BRepOffsetAPI_ThruSections.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
@@ -13,6 +12,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/ruled_sections.h"
 #include "airshape/model/placement.h"
 #include "airshape/model/primary_model.h"
 #include "hinge_motion.h"
@@ -196,19 +196,18 @@ std::string deviceFaceName(const std::string& wingFaceName) {
 NamedShape DeviceGeometry::cutter() const {
   const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
   const std::vector<TopoDS_Wire> between = intermediateWires(innerPlane, outerPlane);
-  BRepOffsetAPI_ThruSections loft(true, true);
-  loft.AddWire(borderWireOf(device_.outerBorder, outerPlane));
-  for (auto wire = between.rbegin(); wire != between.rend(); ++wire) loft.AddWire(*wire);
-  loft.AddWire(borderWireOf(device_.innerBorder, innerPlane));
-  loft.Build();
-  if (!loft.IsDone())
+  std::vector<TopoDS_Wire> wires{borderWireOf(device_.outerBorder, outerPlane)};
+  wires.insert(wires.end(), between.rbegin(), between.rend());
+  wires.push_back(borderWireOf(device_.innerBorder, innerPlane));
+  const geometry::RuledSections loft = geometry::ruledThroughSections(wires);
+  if (loft.solid.IsNull())
     throw Error(ErrorCode::InvalidModel, "no solid joins the device's inner and outer border", {},
                 device_.xpath + "/outerShape");
-  NamedShape cutter{loft.Shape(), {}};
+  NamedShape cutter{loft.solid, {}};
   for (TopExp_Explorer face(cutter.shape, TopAbs_FACE); face.More(); face.Next()) {
-    const std::string name = face.Current().IsSame(loft.FirstShape())  ? "outer side"
-                             : face.Current().IsSame(loft.LastShape()) ? "inner side"
-                                                                       : cutterFaceName(device_);
+    const std::string name = face.Current().IsSame(loft.firstCap)  ? "outer side"
+                             : face.Current().IsSame(loft.lastCap) ? "inner side"
+                                                                   : cutterFaceName(device_);
     cutter.faces.emplace_back(device_.uid + "/" + name, TopoDS::Face(face.Current()));
   }
   return cutter;
@@ -270,14 +269,14 @@ TopoDS_Shape DeviceGeometry::skinCutOut() const {
     return skinCutOutWire(plane, wing_.cleanSolid(configuration_, device_.wingUid), share(upperXsi), share(lowerXsi),
                           aft, xpath);
   };
-  BRepOffsetAPI_ThruSections loft(true, true);
-  loft.AddWire(outline(device_.outerBorder, cutOut.outerEtaLE, cutOut.outerEtaTE, cutOut.upperOuter, cutOut.lowerOuter,
-                       cutOut.xpath));
-  loft.AddWire(outline(device_.innerBorder, cutOut.innerEtaLE, cutOut.innerEtaTE, cutOut.upperInner, cutOut.lowerInner,
-                       cutOut.xpath));
-  loft.Build();
-  if (!loft.IsDone()) throw Error(ErrorCode::InvalidModel, "no solid joins the cut-out's borders", {}, cutOut.xpath);
-  return loft.Shape();
+  const geometry::RuledSections loft =
+      geometry::ruledThroughSections({outline(device_.outerBorder, cutOut.outerEtaLE, cutOut.outerEtaTE,
+                                              cutOut.upperOuter, cutOut.lowerOuter, cutOut.xpath),
+                                      outline(device_.innerBorder, cutOut.innerEtaLE, cutOut.innerEtaTE,
+                                              cutOut.upperInner, cutOut.lowerInner, cutOut.xpath)});
+  if (loft.solid.IsNull())
+    throw Error(ErrorCode::InvalidModel, "no solid joins the cut-out's borders", {}, cutOut.xpath);
+  return loft.solid;
 }
 
 std::pair<double, double> DeviceGeometry::parameterRange() const { return parameterRangeOf(device_); }

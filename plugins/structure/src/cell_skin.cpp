@@ -6,13 +6,13 @@
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepGProp.hxx>
-#include <BRepOffsetAPI_ThruSections.hxx>
 #include <GProp_GProps.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/ruled_sections.h"
 #include "contour_cell.h"
 #include "faces_inside.h"
 #include "named_faces.h"
@@ -184,16 +184,13 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
     polygon.Close();
     return polygon.Wire();
   };
-  BRepOffsetAPI_ThruSections prism(true, true);
-  prism.AddWire(level(-1.0));
-  prism.AddWire(level(1.0));
-  prism.Build();
-  if (!prism.IsDone()) throw Error(ErrorCode::InvalidModel, "the cell's corners enclose nothing", {}, cell.xpath);
+  const geometry::RuledSections prism = geometry::ruledThroughSections({level(-1.0), level(1.0)});
+  if (prism.solid.IsNull()) throw Error(ErrorCode::InvalidModel, "the cell's corners enclose nothing", {}, cell.xpath);
 
   const TopoDS_Shape skin = frame.skin(cell.upper);
   std::vector<TopoDS_Face> inside;
   try {
-    inside = facesInside(skin, prism.Shape());
+    inside = facesInside(skin, prism.solid);
   } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, cell.xpath);
   }

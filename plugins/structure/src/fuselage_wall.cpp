@@ -10,7 +10,6 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
-#include <BRepFill.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <TopExp_Explorer.hxx>
@@ -21,6 +20,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "compounds.h"
 #include "faces_inside.h"
 #include "fuselage_frame.h"
@@ -129,7 +129,7 @@ TopoDS_Face quad(const gp_Pnt& lower, const gp_Pnt& lowerNext, const gp_Pnt& upp
   BRepBuilderAPI_MakePolygon polygon(lower, lowerNext, upperNext, upper, true);
   BRepBuilderAPI_MakeFace plane(polygon.Wire(), true);
   if (plane.IsDone()) return plane.Face();
-  return BRepFill::Face(BRepBuilderAPI_MakeEdge(lower, upper), BRepBuilderAPI_MakeEdge(lowerNext, upperNext));
+  return geometry::ruledFace(geometry::straightLine(lower, upper), geometry::straightLine(lowerNext, upperNext));
 }
 
 /// A wall before trimming: its base points, its strips and the faces that cut walls it bounds

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
-#include <BRepFill.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "fuselage_frame.h"
 
 namespace airshape::structure {
@@ -19,12 +18,11 @@ namespace {
 
 constexpr double kDegrees = M_PI / 180.0;
 
-TopoDS_Edge rayEdge(const FuselageFrame& fuselage, const PositionRay& ray, double length) {
+Handle(Geom_BSplineCurve) rayLine(const FuselageFrame& fuselage, const PositionRay& ray, double length) {
   // Both ends carried to the global frame, so that the ruled surfaces between the rays are the
   // same whatever the fuselage's transformation.
-  return BRepBuilderAPI_MakeEdge(fuselage.toGlobal(ray.origin),
-                                 fuselage.toGlobal(ray.origin.Translated(ray.direction * length)))
-      .Edge();
+  return geometry::straightLine(fuselage.toGlobal(ray.origin),
+                                fuselage.toGlobal(ray.origin.Translated(ray.direction * length)));
 }
 
 /// Whether four points lie in one plane to `tolerance`.
@@ -61,7 +59,7 @@ TopoDS_Face ruledBetween(const FuselageFrame& fuselage, const PositionRay& a, co
     BRepBuilderAPI_MakeFace face(outline.Wire(), true);
     if (face.IsDone()) return face.Face();
   }
-  return BRepFill::Face(rayEdge(fuselage, a, length), rayEdge(fuselage, b, length));
+  return geometry::ruledFace(rayLine(fuselage, a, length), rayLine(fuselage, b, length));
 }
 
 StringerPath::StringerPath(const FuselageFrame& fuselage, const schema::StringerType& stringer) {

@@ -1,13 +1,12 @@
 #include "spar_web.h"
 
-#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
-#include <BRepFill.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "skin_section.h"
@@ -63,8 +62,8 @@ std::vector<SparWall::Piece> piecesBetween(const gp_Pnt& from, const gp_Pnt& to,
   }
   piece.carriedBefore = piece.carriedAfter = false;
   piece.face =
-      BRepFill::Face(BRepBuilderAPI_MakeEdge(from.Translated(-reach * fromUp), from.Translated(reach * fromUp)),
-                     BRepBuilderAPI_MakeEdge(to.Translated(-reach * toUp), to.Translated(reach * toUp)));
+      geometry::ruledFace(geometry::straightLine(from.Translated(-reach * fromUp), from.Translated(reach * fromUp)),
+                          geometry::straightLine(to.Translated(-reach * toUp), to.Translated(reach * toUp)));
   std::vector<SparWall::Piece> pieces;
   const gp_Vec along = gp_Vec(from, to).Normalized();
   if (carriedBefore) {
