@@ -4,13 +4,29 @@
 
 namespace airshape::geometry {
 
-RuledSections ruledThroughSections(const std::vector<TopoDS_Wire>& wires) {
-  using Entry = void(const std::vector<TopoDS_Wire>&, TopoDS_Shape&, TopoDS_Shape&, TopoDS_Shape&);
+namespace {
+
+/// The module, loaded on first use and kept.
+const boost::dll::shared_library& rulingModule() {
   static const boost::dll::shared_library module =
       plugin::loadCoreModule("libairshape_ruled_sections.so", "the ruled loft through sections");
+  return module;
+}
+
+}  // namespace
+
+RuledSections ruledThroughSections(const std::vector<TopoDS_Wire>& wires) {
+  using Entry = void(const std::vector<TopoDS_Wire>&, TopoDS_Shape&, TopoDS_Shape&, TopoDS_Shape&);
   RuledSections loft;
-  module.get<Entry>("airshape_ruled_sections")(wires, loft.solid, loft.firstCap, loft.lastCap);
+  rulingModule().get<Entry>("airshape_ruled_sections")(wires, loft.solid, loft.firstCap, loft.lastCap);
   return loft;
+}
+
+TopoDS_Face ruledFaceBetween(const TopoDS_Edge& first, const TopoDS_Edge& second) {
+  using Entry = void(const TopoDS_Edge&, const TopoDS_Edge&, TopoDS_Face&);
+  TopoDS_Face face;
+  rulingModule().get<Entry>("airshape_ruled_face")(first, second, face);
+  return face;
 }
 
 }  // namespace airshape::geometry

@@ -1,10 +1,13 @@
-// OCCT's ruled loft through sections in a module of its own (libairshape_ruled_sections.so,
-// beside the core), loaded only when something lofts so (control devices, wing cells): OCCT's
-// offset toolkit and the fillet and Boolean toolkits it links are built with BIND_NOW on Debian,
+// OCCT's ruled loft through sections (and its ruled face between two edges) in a module of its own
+// (libairshape_ruled_sections.so, beside the core), loaded only when something lofts so (control devices, wing cells,
+// nacelle cowls): OCCT's offset toolkit and the fillet and Boolean toolkits it links are built with BIND_NOW on Debian,
 // and loading them with the plugins cost every process about 5 ms.
 #include <vector>
 
+#include <BRepFill.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 
@@ -25,5 +28,17 @@ extern "C" __attribute__((visibility("default"))) void airshape_ruled_sections(c
     lastCap = loft.LastShape();
   } catch (const Standard_Failure&) {
     solid.Nullify();
+  }
+}
+
+/// The module's second entry: OCCT's ruled face between two edges (null when OCCT builds none).
+extern "C" __attribute__((visibility("default"))) void airshape_ruled_face(const TopoDS_Edge& first,
+                                                                           const TopoDS_Edge& second,
+                                                                           TopoDS_Face& face) {
+  face.Nullify();
+  try {
+    face = BRepFill::Face(first, second);
+  } catch (const Standard_Failure&) {
+    face.Nullify();
   }
 }

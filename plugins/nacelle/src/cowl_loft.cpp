@@ -6,7 +6,6 @@
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepFill.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
@@ -23,6 +22,8 @@
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/gordon_surface.h"
+#include "airshape/geometry/ruled_sections.h"
+#include "airshape/geometry/ruled_sections.h"
 #include "airshape/named_shape.h"
 #include "cowl_guides.h"
 #include "cowl_parts.h"
@@ -86,8 +87,11 @@ TopoDS_Face blendingFace(const Handle(Geom_BSplineSurface) & outer, double u, co
   const double first = boundary->FirstParameter(), last = boundary->LastParameter();
   const double start = angleOf(boundary->Value(first));
   const double quarter = std::remainder(angleOf(boundary->Value(first + (last - first) / 4.0)) - start, 2.0 * M_PI);
-  return BRepFill::Face(BRepBuilderAPI_MakeEdge(boundary).Edge(),
-                        BRepBuilderAPI_MakeEdge(circleThrough(innerEnd, start, quarter > 0.0)).Edge());
+  const TopoDS_Face face =
+      geometry::ruledFaceBetween(BRepBuilderAPI_MakeEdge(boundary).Edge(),
+                                 BRepBuilderAPI_MakeEdge(circleThrough(innerEnd, start, quarter > 0.0)).Edge());
+  if (face.IsNull()) throw Error(ErrorCode::InvalidModel, "no ruled face joins the cowl's outer and inner side");
+  return face;
 }
 
 /// The inner side: the rotation curve revolved once about the x axis, its seam at `angle` (radians).

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 
@@ -21,5 +23,9 @@ struct RuledSections {
 /// Boolean toolkits it brings: about 5 ms at every start). Throws Error when the module cannot
 /// be loaded.
 RuledSections ruledThroughSections(const std::vector<TopoDS_Wire>& wires);
+
+/// OCCT's ruled face between two edges (BRepFill::Face: points of equal share of each edge's
+/// parameter range joined), from the same module. A null face when OCCT builds none.
+TopoDS_Face ruledFaceBetween(const TopoDS_Edge& first, const TopoDS_Edge& second);
 
 }  // namespace airshape::geometry
