@@ -6,11 +6,13 @@ namespace airshape::geometry {
 
 namespace {
 
-/// The module, loaded on first use and kept.
+/// The module, loaded on first use and never unloaded: shapes built through it hold OCCT types
+/// of the toolkits it brought along, and such shapes (cached by configurations) may be destroyed
+/// after every static, when an unloaded toolkit's code would be gone.
 const boost::dll::shared_library& rulingModule() {
-  static const boost::dll::shared_library module =
-      plugin::loadCoreModule("libairshape_ruled_sections.so", "the ruled loft through sections");
-  return module;
+  static const auto* module = new boost::dll::shared_library(
+      plugin::loadCoreModule("libairshape_ruled_sections.so", "the ruled loft through sections"));
+  return *module;
 }
 
 }  // namespace

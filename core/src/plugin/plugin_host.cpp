@@ -6,6 +6,8 @@
 #include <optional>
 #include <sstream>
 
+#include <dlfcn.h>
+
 #include <boost/dll/import.hpp>
 #include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
@@ -136,6 +138,10 @@ bool PluginHost::open(const std::string& file) {
                           "; rebuild the plugin against this core; skipped");
       return false;
     }
+    // A plugin stays loaded until the process ends: what it made may outlive the host that
+    // loaded it (an error thrown in it and caught after the host is gone, a shape whose OCCT
+    // types it instantiated, cached results), and would then point into unmapped code.
+    dlopen(canonical.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
     // import_alias keeps the library loaded for as long as the returned function exists;
     // the plugin object's deleter holds that function, and with it the library.
     auto factory = boost::dll::import_alias<std::shared_ptr<Plugin>()>(library, "airshape_create_plugin");
