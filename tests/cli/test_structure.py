@@ -535,3 +535,5 @@ def test_the_structure_of_a_flap_in_its_own_coordinates(tmp_path):
     assert rib_area == pytest.approx(1.2 * ((1 / 2 - 1 / 3) - (0.7 ** 2 / 2 - 0.7 ** 3 / 3)), rel=1e-5)
     assert rib_box["min"][1] == pytest.approx(2.5, abs=1e-5) and rib_box["min"][0] == pytest.approx(2.4, abs=1e-5)
     assert cell_area == pytest.approx(3 * skin_length(0.85, 1), rel=1e-5)
+    warned = airshape("query", str(path), stdin=json.dumps({"op": "component_surface_area", "uid": "FlapRib"}) + "\n")
+    assert "'le' read as leadingEdge" in warned.stderr and "ribExplicitPositioning/ribStart" in warned.stderr

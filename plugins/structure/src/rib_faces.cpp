@@ -271,7 +271,32 @@ RibPlacement ribPlacement(const Configuration& configuration, const RibsDefiniti
   return all[static_cast<std::size_t>(number - 1)];
 }
 
+namespace {
+
+/// Says in a warning where a rib's start, end or reference names an edge by its short form.
+void warnAboutShortEdgeNames(const Configuration& configuration, const RibsDefinition& ribs) {
+  const auto check = [&](const std::string& name, const std::string& where) {
+    if (sameName(name, "le") || sameName(name, "te"))
+      configuration.warnAboutGeometry(
+          {Problem::Severity::Warning, where,
+           "'" + name + "' read as " + (isLeadingEdge(name) ? "leadingEdge" : "trailingEdge")});
+  };
+  if (const auto& set = ribs.node->ribsPositioning) {
+    const std::string where = ribs.xpath + "/ribsPositioning";
+    check(set->ribReference, where + "/ribReference");
+    check(set->ribStart, where + "/ribStart");
+    check(set->ribEnd, where + "/ribEnd");
+  } else if (const auto& rib = ribs.node->ribExplicitPositioning) {
+    const std::string where = ribs.xpath + "/ribExplicitPositioning";
+    check(rib->ribStart, where + "/ribStart");
+    check(rib->ribEnd, where + "/ribEnd");
+  }
+}
+
+}  // namespace
+
 NamedShape ribFaces(const Configuration& configuration, const StructureServices& services, const RibsDefinition& ribs) {
+  warnAboutShortEdgeNames(configuration, ribs);
   const StructureFrame frame(configuration, services, ribs.componentSegmentUid, ribs.wingUid, ribs.deviceUid);
   const RibCutter cutter(configuration, frame, *ribs.structure);
   if (ribs.node->ribsPositioning) return RibSet(ribs, cutter).build();
