@@ -81,12 +81,12 @@ gp_Pnt DeviceGeometry::ownChordPoint(double eta, double xsi) const {
                              &outerEta = leading ? outer.etaLE : outer.etaTE;
     const double innerXsi = leading ? inner.xsiLE : inner.xsiTE, outerXsi = leading ? outer.xsiLE : outer.xsiTE;
     const bool onWingEdge = (innerXsi == 0.0 && outerXsi == 0.0) || (innerXsi == 1.0 && outerXsi == 1.0);
-    const gp_Pnt innerPoint = chordPoint(innerEta, innerXsi, inner.xpath);
-    const gp_Pnt outerPoint = chordPoint(outerEta, outerXsi, outer.xpath);
-    if (!onWingEdge) return innerPoint.Translated(eta * gp_Vec(innerPoint, outerPoint));
-    const double csEta =
-        componentSegmentEta(innerEta, inner.xpath) +
-        eta * (componentSegmentEta(outerEta, outer.xpath) - componentSegmentEta(innerEta, inner.xpath));
+    if (!onWingEdge) {
+      const gp_Pnt innerPoint = chordPoint(innerEta, innerXsi, inner.xpath);
+      return innerPoint.Translated(eta * gp_Vec(innerPoint, chordPoint(outerEta, outerXsi, outer.xpath)));
+    }
+    const double innerCsEta = componentSegmentEta(innerEta, inner.xpath);
+    const double csEta = innerCsEta + eta * (componentSegmentEta(outerEta, outer.xpath) - innerCsEta);
     return wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, csEta, innerXsi, Surface::Chord);
   };
   const gp_Pnt leadingEdge = edgePoint(true), trailingEdge = edgePoint(false);

@@ -135,7 +135,8 @@ class RibSet {
   /// rib by its cross section's x rotation.
   std::pair<gp_Vec, gp_Vec> ribAxes(const gp_Pnt& point, double eta, bool onSpar) const {
     const bool sparEnd = !isWingEdge(positioning_.ribReference) && (eta < 1e-7 || eta > 1.0 - 1e-7);
-    gp_Vec up = onSpar || sparEnd ? frame_.uprightAtSparPosition(point) : frame_.midplaneNormal(frame_.etaOf(point));
+    const double pointEta = frame_.etaOf(point);
+    gp_Vec up = onSpar || sparEnd ? frame_.uprightAtSparPosition(pointEta) : frame_.midplaneNormal(pointEta);
     const gp_Vec direction = ribDirection(point, up);
     up.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(direction)), (xRotationOf(ribs_) - 90.0) * kDegrees);
     return {direction, up};
@@ -234,7 +235,7 @@ class ExplicitRib {
   gp_Vec upAt(const gp_Pnt& start, const gp_Pnt& end, bool atStart) const {
     const auto& sparPosition = atStart ? positioning_.startSparPositionUID : positioning_.endSparPositionUID;
     const gp_Pnt at = atStart ? start : end;
-    if (sparPosition) return frame_.uprightAtSparPosition(at);
+    if (sparPosition) return frame_.uprightAtSparPosition(frame_.etaOf(at));
     const std::string& spar = atStart ? positioning_.ribStart : positioning_.ribEnd;
     if (isWingEdge(spar)) return gp_Vec(0, 0, 0);
     const gp_Vec across = frame_.midplaneNormal(frame_.etaOf(at)).Crossed(gp_Vec(start, end));

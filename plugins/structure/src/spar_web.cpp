@@ -95,7 +95,7 @@ SparWall sparWall(const StructureFrame& frame, const SparSegment& spar, SparWall
   const double reach = frame.reach();
   std::vector<gp_Vec> ups;
   for (const PlacedPosition& position : placedPositions)
-    ups.push_back(frame.toGlobal(frame.uprightAtSparPosition(frame.toWing(position.point))).Normalized());
+    ups.push_back(frame.toGlobal(frame.uprightAtSparPosition(position.eta)).Normalized());
   const bool always = ends == SparWall::Ends::AlwaysCarried;
   SparWall wall;
   for (std::size_t i = 1; i < placedPositions.size(); ++i) {

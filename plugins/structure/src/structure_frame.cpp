@@ -120,9 +120,8 @@ gp_Vec StructureFrame::thicknessDirection(double eta, double xsi) const {
   return toWing(gp_Vec(lower, upper));
 }
 
-gp_Vec StructureFrame::uprightAtSparPosition(const gp_Pnt& point) const {
+gp_Vec StructureFrame::uprightAtSparPosition(double eta) const {
   if (inDevice()) return gp_Vec(0, 0, 1);  // a device's borders are no sections
-  const double eta = etaOf(point);
   for (const double section : sectionEtas()) {
     if (std::abs(section - eta) > 1e-9) continue;
     const gp_Vec chord(chordPoint("", section, 0.0), chordPoint("", section, 1.0));

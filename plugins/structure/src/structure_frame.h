@@ -48,11 +48,11 @@ class StructureFrame {
   /// From the lower to the upper skin at component segment (eta, xsi), in the wing frame (not
   /// normalised): in a section's plane, square to its chord.
   gp_Vec thicknessDirection(double eta, double xsi) const;
-  /// The up direction of a rib at a spar position (wing frame, unit): the wing's z axis,
+  /// The up direction at a spar position at `eta` (wing frame, unit): the wing's z axis,
   /// except at a section (the root, the tip, a section between wing segments), where it is the
   /// line in the section's plane square to the wing's x axis, as the reference library's ribs
   /// starting at such a spar position show (in a device: the wing's z axis throughout).
-  gp_Vec uprightAtSparPosition(const gp_Pnt& point) const;
+  gp_Vec uprightAtSparPosition(double eta) const;
   /// The direction in which eta grows at eta (wing frame, unit): the leading edge seen from
   /// the front (x dropped), along which the component segment's eta is measured.
   gp_Vec etaDirection(double eta) const;
