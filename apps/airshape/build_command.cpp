@@ -85,13 +85,16 @@ BuildReport buildOne(const Configuration& configuration, const plugin::PluginHos
   try {
     const TopoDS_Shape& solid = configuration.shapes().shapeOf(configuration, component.uid);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // A plugin that returns nothing has failed, whatever BRepCheck says of an empty shape.
+    if (solid.IsNull() || !TopExp_Explorer(solid, TopAbs_VERTEX).More())
+      return {line.str() + "FAILED: the plugin built an empty shape", false};
     const BRepCheck_Analyzer analyzer(solid);
     const bool valid = analyzer.IsValid();
     // Structure is surfaces (spar webs, ribs: measured by their area, not a volume) or lines
     // (frames, stringers, beams: by their length).
     if (TopExp_Explorer(solid, TopAbs_SOLID).More())
       line << (valid ? "valid solid" : "INVALID solid") << ", volume " << geometry::enclosedVolume(solid);
-    else if (TopExp_Explorer(solid, TopAbs_FACE).More() || !TopExp_Explorer(solid, TopAbs_EDGE).More())
+    else if (TopExp_Explorer(solid, TopAbs_FACE).More())
       line << (valid ? "valid faces" : "INVALID faces") << ", area " << geometry::areaOf(solid);
     else
       line << (valid ? "valid lines" : "INVALID lines") << ", length " << geometry::lengthOf(solid);

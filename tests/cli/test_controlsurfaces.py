@@ -273,6 +273,52 @@ def test_a_wing_cut_out_removes_the_skins_from_its_xsi(tmp_path):
     assert volumes["Flap"] == pytest.approx(3.0 * section_area_aft(0.7), abs=1e-4), "the flap is as before"
 
 
+def nose_ahead_of(xi_upper, xi_lower, n=4000):
+    """The section area (chord 2) ahead of the straight line from the upper skin at xi_upper to
+    the lower skin at xi_lower, by the shoelace formula on the parabolas."""
+    def skin(xi, sign):
+        return (2 * xi, sign * 0.3 * xi * (1 - xi))
+
+    outline = ([skin(xi_upper * (1 - k / n), 1) for k in range(n + 1)] +
+               [skin(xi_lower * k / n, -1) for k in range(n + 1)])
+    return 0.5 * abs(sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(outline, outline[1:] + outline[:1])))
+
+
+@pytest.mark.parametrize("upper,lower", [(0.15, 0.15), (0.15, 0.1)])
+def test_a_slat_without_a_shape_is_the_nose_ahead_of_a_straight_cut(tmp_path, upper, lower):
+    # Without innerShape a slat is the wing ahead of the straight line from the upper skin at
+    # xsiTEUpper to the lower skin at xsiTELower, over eta 0.2 .. 0.8 (3 m of span).
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    start = text.index('<leadingEdgeDevice uID="Slat">')
+    shape = text[text.index("<outerShape>", start):text.index("</outerShape>", start)]
+    plain = shape.replace("<innerShape>", "<!--").replace("</innerShape>", "-->")
+    plain = plain.replace("<xsiTE>\n", "<xsiTE>", 2)
+    for old in [plain[plain.index("<xsiTE>"):plain.index("</xsiTE>") + len("</xsiTE>")]] * 2:
+        plain = plain.replace(old, f"<xsiTEUpper>{upper}</xsiTEUpper><xsiTELower>{lower}</xsiTELower>", 1)
+    path = tmp_path / "plain-slat.xml"
+    path.write_text(text.replace(shape, plain, 1))
+    volume, box = (json.loads(line)["ok"] for line in airshape(
+        "query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Slat"}) + "\n" +
+        json.dumps({"op": "bounding_box", "uid": "Slat"}) + "\n").stdout.splitlines())
+    assert volume == pytest.approx(3.0 * nose_ahead_of(upper, lower), rel=1e-5)
+    assert box["min"][:2] == pytest.approx([1.0, 1.0], abs=1e-6) and box["max"][:2] == pytest.approx([1.3, 4.0], abs=1e-6)
+
+
+def test_a_device_outside_its_wing_is_one_line(tmp_path):
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    start = text.index('<spoiler uID="Spoiler">')
+    end = text.index("</outerShape>", start)
+    # The spoiler's lower side above the upper skin: its outline cuts nothing out of the wing.
+    shape = text[start:end].replace("<relHeightLE>0.5</relHeightLE>", "<relHeightLE>1.5</relHeightLE>")
+    path = tmp_path / "outside.xml"
+    path.write_text(text[:start] + shape + text[end:])
+    answer = json.loads(airshape("query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Spoiler"}) +
+                                 "\n").stdout)
+    assert answer["error"].endswith("spoiler[1]/outerShape: the device's outline cuts nothing out of its wing")
+
+
 def test_control_surface_conformance_does_not_regress():
     passed, output = conformance_passed("cases-controlsurfaces.json")
     # 9 of 233 do not pass yet: boxes of trimmed device faces and one aileron's area

@@ -221,6 +221,10 @@ TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane,
       return airfoilWire(border, plane, airfoil);
     case BorderDefinition::Nose::Panel:
       return panelWire(border, plane, wing);
+    case BorderDefinition::Nose::StraightBack:
+      // The border's chord runs from xsi 0 (its leading edge) to xsiTE, the larger skin xsi.
+      return skinCutOutWire(plane, wing, border.xsiUpperSkin / border.xsiTE, border.xsiLowerSkin / border.xsiTE, false,
+                            border.xpath);
     default:
       return straightWire(plane, wing);
   }
@@ -275,12 +279,13 @@ BorderDefinition borderOf(const schema::ControlSurfaceBorderLeadingEdgeType& bor
   const double upper = border.xsiTE ? border.xsiTE->xsi : border.xsiTEUpper.value_or(0.0);
   const double lower = border.xsiTE ? border.xsiTE->xsi : border.xsiTELower.value_or(upper);
   d.xsiTE = std::max(upper, lower);
+  d.xsiUpperSkin = upper;
+  d.xsiLowerSkin = lower;
+  d.nose = BorderDefinition::Nose::StraightBack;
   if (border.innerShape) {
     d.nose = BorderDefinition::Nose::InnerShape;
     d.relHeight = border.innerShape->relHeightTE;
     d.xsiMiddle = border.innerShape->xsiTE;
-    d.xsiUpperSkin = upper;
-    d.xsiLowerSkin = lower;
   }
   return withAirfoil(d, border);
 }

@@ -22,7 +22,8 @@ struct RelativeCoordinate {
 /// trailing edges lie on the component segment and how its nose is shaped.
 struct BorderDefinition {
   enum class Nose {
-    Straight,          ///< cut straight across the wing at the leading edge
+    Straight,          ///< cut straight across the wing at the leading edge (the device aft)
+    StraightBack,      ///< cut straight across the wing at the trailing edge (the device ahead: slats)
     LeadingEdgeShape,  ///< a rounded nose through a point at relHeight between the skins (flaps)
     InnerShape,        ///< a hollow trailing end, rounded through a point between the skins (slats)
     Airfoil,           ///< its own airfoil, scaled to the border's chord
@@ -36,7 +37,8 @@ struct BorderDefinition {
   /// For a shaped nose: where the rounded edge meets the upper and the lower skin and where
   /// its middle point lies, as shares of the border's chord from its trailing edge (1 is the
   /// leading edge), and the middle point's height between the skins (for a panel: the height
-  /// of its lower side).
+  /// of its lower side). A straight back (slats) meets the skins at the component segment xsi
+  /// `xsiUpperSkin` and `xsiLowerSkin`.
   double xsiUpperSkin = 1.0, xsiLowerSkin = 1.0, xsiMiddle = 1.0, relHeight = 0.5;
   std::string airfoilUid;
   double airfoilScaleZ = 1.0;

@@ -232,6 +232,9 @@ NamedShape DeviceGeometry::atRest() const {
   common.Build();
   if (!common.IsDone() || common.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
+  if (!TopExp_Explorer(common.Shape(), TopAbs_SOLID).More())
+    throw Error(ErrorCode::InvalidModel, "the device's outline cuts nothing out of its wing", {},
+                device_.xpath + "/outerShape");
   NamedShape shape = namedBooleanResult(common, {&wingFaces, &cut});
   // Where a border lies in a cap of the wing, the Boolean leaves edges with curves on their
   // faces only; measures and exports need them in space too.
