@@ -26,7 +26,6 @@ KNOWN = [
     "no shape",  # engines without nacelles, pylons without segments: nothing to build, said
     "needs them on all four borders",  # cells mixing contour coordinates with other borders
     "depend on each other",  # cell_rib_spar_test-bugs: a spar on ribs that end at that spar
-    "none of sparPositionEtaXsi",  # boxWing: spar points of an older CPACS (sparPoint)
     # simpletest-fuelTanks' tank_corrupt: vessels broken on purpose, each refused (docs/tank.md).
     "the vessel needs sections and segments", "must be positive", "must not be negative", "is negative",
     "must be larger than the cylinder radius", "must lie between 0 and the cylinder radius",

@@ -324,6 +324,31 @@ def test_a_cell_follows_the_kinks_of_its_spar(tmp_path):
     assert area == pytest.approx(expected, rel=1e-6)
 
 
+def test_older_spar_points_and_rib_etas_are_read_with_a_warning(tmp_path):
+    # CPACS 3.0 files of some tools give a spar position as `sparPoint` and a rib set's first
+    # and last rib by `etaStart`/`etaEnd` (where the reference line reaches that eta): the
+    # same spars and ribs as the schema's forms, each with a warning naming the element.
+    source = os.path.join(os.path.dirname(__file__), "..", "data", "wing-cst-structure.xml")
+    with open(source) as original:
+        text = original.read()
+    older = text.replace("sparPositionEtaXsi>", "sparPoint>")
+    for end in ("start", "end"):
+        older = older.replace(f"<{end}CurvePoint>", f"<eta{end.title()}>").replace(
+            f"</{end}CurvePoint>", f"</eta{end.title()}>")
+    older = older.replace("<referenceUID>Front</referenceUID>\n                      </eta", "<referenceUID>RectCS"
+                          "</referenceUID>\n                      </eta")
+    assert older.count("<sparPoint>") == 4 and "<etaStart>" in older and "<etaEnd>" in older
+    path = tmp_path / "older.xml"
+    path.write_text(older)
+    queries = [{"op": "component_surface_area", "uid": uid} for uid in ("Front", "Rear", "Ribs")]
+    expected = [a["ok"] for a in ask(source, *queries)]
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    got = [json.loads(line)["ok"] for line in result.stdout.splitlines()]
+    assert got == pytest.approx(expected, rel=1e-9)
+    assert "sparPosition[1]/sparPoint: a spar point in an older form" in result.stderr
+    assert "ribsPositioning/etaStart: a rib start or end in an older form" in result.stderr
+
+
 def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage and vessel walls, cross beams and struts are built

@@ -40,7 +40,7 @@ gp_Pnt RibCutter::pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
   if (sparPosition) {
     if (structure_.spars && structure_.spars->sparPositions)
       for (const auto& position : structure_.spars->sparPositions->sparPosition)
-        if (position.uID == *sparPosition) return frame_.positionPoint(sparPositionOf(position));
+        if (position.uID == *sparPosition) return frame_.positionPoint(sparPositionOf(configuration_, position));
     throw Error(ErrorCode::InvalidModel, "spar position '" + *sparPosition + "' names no spar position", {},
                 where + "SparPositionUID");
   }

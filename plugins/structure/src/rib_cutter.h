@@ -73,6 +73,7 @@ class RibCutter {
                                                const std::vector<std::string>& names, const std::string& where) const;
 
   const StructureFrame& frame() const { return frame_; }
+  const Configuration& configuration() const { return configuration_; }
 
  private:
   std::vector<gp_Pnt> side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards, const gp_Vec& up,

@@ -1,6 +1,8 @@
 #include "rib_faces.h"
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include <gp_Ax1.hxx>
 
@@ -61,12 +63,8 @@ class RibSet {
   std::vector<RibPlacement> placements() const {
     const bool startsOnSpar = positioning_.startSparPositionUID.has_value();
     const bool endsOnSpar = positioning_.endSparPositionUID.has_value();
-    const double start = etaOnReference(cutter_.pointOf(positioning_.startEtaXsiPoint, positioning_.startCurvePoint,
-                                                        positioning_.startSparPositionUID, xpath() + "/start"),
-                                        startsOnSpar);
-    const double end = etaOnReference(cutter_.pointOf(positioning_.endEtaXsiPoint, positioning_.endCurvePoint,
-                                                      positioning_.endSparPositionUID, xpath() + "/end"),
-                                      endsOnSpar);
+    const double start = etaOnReference(endPoint(true), startsOnSpar);
+    const double end = etaOnReference(endPoint(false), endsOnSpar);
     const int count = numberOfRibs(start, end);
     const double offset = etaOffset(start, end, count);
     std::vector<RibPlacement> placements;
@@ -140,6 +138,45 @@ class RibSet {
     const gp_Vec direction = ribDirection(point, up);
     up.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(direction)), (xRotationOf(ribs_) - 90.0) * kDegrees);
     return {direction, up};
+  }
+
+  /// The first (`start`) or the last rib's point as the schema gives it, or, in older files,
+  /// where the reference line reaches the component segment eta `etaStart` or `etaEnd`.
+  gp_Pnt endPoint(bool start) const {
+    const auto& etaXsi = start ? positioning_.startEtaXsiPoint : positioning_.endEtaXsiPoint;
+    const auto& curve = start ? positioning_.startCurvePoint : positioning_.endCurvePoint;
+    const auto& sparPosition = start ? positioning_.startSparPositionUID : positioning_.endSparPositionUID;
+    if (!etaXsi && !curve && !sparPosition)
+      if (const auto point = olderEndPoint(start ? "etaStart" : "etaEnd")) return *point;
+    return cutter_.pointOf(etaXsi, curve, sparPosition, xpath() + (start ? "/start" : "/end"));
+  }
+
+  /// Where the reference line crosses the eta line that an older file's `etaStart` or `etaEnd`
+  /// (eta and referenceUID, as CPACS 3.0 files of some tools write it) names, with a warning;
+  /// nothing when the element is not there.
+  std::optional<gp_Pnt> olderEndPoint(const std::string& element) const {
+    const Configuration& configuration = cutter_.configuration();
+    const std::string where = xpath() + "/" + element;
+    double eta = 0.0;
+    std::string referenceUid;
+    try {
+      eta = std::stod(configuration.value(where + "/eta"));
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+    try {
+      referenceUid = configuration.value(where + "/referenceUID");
+    } catch (const Error&) {  // a component segment eta
+    }
+    configuration.warnAboutGeometry({Problem::Severity::Warning, where,
+                                     "a rib start or end in an older form; read as the reference line's point "
+                                     "at that eta"});
+    const double csEta = frame_.frameEta(referenceUid, eta);
+    const gp_Pnt front = frame_.chordPoint("", csEta, 0.0), back = frame_.chordPoint("", csEta, 1.0);
+    const auto share = reference_.crossing(front, gp_Vec(front, back).Crossed(frame_.midplaneNormal(csEta)));
+    if (!share)
+      throw Error(ErrorCode::InvalidModel, "the reference line does not reach eta " + std::to_string(eta), {}, where);
+    return reference_.at(*share);
   }
 
   /// The share of the reference line where the rib through a point crosses it.

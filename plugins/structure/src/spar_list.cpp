@@ -6,7 +6,30 @@
 
 namespace airshape::structure {
 
-SparPosition sparPositionOf(const schema::SparPositionType& node) {
+namespace {
+
+/// An older files' spar point (`sparPoint` with eta, xsi and referenceUID, as CPACS 3.0 files
+/// of some tools write it): the same point as sparPositionEtaXsi, read with a warning.
+bool readSparPoint(const Configuration& configuration, const std::string& xpath, SparPosition& position) {
+  const std::string point = xpath + "/sparPoint";
+  try {
+    position.eta = std::stod(configuration.value(point + "/eta"));
+    position.xsi = std::stod(configuration.value(point + "/xsi"));
+  } catch (const std::exception&) {  // no sparPoint, or not numbers
+    return false;
+  }
+  try {
+    position.referenceUid = configuration.value(point + "/referenceUID");
+  } catch (const Error&) {  // a component segment eta and xsi
+  }
+  configuration.warnAboutGeometry(
+      {Problem::Severity::Warning, point, "a spar point in an older form; read as sparPositionEtaXsi"});
+  return true;
+}
+
+}  // namespace
+
+SparPosition sparPositionOf(const Configuration& configuration, const schema::SparPositionType& node) {
   SparPosition position;
   position.uid = node.uID;
   position.xpath = node.xpath;
@@ -23,8 +46,7 @@ SparPosition sparPositionOf(const schema::SparPositionType& node) {
     position.kind = SparPosition::Kind::OnCurve;
     position.eta = node.sparPositionCurve->eta;
     position.referenceUid = node.sparPositionCurve->referenceUID;
-  } else {
-    // Older files name the point otherwise (sparPoint): nothing CPACS 3.5 can place.
+  } else if (!readSparPoint(configuration, node.xpath, position)) {
     throw Error(ErrorCode::InvalidModel,
                 "the spar position has none of sparPositionEtaXsi, sparPositionRib and sparPositionCurve", {},
                 node.xpath);
@@ -34,8 +56,8 @@ SparPosition sparPositionOf(const schema::SparPositionType& node) {
 
 namespace {
 
-SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSparType& spars,
-                      const StructureHost& host) {
+SparSegment segmentOf(const Configuration& configuration, const schema::SparSegmentType& node,
+                      const schema::WingSparType& spars, const StructureHost& host) {
   SparSegment segment{node.uID, node.xpath, host.componentSegment->uID, host.wing->uID, {}, host.deviceUid};
   if (!node.sparPositionUIDs) return segment;
   for (const std::string& uid : node.sparPositionUIDs->sparPositionUID) {
@@ -46,7 +68,7 @@ SparSegment segmentOf(const schema::SparSegmentType& node, const schema::WingSpa
     if (found == nullptr)
       throw Error(ErrorCode::InvalidModel, "sparPositionUID '" + uid + "' names no spar position of its spars", {},
                   node.xpath + "/sparPositionUIDs");
-    segment.positions.push_back(sparPositionOf(*found));
+    segment.positions.push_back(sparPositionOf(configuration, *found));
   }
   return segment;
 }
@@ -59,7 +81,7 @@ SparSegment sparSegmentNamed(const Configuration& configuration, const std::stri
     const schema::WingSparType& spars = *host.structure->spars;
     if (!spars.sparSegments) continue;
     for (const auto& segment : spars.sparSegments->sparSegment)
-      if (segment.uID == uid) return segmentOf(segment, spars, host);
+      if (segment.uID == uid) return segmentOf(configuration, segment, spars, host);
   }
   throw Error(ErrorCode::InvalidArgument, "no spar segment with uID '" + uid + "'");
 }

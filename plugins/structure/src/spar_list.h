@@ -35,8 +35,8 @@ struct SparSegment {
   std::string deviceUid;  ///< the control device whose own structure it is, if any
 };
 
-/// A spar position as the schema gives it, read.
-SparPosition sparPositionOf(const schema::SparPositionType& node);
+/// A spar position as the schema gives it (or as older files do, with a warning), read.
+SparPosition sparPositionOf(const Configuration& configuration, const schema::SparPositionType& node);
 
 /// The spar segment with this uID in any model. Throws Error when none has it, naming the
 /// CPACS path when one of its spar position uIDs names no spar position.
