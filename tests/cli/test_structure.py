@@ -223,6 +223,28 @@ def test_an_explicit_rib_from_a_spar_position_on_a_tilted_tip_stands_in_the_tip(
     assert box["max"][1] == pytest.approx(5 + 0.048 * 0.5, abs=1e-6)
 
 
+def test_an_explicit_rib_between_spars_standing_at_different_angles_twists(tmp_path):
+    # Spars at ξ 0.2 and 0.6 from the root to the tilted tip. A rib from the front spar's tip
+    # position (standing in the tip's plane) to the rear spar at mid span (whose twisted web stands
+    # halfway between z and the tip's direction there) is the ruled surface between those two
+    # lines: it starts on the tip's line through x = 1.4 (its lowest corner 0.3 · 0.2 · 0.8 = 0.048
+    # down that line, y 5 + 0.024) and ends on the rear spar at x = 2.2.
+    end = ("<endEtaXsiPoint><eta>0.5</eta><xsi>0.6</xsi><referenceUID>RectCS</referenceUID></endEtaXsiPoint>")
+    rib = ('<ribsDefinitions><ribsDefinition uID="Twisted"><name>t</name><ribExplicitPositioning>'
+           f"<startSparPositionUID>F1</startSparPositionUID>{end}<ribStart>Front</ribStart>"
+           "<ribEnd>Rear</ribEnd></ribExplicitPositioning></ribsDefinition></ribsDefinitions>")
+    positions = position("F0", 0, 0.2) + position("F1", 1, 0.2) + position("Q0", 0, 0.6) + position("Q1", 1, 0.6)
+    path = tilted_tip(with_spars(tmp_path, positions, segment("Front", "F0", "F1") + segment("Rear", "Q0", "Q1"), rib))
+    box, area = (a["ok"] for a in ask(path, {"op": "bounding_box", "uid": "Twisted"},
+                                      {"op": "component_surface_area", "uid": "Twisted"}))
+    assert box["min"][0] == pytest.approx(1.4, abs=1e-6) and box["max"][0] == pytest.approx(2.2, abs=1e-6)
+    assert box["max"][1] == pytest.approx(5 + 0.048 * 0.5, abs=1e-6)
+    # Along its 2.62 m the wing is at most 0.6 · ξ(1−ξ) thick (0.136 on average over ξ 0.2 .. 0.6),
+    # less where the tip leans: a strip of that height is an upper bound.
+    length = (0.8 ** 2 + 2.5 ** 2) ** 0.5
+    assert 0.8 * length * 0.136 < area < length * 0.136
+
+
 def test_the_structural_model_meshes_conformally(tmp_path):
     positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
                  position("PosR1", 1, 0.6))

@@ -5,9 +5,12 @@
 #include <string>
 
 #include <gp_Ax1.hxx>
+#include <gp_Pln.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
+#include "faces_inside.h"
 #include "named_faces.h"
 #include "rib_cutter.h"
 #include "structure_frame.h"
@@ -219,41 +222,90 @@ class ExplicitRib {
   ExplicitRib(const RibsDefinition& ribs, const RibCutter& cutter)
       : ribs_(ribs), positioning_(*ribs.node->ribExplicitPositioning), cutter_(cutter), frame_(cutter.frame()) {}
 
+  /// Where the rib lies as one plane (the start point, its direction, up); a rib between spars
+  /// standing at different angles is no plane and bounds no tank or cell.
   RibPlacement placement() const {
+    const Lines lines = endLines();
+    if (lines.twisted())
+      throw Error(ErrorCode::NotImplemented,
+                  "a rib between spars standing at different angles is no plane; it bounds nothing yet", {}, xpath());
+    return {lines.startPoint, gp_Vec(lines.startPoint, lines.endPoint).Normalized(), lines.start.up};
+  }
+
+  NamedShape build() const {
+    const std::string name = ribs_.uid + "/rib 1";
+    const Lines lines = endLines();
+    NamedFaces ribs;
+    if (lines.twisted()) {
+      ribs.add(name, twistedRib(lines));
+    } else {
+      const RibPlacement rib = placement();
+      ribs.add(name, cutter_.cut(rib.point, rib.direction, rib.up, positioning_.ribStart, positioning_.ribEnd, name,
+                                 xpath()));
+    }
+    return ribs.shape();
+  }
+
+ private:
+  /// A line the rib passes through at one of its ends (wing frame): through a point, along up
+  /// (zero at a wing edge, which gives no direction).
+  struct EndLine {
+    gp_Pnt through;
+    gp_Vec up;
+  };
+  /// The rib's start and end point and its lines there.
+  struct Lines {
+    gp_Pnt startPoint, endPoint;
+    EndLine start, end;
+    bool twisted() const { return start.up.Crossed(end.up).Magnitude() > 1e-9; }
+  };
+
+  std::string xpath() const { return ribs_.xpath + "/ribExplicitPositioning"; }
+
+  /// The rib's lines at its start and end, both with their up direction (where an end gives
+  /// none, the other's), tilted by the cross section's x rotation about the wing's x axis, so
+  /// that neighbouring ribs stay connected.
+  Lines endLines() const {
     const gp_Pnt start = cutter_.pointOf(positioning_.startEtaXsiPoint, positioning_.startCurvePoint,
                                          positioning_.startSparPositionUID, xpath() + "/start");
     const gp_Pnt end = cutter_.pointOf(positioning_.endEtaXsiPoint, positioning_.endCurvePoint,
                                        positioning_.endSparPositionUID, xpath() + "/end");
     if (start.Distance(end) < 1e-9)
       throw Error(ErrorCode::InvalidModel, "the rib's start and end point coincide", {}, xpath());
-    gp_Vec upStart = upAt(start, end, true), upEnd = upAt(start, end, false);
+    Lines lines{start, end, lineAt(start, end, true), lineAt(start, end, false)};
+    gp_Vec &upStart = lines.start.up, &upEnd = lines.end.up;
     if (upStart.SquareMagnitude() == 0.0 && upEnd.SquareMagnitude() == 0.0)
       upStart = upEnd = upBetweenEdges(start, end);
     else if (upStart.SquareMagnitude() == 0.0)
       upStart = upEnd;
     else if (upEnd.SquareMagnitude() == 0.0)
       upEnd = upStart;
-    upStart.Normalize();
-    upEnd.Normalize();
-    if (upStart.Crossed(upEnd).Magnitude() > 1e-9)
-      throw Error(ErrorCode::NotImplemented, "a rib between spars standing at different angles is not built yet", {},
+    for (gp_Vec* up : {&upStart, &upEnd}) {
+      up->Normalize();
+      up->Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), -(xRotationOf(ribs_) - 90.0) * kDegrees);
+    }
+    return lines;
+  }
+
+  /// A rib between spars standing at different angles: the ruled surface between its lines,
+  /// the part inside the component segment's solid.
+  std::vector<TopoDS_Face> twistedRib(const Lines& lines) const {
+    const double reach = frame_.reach();
+    auto line = [&](const EndLine& end) {
+      return geometry::straightLine(frame_.toGlobal(end.through.Translated(-reach * end.up)),
+                                    frame_.toGlobal(end.through.Translated(reach * end.up)));
+    };
+    std::vector<TopoDS_Face> inside;
+    try {
+      inside = facesInside(geometry::ruledFace(line(lines.start), line(lines.end)), frame_.solid());
+    } catch (const Error&) {
+      throw Error(ErrorCode::InvalidModel, std::string("the rib cannot be cut out of ") + frame_.hostName(), {},
                   xpath());
-    // The tilt turns about the wing's x axis, so that neighbouring ribs stay connected.
-    upStart.Rotate(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), -(xRotationOf(ribs_) - 90.0) * kDegrees);
-    return {start, gp_Vec(start, end).Normalized(), upStart};
+    }
+    if (inside.empty())
+      throw Error(ErrorCode::InvalidModel, std::string("the rib does not cross ") + frame_.hostName(), {}, xpath());
+    return inside;
   }
-
-  NamedShape build() const {
-    const RibPlacement rib = placement();
-    const std::string name = ribs_.uid + "/rib 1";
-    NamedFaces ribs;
-    ribs.add(name,
-             cutter_.cut(rib.point, rib.direction, rib.up, positioning_.ribStart, positioning_.ribEnd, name, xpath()));
-    return ribs.shape();
-  }
-
- private:
-  std::string xpath() const { return ribs_.xpath + "/ribExplicitPositioning"; }
 
   /// The up direction of a rib from edge to edge: in the plane of the section both its ends lie
   /// in (the component segment's root or tip, or a section between its segments), otherwise
@@ -266,15 +318,16 @@ class ExplicitRib {
     return frame_.midplaneNormal(eta);
   }
 
-  /// The up direction a spar gives at the rib's start (or end): along the line where the plane
-  /// across the rib (through the midplane normal) meets the spar's web; how the spar stands at
-  /// a spar position (StructureFrame::uprightAtSparPosition); nothing at the wing's edges.
-  gp_Vec upAt(const gp_Pnt& start, const gp_Pnt& end, bool atStart) const {
+  /// The line a spar gives at the rib's start (or end): where the plane across the rib
+  /// (through the midplane normal) meets the spar's web, through the spar's midplane line; how
+  /// the spar stands at a spar position (StructureFrame::uprightAtSparPosition); no direction
+  /// at the wing's edges.
+  EndLine lineAt(const gp_Pnt& start, const gp_Pnt& end, bool atStart) const {
     const auto& sparPosition = atStart ? positioning_.startSparPositionUID : positioning_.endSparPositionUID;
     const gp_Pnt at = atStart ? start : end;
-    if (sparPosition) return frame_.uprightAtSparPosition(frame_.etaOf(at));
+    if (sparPosition) return {at, frame_.uprightAtSparPosition(frame_.etaOf(at))};
     const std::string& spar = atStart ? positioning_.ribStart : positioning_.ribEnd;
-    if (isWingEdge(spar)) return gp_Vec(0, 0, 0);
+    if (isWingEdge(spar)) return {at, gp_Vec(0, 0, 0)};
     const gp_Vec across = frame_.midplaneNormal(frame_.etaOf(at)).Crossed(gp_Vec(start, end));
     const gp_Pln plane(frame_.toGlobal(at), gp_Dir(frame_.toGlobal(across)));
     std::vector<gp_Pnt> points = cutter_.sparSection(spar, plane, xpath() + (atStart ? "/ribStart" : "/ribEnd"));
@@ -284,7 +337,7 @@ class ExplicitRib {
       if (p.Z() < low.Z()) low = p;
       if (p.Z() > high.Z()) high = p;
     }
-    return gp_Vec(low, high);
+    return {gp_Pnt(0.5 * (low.XYZ() + high.XYZ())), gp_Vec(low, high)};
   }
 
   const RibsDefinition& ribs_;
