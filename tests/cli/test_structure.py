@@ -120,6 +120,13 @@ def test_ribs_between_two_spars_in_closed_form(tmp_path):
                       ribs("Ribs", 0.1, 0.9, 3, rotation="<ribRotationReference>Rear</ribRotationReference><z>90</z>"))
     by_spar, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"}))
     assert by_spar == pytest.approx(area, rel=1e-9)
+    # Ribs in the root and the tip section are those sections' faces between the spars.
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Ribs", 0.0, 1.0, 2))
+    ends, ends_box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"},
+                                           {"op": "bounding_box", "uid": "Ribs"}))
+    assert ends == pytest.approx(2 * one, rel=1e-10)
+    assert ends_box["min"][1] == pytest.approx(0, abs=1e-6) and ends_box["max"][1] == pytest.approx(5, abs=1e-6)
 
 
 def test_ribs_to_the_wing_edges_in_closed_form(tmp_path):
