@@ -17,6 +17,8 @@
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "rib_point.h"
+#include "skin_section.h"
+#include "skin_split.h"
 #include "spar_list.h"
 #include "structure_frame.h"
 
@@ -145,6 +147,15 @@ class CellCorners {
   const StructureFrame& frame_;
 };
 
+/// The skin's faces inside the prism, by a Boolean common.
+std::vector<TopoDS_Face> cutByPrism(const TopoDS_Shape& skin, const TopoDS_Shape& prism, const std::string& xpath) {
+  try {
+    return facesInside(skin, prism);
+  } catch (const Error&) {
+    throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, xpath);
+  }
+}
+
 }  // namespace
 
 NamedShape cellSkin(const Configuration& configuration, const StructureServices& services, const WingCell& cell) {
@@ -187,18 +198,21 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   const geometry::RuledSections prism = geometry::ruledThroughSections({level(-1.0), level(1.0)});
   if (prism.solid.IsNull()) throw Error(ErrorCode::InvalidModel, "the cell's corners enclose nothing", {}, cell.xpath);
 
+  // The skin split along where the prism's sides meet it (no surfaces intersected), or, where
+  // that does not apply, cut by the prism in a Boolean common.
   const TopoDS_Shape skin = frame.skin(cell.upper);
-  std::vector<TopoDS_Face> inside;
-  try {
-    inside = facesInside(skin, prism.solid);
-  } catch (const Error&) {
-    throw Error(ErrorCode::InvalidModel, "the cell cannot be cut out of its skin", {}, cell.xpath);
+  RuledLoop ruled{{}, {}, prism.solid};
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    ruled.points.push_back(frame.toGlobal(loop[k]));
+    ruled.directions.push_back(frame.toGlobal(normals[k]));
   }
+  std::optional<std::vector<TopoDS_Face>> inside = skinInsideLoop(skin, ruled, kTraceTolerance * reach);
+  if (!inside) inside = cutByPrism(skin, prism.solid, cell.xpath);
   // A wing that folds back over itself (a joined or box wing) can bring skin of other segments
   // into the prism: only pieces within the cell's span count.
   const double low = *std::min_element(etas.begin(), etas.end()), high = *std::max_element(etas.begin(), etas.end());
   std::vector<TopoDS_Face> withinSpan;
-  for (const TopoDS_Face& face : inside) {
+  for (const TopoDS_Face& face : *inside) {
     GProp_GProps area;
     BRepGProp::SurfaceProperties(face, area);
     const double eta = frame.etaOf(frame.toWing(area.CentreOfMass()));

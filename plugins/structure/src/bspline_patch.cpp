@@ -1,0 +1,66 @@
+#include "bspline_patch.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <TopExp_Explorer.hxx>
+#include <gp_Mat.hxx>
+
+namespace airshape::structure {
+
+std::optional<Patch> patchOf(const TopoDS_Face& face) {
+  Patch patch;
+  patch.surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+  if (patch.surface.IsNull()) return std::nullopt;
+  int wires = 0;
+  for (TopExp_Explorer wire(face, TopAbs_WIRE); wire.More(); wire.Next()) ++wires;
+  if (wires != 1) return std::nullopt;
+  BRepTools::UVBounds(face, patch.u0, patch.u1, patch.v0, patch.v1);
+  double su0, su1, sv0, sv1;
+  patch.surface->Bounds(su0, su1, sv0, sv1);
+  // The face is its whole surface: its boundary is the surface's four boundary curves.
+  const double slack = 1e-9;
+  if (std::abs(patch.u0 - su0) > slack * (su1 - su0) || std::abs(patch.u1 - su1) > slack * (su1 - su0) ||
+      std::abs(patch.v0 - sv0) > slack * (sv1 - sv0) || std::abs(patch.v1 - sv1) > slack * (sv1 - sv0))
+    return std::nullopt;
+  return patch;
+}
+
+bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point) {
+  double u = point.u, v = point.v;
+  double s = gp_Vec(base, patch.surface->Value(u, v)).Dot(direction) / direction.SquareMagnitude();
+  const double uSpan = patch.u1 - patch.u0, vSpan = patch.v1 - patch.v0;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    gp_Pnt surfacePoint;
+    gp_Vec du, dv;
+    patch.surface->D1(u, v, surfacePoint, du, dv);
+    const gp_Mat jacobian(du.XYZ(), dv.XYZ(), direction.Reversed().XYZ());
+    const double determinant = jacobian.Determinant();
+    if (std::abs(determinant) < 1e-12 * du.Magnitude() * dv.Magnitude() * direction.Magnitude()) return false;
+    gp_XYZ step = base.XYZ() + s * direction.XYZ() - surfacePoint.XYZ();
+    step.Multiply(jacobian.Inverted());
+    // Held within the patch; the moves taken, not the steps asked for, tell convergence (at a
+    // bound the step may keep asking to leave by a rounding error).
+    const double nextU = std::clamp(u + step.X(), patch.u0, patch.u1);
+    const double nextV = std::clamp(v + step.Y(), patch.v0, patch.v1);
+    const bool settled = std::abs(nextU - u) <= 1e-13 * uSpan && std::abs(nextV - v) <= 1e-13 * vSpan;
+    u = nextU;
+    v = nextV;
+    s += step.Z();
+    if (settled) {
+      surfacePoint = patch.surface->Value(u, v);
+      const gp_Pnt onLine = base.Translated(s * direction);
+      if (surfacePoint.Distance(onLine) > 1e-9 * (1.0 + gp_Vec(base.XYZ()).Magnitude() + direction.Magnitude()))
+        return false;  // held at a bound: the line misses the patch
+      point.u = u;
+      point.v = v;
+      point.point = surfacePoint;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace airshape::structure

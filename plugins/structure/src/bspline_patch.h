@@ -1,0 +1,34 @@
+#pragma once
+
+#include <optional>
+
+#include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+namespace airshape::structure {
+
+/// A skin face as the direct constructions from the skins use it: an untrimmed B-spline patch,
+/// the face being its whole surface.
+struct Patch {
+  Handle(Geom_BSplineSurface) surface;
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+};
+
+/// A point of a patch on a line: the line's parameter, the patch parameters and the point.
+struct PatchPoint {
+  double t = 0, u = 0, v = 0;
+  gp_Pnt point;
+};
+
+/// The face as a patch; nothing when it is not a B-spline surface bounded by its own four
+/// boundary curves.
+std::optional<Patch> patchOf(const TopoDS_Face& face);
+
+/// The point where the line through `base` along `direction` meets the patch, by Newton's
+/// method on (u, v, s) with S(u, v) = base + s * direction, from the guess in `point` (its u
+/// and v). False where the line meets the patch tangentially or not within its bounds.
+bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point);
+
+}  // namespace airshape::structure

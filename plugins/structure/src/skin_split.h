@@ -1,0 +1,33 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+namespace airshape::structure {
+
+/// A closed loop of ruled sides across a skin (global frame): side k joins the line through
+/// `points[k]` along `directions[k]` to the line through the next point along the next
+/// direction (the lines between them interpolated linearly), as the sides of a prism whose
+/// outline is the loop. `prism` is that prism as a solid.
+struct RuledLoop {
+  std::vector<gp_Pnt> points;
+  std::vector<gp_Vec> directions;
+  TopoDS_Shape prism;
+};
+
+/// The faces of `skin` inside the loop, made without intersecting surfaces: each side's lines
+/// are met with the skin's faces by Newton's method, the curve through those points is drawn
+/// in each face's own parameters (so that it lies on the face, within `tolerance` of the true
+/// crossing of side and skin), the skin is split along those curves and the pieces inside the
+/// prism are kept. Nothing when the skin is not what this handles (faces that are not
+/// untrimmed B-spline patches, a side line that misses the skin or meets it more than once):
+/// the caller then cuts the skin by a Boolean operation.
+std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                       double tolerance);
+
+}  // namespace airshape::structure
