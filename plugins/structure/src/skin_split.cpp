@@ -108,56 +108,107 @@ PatchPoint ontoBound(const Patch& patch, PatchPoint point, double tolerance) {
   return point;
 }
 
+/// Thrown where a line meets the skin at two points (a wing folding back over itself): the
+/// direct split does not apply.
+struct FoldedSkin {};
+
 /// The one point where the line at `lambda` meets the skin, on the patch the crossing goes on
-/// over towards `ahead`; nothing when it misses the skin or meets it at two points.
+/// over towards `ahead`; nothing when it misses the skin. Throws FoldedSkin where it meets it at
+/// two points.
 std::optional<Hit> entry(const Side& side, double lambda, double ahead, double tolerance) {
   const std::vector<Hit> hits = side.search(lambda);
   if (hits.empty()) return std::nullopt;
   for (const Hit& hit : hits)
-    if (hit.at.point.Distance(hits.front().at.point) > tolerance) return std::nullopt;
+    if (hit.at.point.Distance(hits.front().at.point) > tolerance) throw FoldedSkin();
   for (const Hit& hit : hits)
     if (side.on(hit.patch, ahead, hit.at)) return Hit{hit.patch, ontoBound(side.patch(hit.patch), hit.at, tolerance)};
   return Hit{hits.front().patch, ontoBound(side.patch(hits.front().patch), hits.front().at, tolerance)};
 }
 
+/// The last point of the crossing on the piece's patch before the line at `beyond` (which
+/// meets it outside the patch), by bisection, and the line's parameter just past it.
+std::pair<PatchPoint, double> exitFrom(const Side& side, const Piece& piece, double beyond, double tolerance) {
+  PatchPoint last = piece.points.back();
+  for (int halving = 0; halving < 50; ++halving) {
+    const double middle = 0.5 * (last.t + beyond);
+    if (const auto hit = side.on(piece.patch, middle, last))
+      last = hit->at;
+    else
+      beyond = middle;
+  }
+  return {ontoBound(side.patch(piece.patch), last, tolerance), beyond};
+}
+
+/// The first point of the crossing on the skin after the line at `outside` (which misses it),
+/// by bisection towards `inside`, a hit of a later line.
+Hit reentry(const Side& side, double outside, Hit inside, double tolerance) {
+  for (int halving = 0; halving < 50; ++halving) {
+    const double middle = 0.5 * (outside + inside.at.t);
+    if (const auto hit = side.on(inside.patch, middle, inside.at))
+      inside = *hit;
+    else
+      outside = middle;
+  }
+  inside.at = ontoBound(side.patch(inside.patch), inside.at, tolerance);
+  return inside;
+}
+
 /// The side's crossing of the skin, piece by patch: sampled evenly, each change of patch found
-/// by bisection.
+/// by bisection. Where the side runs beyond the skin's edge (past its leading or trailing edge,
+/// its root or tip), the region follows that edge, which the skin has already: no piece there.
 std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
   constexpr int kSamples = 16;
   const double step = 1.0 / kSamples;
-  const auto first = entry(side, 0.0, step, tolerance);
-  if (!first) return std::nullopt;
-  std::vector<Piece> pieces{{first->patch, {first->at}}};
-  for (int i = 1; i <= kSamples; ++i) {
+  std::vector<Piece> pieces;
+  auto add = [&](Piece& piece, const PatchPoint& point) {
+    piece.points.push_back(ontoBound(side.patch(piece.patch), point, tolerance));
+  };
+  auto begin = [&](const Hit& hit) {
+    pieces.push_back({hit.patch, {}});
+    add(pieces.back(), hit.at);
+  };
+  bool onSkin = false;
+  double outside = 0.0;  // off the skin: the last line found to miss it
+  if (const auto first = entry(side, 0.0, step, tolerance)) {
+    begin(*first);
+    onSkin = true;
+  }
+  for (int i = 1, steps = 0; i <= kSamples; ++i) {
+    if (++steps > 256) return std::nullopt;
     const double lambda = static_cast<double>(i) / kSamples;
-    Piece& piece = pieces.back();
-    if (const auto hit = side.on(piece.patch, lambda, piece.points.back())) {
-      piece.points.push_back(hit->at);
+    if (!onSkin) {
+      if (const auto hit = entry(side, lambda, std::min(1.0, lambda + step), tolerance)) {
+        begin(reentry(side, outside, *hit, tolerance));
+        if (hit->at.t > pieces.back().points.back().t) add(pieces.back(), hit->at);
+        onSkin = true;
+      } else {
+        outside = lambda;
+      }
       continue;
     }
-    // The crossing left the patch between the last point and this line: where, by bisection.
-    PatchPoint last = piece.points.back();
-    double off = lambda;
-    for (int halving = 0; halving < 50; ++halving) {
-      const double middle = 0.5 * (last.t + off);
-      if (const auto hit = side.on(piece.patch, middle, last))
-        last = hit->at;
-      else
-        off = middle;
+    Piece& piece = pieces.back();
+    if (const auto hit = side.on(piece.patch, lambda, piece.points.back())) {
+      add(piece, hit->at);
+      continue;
     }
-    last = ontoBound(side.patch(piece.patch), last, tolerance);
-    if (last.t > piece.points.back().t) piece.points.push_back(last);
+    // The crossing left the patch between the last point and this line: onto a neighbouring
+    // patch, or off the skin.
+    const auto [last, off] = exitFrom(side, piece, lambda, tolerance);
+    if (last.t > piece.points.back().t) add(piece, last);
     const auto next = entry(side, off, std::min(1.0, off + step), tolerance);
-    if (!next || next->patch == piece.patch || pieces.size() > 64) return std::nullopt;
-    pieces.push_back({next->patch, {next->at}});
-    --i;  // this line again, on the next patch
+    if (next && next->patch != piece.patch) {
+      begin(*next);
+    } else {  // off the skin (or back on the same patch, which the next line takes up)
+      onSkin = false;
+      outside = off;
+    }
+    --i;  // this line again, from there
   }
   // A piece over a mere corner of a patch (the crossing passing through a vertex) is left out:
   // its neighbours meet within the vertices' tolerance.
   std::vector<Piece> kept;
   for (const Piece& piece : pieces)
     if (piece.points.back().t - piece.points.front().t > 1e-9) kept.push_back(piece);
-  if (kept.empty()) return std::nullopt;
   for (const Piece& piece : kept)
     if (piece.points.size() < 2) return std::nullopt;
   return kept;
@@ -223,7 +274,7 @@ struct Drawn {
 };
 
 /// The crossings of the loop's sides with the skin, drawn on its patches (pieces along a
-/// patch's bound left out: the skin has an edge there already).
+/// patch's bound left out: the skin has an edge there already). Throws FoldedSkin.
 std::optional<std::vector<Drawn>> crossingsOf(const std::vector<Patch>& patches, const RuledLoop& loop,
                                               double tolerance) {
   const std::size_t n = loop.points.size();
@@ -406,7 +457,12 @@ std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin,
                                                        double tolerance) {
   const auto patches = patchesOf(skin);
   if (!patches) return std::nullopt;
-  const auto drawn = crossingsOf(patches->second, loop, tolerance);
+  std::optional<std::vector<Drawn>> drawn;
+  try {
+    drawn = crossingsOf(patches->second, loop, tolerance);
+  } catch (const FoldedSkin&) {
+    return std::nullopt;
+  }
   if (!drawn) return std::nullopt;
   const auto split = splitFaces(patches->first, patches->second, *drawn, skin, tolerance);
   if (!split) return std::nullopt;

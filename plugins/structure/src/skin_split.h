@@ -23,10 +23,11 @@ struct RuledLoop {
 /// The faces of `skin` inside the loop, made without intersecting surfaces: each side's lines
 /// are met with the skin's faces by Newton's method, the curve through those points is drawn
 /// in each face's own parameters (so that it lies on the face, within `tolerance` of the true
-/// crossing of side and skin), the skin is split along those curves and the pieces inside the
-/// prism are kept. Nothing when the skin is not what this handles (faces that are not
-/// untrimmed B-spline patches, a side line that misses the skin or meets it more than once):
-/// the caller then cuts the skin by a Boolean operation.
+/// crossing of side and skin), the faces are rebuilt along those curves and the pieces inside
+/// the prism are kept. Where a side runs beyond the skin's edge, the region follows that edge.
+/// Nothing when the skin is not what this handles (faces that are not untrimmed B-spline
+/// patches, a line that meets the skin twice, a crossing the curves cannot follow): the caller
+/// then cuts the skin by a Boolean operation.
 std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
                                                        double tolerance);
 
