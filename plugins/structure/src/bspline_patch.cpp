@@ -6,6 +6,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <gp_Mat.hxx>
 
 namespace airshape::structure {
@@ -61,6 +62,17 @@ bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, P
     }
   }
   return false;
+}
+
+std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin) {
+  SkinPatches result;
+  for (TopExp_Explorer face(skin, TopAbs_FACE); face.More(); face.Next()) {
+    const auto patch = patchOf(TopoDS::Face(face.Current()));
+    if (!patch) return std::nullopt;
+    result.faces.push_back(TopoDS::Face(face.Current()));
+    result.patches.push_back(*patch);
+  }
+  return result;
 }
 
 }  // namespace airshape::structure

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
@@ -25,6 +27,15 @@ struct PatchPoint {
 /// The face as a patch; nothing when it is not a B-spline surface bounded by its own four
 /// boundary curves.
 std::optional<Patch> patchOf(const TopoDS_Face& face);
+
+/// A skin's faces and their patches, in the order the skin holds them.
+struct SkinPatches {
+  std::vector<TopoDS_Face> faces;
+  std::vector<Patch> patches;
+};
+
+/// The skin's faces as patches; nothing when one is not an untrimmed B-spline patch.
+std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin);
 
 /// The point where the line through `base` along `direction` meets the patch, by Newton's
 /// method on (u, v, s) with S(u, v) = base + s * direction, from the guess in `point` (its u

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Geom2d_BSplineCurve.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include "bspline_patch.h"
+
+namespace airshape::structure {
+
+/// The lines of a ruled surface: the line at t in [0, 1] runs through from + t (to − from)
+/// along fromDirection + t (toDirection − fromDirection), so that its points at s are
+/// base(t) + s direction(t) (the ruled surface between the lines at t = 0 and t = 1).
+struct RuledLines {
+  gp_Pnt from, to;
+  gp_Vec fromDirection, toDirection;
+
+  gp_Pnt base(double t) const { return gp_Pnt(from.XYZ() + t * (to.XYZ() - from.XYZ())); }
+  gp_Vec direction(double t) const { return fromDirection + t * (toDirection - fromDirection); }
+};
+
+/// A part of where the lines meet a skin, on one of its patches: the points (`t` the lines'
+/// parameter, in order) and the curve through them in the patch's parameters by t, which
+/// follows the true crossing within the tolerance.
+struct CrossingPiece {
+  std::size_t patch = 0;
+  std::vector<PatchPoint> points;
+  Handle(Geom2d_BSplineCurve) curve;
+};
+
+/// Thrown where a line meets the skin at two points (a wing folding back over itself).
+struct FoldedSkin {};
+
+/// Where the lines meet the skin's patches, piece by patch in order of t: each line met by
+/// Newton's method, each change of patch found by bisection, points added until the curves
+/// follow the crossing. Where the lines pass beyond the skin's edge there is no piece. Nothing
+/// when a curve cannot be made to follow the crossing; throws FoldedSkin.
+std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const RuledLines& lines,
+                                                        double tolerance);
+
+/// The point moved onto a patch's bound where it lies within the tolerance of it, so that a
+/// curve ending there ends on the face's edge.
+PatchPoint ontoBound(const Patch& patch, PatchPoint point, double tolerance);
+
+}  // namespace airshape::structure
