@@ -13,6 +13,8 @@
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "rib_cutter.h"
+#include "ruled_section.h"
+#include "skin_section.h"
 #include "structure_frame.h"
 
 namespace airshape::structure {
@@ -291,6 +293,12 @@ class ExplicitRib {
   /// the part inside the component segment's solid.
   std::vector<TopoDS_Face> twistedRib(const Lines& lines) const {
     const double reach = frame_.reach();
+    // Straight from the skins where they allow it, else by a Boolean common.
+    const RuledLines ruled{frame_.toGlobal(lines.start.through), frame_.toGlobal(lines.end.through),
+                           frame_.toGlobal(lines.start.up), frame_.toGlobal(lines.end.up)};
+    if (const auto face =
+            ruledSectionBetweenSkins(frame_.skin(true), frame_.skin(false), ruled, kTraceTolerance * reach))
+      return {*face};
     auto line = [&](const EndLine& end) {
       return geometry::straightLine(frame_.toGlobal(end.through.Translated(-reach * end.up)),
                                     frame_.toGlobal(end.through.Translated(reach * end.up)));

@@ -9,6 +9,7 @@
 #include "airshape/geometry/brep_building.h"
 #include "faces_inside.h"
 #include "named_faces.h"
+#include "ruled_section.h"
 #include "skin_section.h"
 #include "structure_frame.h"
 
@@ -123,7 +124,9 @@ NamedShape sparWeb(const Configuration& configuration, const StructureServices& 
   const double tolerance = kTraceTolerance * frame.reach();
   const auto traced = [&](std::size_t i) -> std::optional<TopoDS_Face> {
     const SparWall::Piece& piece = wall.pieces[i];
-    if (!piece.plane()) return std::nullopt;  // a twisted piece: cut by the Boolean
+    if (!piece.plane())  // a twisted piece: the ruled surface between its lines
+      return ruledSectionBetweenSkins(upperSkin, lowerSkin, {piece.from, piece.to, piece.fromUp, piece.toUp},
+                                      tolerance);
     // The piece's plane: lines along up from one spar point (t = 0) to the next (t = 1).
     const CrossingLines lines{piece.from, gp_Vec(piece.from, piece.to), piece.fromUp};
     return sectionBetweenSkins(

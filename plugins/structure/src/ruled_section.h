@@ -1,0 +1,22 @@
+#pragma once
+
+#include <optional>
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include "ruled_crossing.h"
+
+namespace airshape::structure {
+
+/// The face of the ruled surface of `lines` (global frame) between a wing's upper and lower
+/// skin, from the line at t = 0 to the line at t = 1: a twisted piece of a spar's web, or a rib
+/// between spars standing at different angles. Made directly from where the lines meet the
+/// skins (ruled_crossing.h): its edges on the skins are curves in the ruled surface's own
+/// parameters that follow the crossings within `tolerance`. Nothing when the skins are not what
+/// this handles (faces that are not untrimmed B-spline patches, a line that misses a skin or
+/// meets it twice): the caller then cuts the surface by a Boolean operation.
+std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
+                                                    const RuledLines& lines, double tolerance);
+
+}  // namespace airshape::structure
