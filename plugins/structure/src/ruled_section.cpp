@@ -14,6 +14,7 @@
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_HArray1OfReal.hxx>
@@ -89,12 +90,7 @@ std::optional<Run> runOf(const CrossingPiece& piece, const Patch& patch, const R
 std::optional<std::vector<Run>> crossingOf(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance) {
   const auto patches = skinPatches(skin);
   if (!patches) return std::nullopt;
-  std::optional<std::vector<CrossingPiece>> pieces;
-  try {
-    pieces = ruledCrossing(patches->patches, lines, tolerance);
-  } catch (const FoldedSkin&) {
-    return std::nullopt;
-  }
+  const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
   if (!pieces || pieces->empty()) return std::nullopt;
   if (pieces->front().points.front().t > 1e-12 || pieces->back().points.back().t < 1.0 - 1e-12) return std::nullopt;
   std::vector<Run> runs;
@@ -168,10 +164,10 @@ std::optional<TopoDS_Edge> alongLineEdge(const Handle(Geom_Surface) & surface, d
   return TopoDS::Edge(reversed->Reversed());
 }
 
-}  // namespace
-
-std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
-                                                    const RuledLines& lines, double tolerance) {
+/// The section (ruledSectionBetweenSkins), throwing FoldedSkin or OCCT's failures where the
+/// direct way does not apply.
+std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
+                                     const RuledLines& lines, double tolerance) {
   const auto upper = crossingOf(upperSkin, lines, tolerance);
   const auto lower = crossingOf(lowerSkin, lines, tolerance);
   if (!upper || !lower) return std::nullopt;
@@ -204,6 +200,19 @@ std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSki
   BRepBuilderAPI_MakeFace face(surface, wire.Wire(), true);
   if (!face.IsDone() || !BRepCheck_Analyzer(face.Face()).IsValid()) return std::nullopt;
   return face.Face();
+}
+
+}  // namespace
+
+std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
+                                                    const RuledLines& lines, double tolerance) {
+  try {
+    return sectionOf(upperSkin, lowerSkin, lines, tolerance);
+  } catch (const FoldedSkin&) {
+    return std::nullopt;
+  } catch (const Standard_Failure&) {  // a curve or face OCCT cannot make: the Boolean way then
+    return std::nullopt;
+  }
 }
 
 }  // namespace airshape::structure

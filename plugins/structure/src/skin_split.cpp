@@ -16,6 +16,7 @@
 #include <Geom2d_BSplineCurve.hxx>
 #include <IntTools_Context.hxx>
 #include <NCollection_DataMap.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -207,18 +208,13 @@ std::optional<std::vector<TopoDS_Face>> splitFaces(const std::vector<TopoDS_Face
   return result;
 }
 
-}  // namespace
-
-std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
-                                                       double tolerance) {
+/// The skin's faces inside the loop (skinInsideLoop), throwing FoldedSkin or OCCT's failures
+/// where the direct way does not apply.
+std::optional<std::vector<TopoDS_Face>> facesInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                        double tolerance) {
   const auto patches = skinPatches(skin);
   if (!patches) return std::nullopt;
-  std::optional<std::vector<Drawn>> drawn;
-  try {
-    drawn = crossingsOf(patches->patches, loop, tolerance);
-  } catch (const FoldedSkin&) {
-    return std::nullopt;
-  }
+  const auto drawn = crossingsOf(patches->patches, loop, tolerance);
   if (!drawn) return std::nullopt;
   const auto split = splitFaces(patches->faces, patches->patches, *drawn, skin, tolerance);
   if (!split) return std::nullopt;
@@ -233,6 +229,19 @@ std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin,
     if (prism.State() == TopAbs_IN) inside.push_back(face);
   }
   return inside;
+}
+
+}  // namespace
+
+std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                       double tolerance) {
+  try {
+    return facesInsideLoop(skin, loop, tolerance);
+  } catch (const FoldedSkin&) {
+    return std::nullopt;
+  } catch (const Standard_Failure&) {  // a curve or face OCCT cannot make: the Boolean way then
+    return std::nullopt;
+  }
 }
 
 }  // namespace airshape::structure
