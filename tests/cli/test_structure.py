@@ -333,6 +333,24 @@ def test_cells_are_skin_patches_in_closed_form(tmp_path):
     assert "eta given as a bare number" in result.stderr
 
 
+def test_cells_reaching_the_edges_of_their_skin(tmp_path):
+    # Cells whose borders lie on the skin's own edges (the root, the tip, the sharp trailing edge
+    # at ξ 1) or are carried beyond it follow those edges: the upper skin aft of ξ 0.6 over the
+    # whole span, and the lower skin between ξ 0.2 and 0.6 from the root to mid span.
+    positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
+    aft = cell("Aft", 0.0, 1.0, "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>", "<xsi1>1</xsi1><xsi2>1</xsi2>")
+    lower = cell("Lower", 0.0, 0.5, "<xsi1>0.2</xsi1><xsi2>0.2</xsi2>", "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")
+    shells = cells(aft) + f"<lowerShell><skin/><cells>{lower}</cells></lowerShell>"
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"), shells)
+    area, box, lower_area, lower_box = (a["ok"] for a in ask(
+        path, {"op": "component_surface_area", "uid": "Aft"}, {"op": "bounding_box", "uid": "Aft"},
+        {"op": "component_surface_area", "uid": "Lower"}, {"op": "bounding_box", "uid": "Lower"}))
+    assert area == pytest.approx(5.0 * skin_length(0.6, 1.0), rel=1e-6)
+    assert box["min"][:2] == pytest.approx([2.2, 0.0], abs=1e-6) and box["max"][:2] == pytest.approx([3.0, 5.0], abs=1e-6)
+    assert lower_area == pytest.approx(2.5 * skin_length(0.2, 0.6), rel=1e-6)
+    assert lower_box["max"][1] == pytest.approx(2.5, abs=1e-6) and lower_box["max"][2] < 0
+
+
 def simpson(f, a, b, steps=200):
     h = (b - a) / steps
     return h / 3 * sum((1 if k in (0, steps) else 4 if k % 2 else 2) * f(a + k * h) for k in range(steps + 1))
