@@ -9,10 +9,12 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <TColStd_Array1OfInteger.hxx>
@@ -100,6 +102,12 @@ Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b) {
   TColStd_Array1OfInteger multiplicities(1, 2);
   multiplicities.Init(2);
   return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
+}
+
+TopoDS_Vertex vertexWithin(const gp_Pnt& point, double tolerance) {
+  TopoDS_Vertex vertex = BRepBuilderAPI_MakeVertex(point).Vertex();
+  BRep_Builder().UpdateVertex(vertex, tolerance);
+  return vertex;
 }
 
 Handle(Geom_BSplineSurface)

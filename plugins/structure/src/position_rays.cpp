@@ -83,25 +83,36 @@ PositionRay StringerPath::rayAt(double x) const {
   return ray;
 }
 
-std::vector<TopoDS_Face> StringerPath::surface(const FuselageFrame& fuselage, double fromX, double toX,
-                                               double length) const {
+std::vector<RaySpan> StringerPath::spans(double fromX, double toX) const {
   // The stations where the surface bends: the ends and the positions between them.
   std::vector<double> stations{fromX};
   for (const PositionRay& position : positions_)
     if (position.origin.X() > fromX && position.origin.X() < toX) stations.push_back(position.origin.X());
   stations.push_back(toX);
-  std::vector<TopoDS_Face> faces;
+  std::vector<RaySpan> spans;
   for (std::size_t k = 1; k < stations.size(); ++k)
-    if (stations[k] > stations[k - 1])
-      faces.push_back(ruledBetween(fuselage, rayAt(stations[k - 1]), rayAt(stations[k]), length));
+    if (stations[k] > stations[k - 1]) spans.emplace_back(rayAt(stations[k - 1]), rayAt(stations[k]));
+  return spans;
+}
+
+std::vector<TopoDS_Face> StringerPath::surface(const FuselageFrame& fuselage, double fromX, double toX,
+                                               double length) const {
+  std::vector<TopoDS_Face> faces;
+  for (const auto& [from, to] : spans(fromX, toX)) faces.push_back(ruledBetween(fuselage, from, to, length));
   return faces;
+}
+
+std::vector<RaySpan> frameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  std::vector<RaySpan> spans;
+  for (std::size_t k = 1; k < frame.framePosition.size(); ++k)
+    spans.emplace_back(PositionRay::of(fuselage, frame.framePosition[k - 1]),
+                       PositionRay::of(fuselage, frame.framePosition[k]));
+  return spans;
 }
 
 std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema::FrameType& frame, double length) {
   std::vector<TopoDS_Face> faces;
-  for (std::size_t k = 1; k < frame.framePosition.size(); ++k)
-    faces.push_back(ruledBetween(fuselage, PositionRay::of(fuselage, frame.framePosition[k - 1]),
-                                 PositionRay::of(fuselage, frame.framePosition[k]), length));
+  for (const auto& [from, to] : frameSpans(fuselage, frame)) faces.push_back(ruledBetween(fuselage, from, to, length));
   return faces;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <TopoDS_Face.hxx>
@@ -27,6 +28,9 @@ struct PositionRay {
   static PositionRay between(const PositionRay& a, const PositionRay& b, double share);
 };
 
+/// Two rays the surface between which a stringer or frame sweeps.
+using RaySpan = std::pair<PositionRay, PositionRay>;
+
 /// The ruled surface between two rays, `length` long (fuselage coordinates), in the global frame.
 TopoDS_Face ruledBetween(const FuselageFrame& fuselage, const PositionRay& a, const PositionRay& b, double length);
 
@@ -41,6 +45,9 @@ class StringerPath {
 
   /// The ray at station x (fuselage coordinates).
   PositionRay rayAt(double x) const;
+  /// The pairs of rays the surface from station `fromX` to `toX` runs between: the ends and
+  /// the positions between them.
+  std::vector<RaySpan> spans(double fromX, double toX) const;
   /// The swept surface from station `fromX` to `toX`, in the global frame, its rays `length`
   /// long (fuselage coordinates).
   std::vector<TopoDS_Face> surface(const FuselageFrame& fuselage, double fromX, double toX, double length) const;
@@ -55,5 +62,8 @@ class StringerPath {
 /// consecutive positions, in the order written (a fan in the plane x = positionX when all
 /// positions share it, corrugated for a riffled frame), in the global frame.
 std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema::FrameType& frame, double length);
+
+/// The pairs of rays of consecutive positions of a frame, that frameSweep runs between.
+std::vector<RaySpan> frameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame);
 
 }  // namespace airshape::structure

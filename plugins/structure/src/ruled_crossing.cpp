@@ -44,7 +44,10 @@ class Side {
   /// it outside the patch's bounds.
   std::optional<Hit> on(std::size_t patch, double lambda, const PatchPoint& near) const {
     PatchPoint point = near;
-    if (!meetLine(patches_[patch], lines_.base(lambda), lines_.direction(lambda), point)) return std::nullopt;
+    const gp_Pnt base = lines_.base(lambda);
+    const gp_Vec direction = lines_.direction(lambda);
+    if (!meetLine(patches_[patch], base, direction, point)) return std::nullopt;
+    if (lines_.rays && gp_Vec(base, point.point).Dot(direction) < 0.0) return std::nullopt;
     point.t = lambda;
     return Hit{patch, point};
   }

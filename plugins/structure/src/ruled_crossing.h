@@ -17,6 +17,9 @@ namespace airshape::structure {
 struct RuledLines {
   gp_Pnt from, to;
   gp_Vec fromDirection, toDirection;
+  /// Whether only the half-lines from the bases along their directions count (s ≥ 0): rays
+  /// from inside a fuselage, which meet its skin once.
+  bool rays = false;
 
   gp_Pnt base(double t) const { return gp_Pnt(from.XYZ() + t * (to.XYZ() - from.XYZ())); }
   gp_Vec direction(double t) const { return fromDirection + t * (toDirection - fromDirection); }

@@ -6,11 +6,9 @@
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepLib.hxx>
-#include <BRep_Builder.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -21,6 +19,8 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
 #include <TopoDS.hxx>
+
+#include "airshape/geometry/brep_building.h"
 
 namespace airshape::structure {
 
@@ -120,12 +120,6 @@ Handle(Geom_BSplineSurface) surfaceOf(const RuledLines& lines, double reach) {
   return new Geom_BSplineSurface(poles, uKnots, vKnots, multiplicities, multiplicities, 1, 1);
 }
 
-TopoDS_Vertex vertexAt(const gp_Pnt& point, double tolerance) {
-  TopoDS_Vertex vertex = BRepBuilderAPI_MakeVertex(point).Vertex();
-  BRep_Builder().UpdateVertex(vertex, tolerance);
-  return vertex;
-}
-
 /// The edge on the surface along a curve of its parameters between two vertices.
 std::optional<TopoDS_Edge> edgeOn(const Handle(Geom_Surface) & surface, const Handle(Geom2d_Curve) & curve,
                                   const TopoDS_Vertex& from, const TopoDS_Vertex& to, double first, double last) {
@@ -144,7 +138,8 @@ std::optional<std::vector<TopoDS_Edge>> crossingEdges(const Handle(Geom_Surface)
   TopoDS_Vertex from = first;
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const LinePoint& end = runs[k].points.back();
-    const TopoDS_Vertex to = k + 1 == runs.size() ? last : vertexAt(surface->Value(end.t, end.s), tolerance);
+    const TopoDS_Vertex to =
+        k + 1 == runs.size() ? last : geometry::vertexWithin(surface->Value(end.t, end.s), tolerance);
     const auto edge = edgeOn(surface, runs[k].curve, from, to, runs[k].points.front().t, end.t);
     if (!edge) return std::nullopt;
     edges.push_back(*edge);
@@ -180,7 +175,7 @@ std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS
   const double vertexTolerance = 10.0 * tolerance;
   const LinePoint lowerStart = lower->front().points.front(), lowerEnd = lower->back().points.back();
   const LinePoint upperStart = upper->front().points.front(), upperEnd = upper->back().points.back();
-  auto vertexOf = [&](const LinePoint& p) { return vertexAt(surface->Value(p.t, p.s), vertexTolerance); };
+  auto vertexOf = [&](const LinePoint& p) { return geometry::vertexWithin(surface->Value(p.t, p.s), vertexTolerance); };
   const TopoDS_Vertex lowerFirst = vertexOf(lowerStart), lowerLast = vertexOf(lowerEnd);
   const TopoDS_Vertex upperFirst = vertexOf(upperStart), upperLast = vertexOf(upperEnd);
   const auto lowerEdges = crossingEdges(surface, *lower, lowerFirst, lowerLast, vertexTolerance);

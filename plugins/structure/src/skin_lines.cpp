@@ -3,20 +3,28 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepLib.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Precision.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
+#include <optional>
 
 #include "airshape/error.h"
+#include "airshape/geometry/brep_building.h"
 #include "compounds.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "position_rays.h"
+#include "ruled_crossing.h"
+#include "skin_section.h"
 
 namespace airshape::structure {
 
@@ -66,6 +74,67 @@ std::vector<SkinEdge> onSkin(const FuselageFrame& fuselage, const std::vector<To
   return pieces;
 }
 
+/// Whether crossing pieces run without a gap from the line at t = 0 to the line at t = 1.
+bool covers(const std::vector<CrossingPiece>& pieces) {
+  if (pieces.empty() || pieces.front().points.front().t > 1e-12 || pieces.back().points.back().t < 1.0 - 1e-12)
+    return false;
+  for (std::size_t k = 1; k < pieces.size(); ++k)
+    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > 1e-9) return false;
+  return true;
+}
+
+/// The line where the rays of the spans meet the skin, made straight from the skin (each ray
+/// met with its faces by Newton's method, ruled_crossing.h): edges whose curves lie on the skin
+/// faces, consecutive edges sharing their vertices. Nothing where the skin is not what that
+/// handles (trimmed faces, a ray that misses the skin or meets it twice); the caller then
+/// sections the skin.
+std::optional<std::vector<SkinEdge>> straightFromSkin(const FuselageFrame& fuselage,
+                                                      const std::vector<RaySpan>& spans) {
+  const auto patches = skinPatches(compoundOf(fuselage.skinFaces()));
+  if (!patches) return std::nullopt;
+  const double tolerance = kTraceTolerance * fuselage.reach();
+  std::vector<SkinEdge> edges;
+  TopoDS_Vertex previous;
+  try {
+    for (const auto& [a, b] : spans) {
+      const gp_Pnt from = fuselage.toGlobal(a.origin), to = fuselage.toGlobal(b.origin);
+      const RuledLines lines{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
+                             gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
+      const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
+      if (!pieces || !covers(*pieces)) return std::nullopt;
+      for (const CrossingPiece& piece : *pieces) {
+        const Patch& patch = patches->patches[piece.patch];
+        const gp_Pnt2d start = piece.curve->Value(piece.points.front().t);
+        const bool joined = !previous.IsNull() && BRep_Tool::Pnt(previous).Distance(
+                                                      patch.surface->Value(start.X(), start.Y())) <= 10.0 * tolerance;
+        TopoDS_Vertex first =
+            joined ? previous : geometry::vertexWithin(patch.surface->Value(start.X(), start.Y()), 10.0 * tolerance);
+        const gp_Pnt2d end = piece.curve->Value(piece.points.back().t);
+        const TopoDS_Vertex last = geometry::vertexWithin(patch.surface->Value(end.X(), end.Y()), 10.0 * tolerance);
+        BRepBuilderAPI_MakeEdge edge(piece.curve, patch.surface, first, last, piece.points.front().t,
+                                     piece.points.back().t);
+        if (!edge.IsDone()) return std::nullopt;
+        TopoDS_Edge made = edge.Edge();
+        if (!BRepLib::BuildCurve3d(made)) return std::nullopt;
+        edges.push_back({made, patches->faces[piece.patch]});
+        previous = last;
+      }
+    }
+  } catch (const FoldedSkin&) {
+    return std::nullopt;
+  } catch (const Standard_Failure&) {
+    return std::nullopt;
+  }
+  return edges;
+}
+
+/// The line where the rays of the spans meet the skin: straight from the skin, or by a section.
+std::vector<SkinEdge> linesOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans,
+                                  const std::vector<TopoDS_Face>& sweep, const std::string& where) {
+  if (auto edges = straightFromSkin(fuselage, spans)) return *edges;
+  return onSkin(fuselage, sweep, where);
+}
+
 NamedShape linesOf(const std::vector<SkinEdge>& pieces) {
   std::vector<TopoDS_Edge> edges;
   for (const SkinEdge& piece : pieces) edges.push_back(piece.edge);
@@ -80,7 +149,8 @@ std::vector<SkinEdge> frameOnSkin(const Configuration& configuration, const tank
   const FuselageFrame fuselage =
       FuselageFrame::ofHost(configuration, frame.hostUid, frame.fuselage, frame.vesselPlacement);
   if (frame.node->framePosition.size() > 1)
-    return onSkin(fuselage, frameSweep(fuselage, *frame.node, fuselage.localReach()), frame.node->xpath);
+    return linesOnSkin(fuselage, frameSpans(fuselage, *frame.node),
+                       frameSweep(fuselage, *frame.node, fuselage.localReach()), frame.node->xpath);
   const gp_Pln station = fuselage.station(*frame.node);
   const double reach = fuselage.reach();
   return onSkin(fuselage, {BRepBuilderAPI_MakeFace(station, -reach, reach, -reach, reach).Face()}, frame.node->xpath);
@@ -95,8 +165,8 @@ std::vector<SkinEdge> stringerOnSkin(const Configuration& configuration, const t
   if (path.lastX() <= path.firstX())
     throw Error(ErrorCode::InvalidModel, "the stringer's positions lie at one station: it has no length", {},
                 stringer.node->xpath);
-  return onSkin(fuselage, path.surface(fuselage, path.firstX(), path.lastX(), fuselage.localReach()),
-                stringer.node->xpath);
+  return linesOnSkin(fuselage, path.spans(path.firstX(), path.lastX()),
+                     path.surface(fuselage, path.firstX(), path.lastX(), fuselage.localReach()), stringer.node->xpath);
 }
 
 NamedShape frameLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {

@@ -7,7 +7,6 @@
 #include <BOPTools_AlgoTools.hxx>
 #include <BOPTools_AlgoTools3D.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
@@ -25,6 +24,7 @@
 #include <TopoDS.hxx>
 #include <gp_Pnt2d.hxx>
 
+#include "airshape/geometry/brep_building.h"
 #include "bspline_patch.h"
 #include "ruled_crossing.h"
 
@@ -88,8 +88,7 @@ class VertexPool {
         isNew = made_.Contains(vertex);
         return vertex;
       }
-    TopoDS_Vertex vertex = BRepBuilderAPI_MakeVertex(point).Vertex();
-    BRep_Builder().UpdateVertex(vertex, tolerance_);
+    const TopoDS_Vertex vertex = geometry::vertexWithin(point, tolerance_);
     known_.push_back(vertex);
     made_.Add(vertex);
     isNew = true;

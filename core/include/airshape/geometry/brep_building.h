@@ -8,6 +8,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
 #include "airshape/error.h"
@@ -27,6 +28,10 @@ Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, c
 
 /// The straight segment from a to b as a degree-1 B-spline over [0, 1].
 Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b);
+
+/// A vertex at a point whose tolerance is `tolerance`: the ends of the curves that meet there
+/// lie within it.
+TopoDS_Vertex vertexWithin(const gp_Pnt& point, double tolerance);
 
 /// The ruled surface joining the points of equal parameter of two curves over the same
 /// range: u the curves' parameter, v from 0 on the first to 1 on the second.
