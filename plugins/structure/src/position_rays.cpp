@@ -110,6 +110,18 @@ std::vector<RaySpan> frameSpans(const FuselageFrame& fuselage, const schema::Fra
   return spans;
 }
 
+std::vector<RaySpan> ringSpans(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  const schema::StringerFramePositionType& position = frame.framePosition[0];
+  const gp_Pnt origin(fuselage.stationX(frame), position.referenceY, position.referenceZ);
+  auto rayAt = [&](int quarter) {
+    const double angle = quarter * M_PI / 2.0;
+    return PositionRay{origin, gp_Vec(0.0, -std::sin(angle), std::cos(angle))};
+  };
+  std::vector<RaySpan> spans;
+  for (int quarter = 0; quarter < 4; ++quarter) spans.emplace_back(rayAt(quarter), rayAt(quarter + 1));
+  return spans;
+}
+
 std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema::FrameType& frame, double length) {
   std::vector<TopoDS_Face> faces;
   for (const auto& [from, to] : frameSpans(fuselage, frame)) faces.push_back(ruledBetween(fuselage, from, to, length));

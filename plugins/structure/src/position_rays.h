@@ -66,4 +66,8 @@ std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema:
 /// The pairs of rays of consecutive positions of a frame, that frameSweep runs between.
 std::vector<RaySpan> frameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame);
 
+/// The rays all round a frame of one position in its station plane, from its reference point:
+/// four quarter turns.
+std::vector<RaySpan> ringSpans(const FuselageFrame& fuselage, const schema::FrameType& frame);
+
 }  // namespace airshape::structure

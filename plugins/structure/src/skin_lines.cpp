@@ -153,7 +153,8 @@ std::vector<SkinEdge> frameOnSkin(const Configuration& configuration, const tank
                        frameSweep(fuselage, *frame.node, fuselage.localReach()), frame.node->xpath);
   const gp_Pln station = fuselage.station(*frame.node);
   const double reach = fuselage.reach();
-  return onSkin(fuselage, {BRepBuilderAPI_MakeFace(station, -reach, reach, -reach, reach).Face()}, frame.node->xpath);
+  return linesOnSkin(fuselage, ringSpans(fuselage, *frame.node),
+                     {BRepBuilderAPI_MakeFace(station, -reach, reach, -reach, reach).Face()}, frame.node->xpath);
 }
 
 std::vector<SkinEdge> stringerOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
