@@ -1,6 +1,8 @@
 #include "cross_beam.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <BRepAlgoAPI_Section.hxx>
@@ -8,8 +10,10 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Lin.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -21,11 +25,37 @@ namespace airshape::structure {
 
 namespace {
 
-/// The cross beam's axis in the global frame.
+/// The parts inside the fuselage of the line through `through` along `along`: between
+/// consecutive points where it crosses the skin; nothing when it does not cross it an even
+/// number of times (a line touching the skin), which the caller then sections.
+std::optional<TopoDS_Shape> insideAlong(const FuselageFrame& fuselage, const gp_Pnt& through, const gp_Dir& along) {
+  IntCurvesFace_ShapeIntersector intersector;
+  const double tolerance = 1e-9 * fuselage.reach();
+  intersector.Load(fuselage.solid(), tolerance);
+  intersector.Perform(gp_Lin(through, along), -fuselage.reach(), fuselage.reach());
+  if (!intersector.IsDone()) return std::nullopt;
+  std::vector<double> crossings;
+  for (int i = 1; i <= intersector.NbPnt(); ++i) crossings.push_back(intersector.WParameter(i));
+  std::sort(crossings.begin(), crossings.end());
+  // A crossing on an edge between two skin faces is found on both.
+  crossings.erase(std::unique(crossings.begin(), crossings.end(),
+                              [&](double a, double b) { return std::abs(a - b) <= 10.0 * tolerance; }),
+                  crossings.end());
+  if (crossings.empty() || crossings.size() % 2 != 0) return std::nullopt;
+  std::vector<TopoDS_Shape> pieces;
+  for (std::size_t k = 0; k < crossings.size(); k += 2)
+    pieces.push_back(BRepBuilderAPI_MakeEdge(gp_Lin(through, along), crossings[k], crossings[k + 1]).Edge());
+  return compoundOf(pieces);
+}
+
+/// The cross beam's axis in the global frame: where its height's level meets its frame's
+/// station plane, inside the fuselage.
 TopoDS_Shape beamAxis(const Configuration& configuration,
                       const FuselageElement<schema::CrossBeamAssemblyPositionType>& beam) {
   const schema::FrameType& frame = frameNamed(*beam.structure, beam.node->frameUID, beam.node->xpath + "/frameUID");
   const FuselageFrame fuselage(configuration, *beam.fuselage);
+  const gp_Pnt through = fuselage.toGlobal(gp_Pnt(fuselage.stationX(frame), 0.0, beam.node->positionZ));
+  if (const auto axis = insideAlong(fuselage, through, fuselage.toGlobal(gp_Dir(0, 1, 0)))) return *axis;
   const gp_Pln station = fuselage.station(frame);
   const TopoDS_Compound section = compoundOf(fuselage.crossSection(station.Location(), station.Axis().Direction()));
   const gp_Pln level(fuselage.toGlobal(gp_Pnt(0, 0, beam.node->positionZ)), fuselage.toGlobal(gp_Dir(0, 0, 1)));
