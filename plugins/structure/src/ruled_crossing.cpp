@@ -27,6 +27,21 @@ PatchPoint ontoBound(const Patch& patch, PatchPoint point, double tolerance) {
   return point;
 }
 
+Handle(Geom2d_BSplineCurve)
+    curveThroughPoints(const std::vector<gp_Pnt2d>& points, const std::vector<double>& parameters) {
+  const int n = static_cast<int>(points.size());
+  Handle(TColgp_HArray1OfPnt2d) held = new TColgp_HArray1OfPnt2d(1, n);
+  Handle(TColStd_HArray1OfReal) at = new TColStd_HArray1OfReal(1, n);
+  for (int i = 1; i <= n; ++i) {
+    held->SetValue(i, points[static_cast<std::size_t>(i - 1)]);
+    at->SetValue(i, parameters[static_cast<std::size_t>(i - 1)]);
+  }
+  Geom2dAPI_Interpolate interpolation(held, at, false, 1e-15);
+  interpolation.Perform();
+  if (!interpolation.IsDone()) return nullptr;
+  return interpolation.Curve();
+}
+
 namespace {
 
 /// Where a line of a side meets the skin: on which patch, at which of its parameters.
@@ -184,18 +199,13 @@ std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
 
 /// The curve through a piece's points in its patch's parameters, by the side's parameter.
 Handle(Geom2d_BSplineCurve) curveThrough(const Piece& piece) {
-  const int n = static_cast<int>(piece.points.size());
-  Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n);
-  Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, n);
-  for (int i = 0; i < n; ++i) {
-    const PatchPoint& point = piece.points[static_cast<std::size_t>(i)];
-    points->SetValue(i + 1, gp_Pnt2d(point.u, point.v));
-    parameters->SetValue(i + 1, point.t);
+  std::vector<gp_Pnt2d> points;
+  std::vector<double> parameters;
+  for (const PatchPoint& point : piece.points) {
+    points.emplace_back(point.u, point.v);
+    parameters.push_back(point.t);
   }
-  Geom2dAPI_Interpolate interpolation(points, parameters, false, 1e-15);
-  interpolation.Perform();
-  if (!interpolation.IsDone()) return nullptr;
-  return interpolation.Curve();
+  return curveThroughPoints(points, parameters);
 }
 
 /// Adds points halfway between two where the curve strays from the crossing by more than the

@@ -5,6 +5,7 @@
 
 #include <Geom2d_BSplineCurve.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
 #include "bspline_patch.h"
@@ -43,6 +44,11 @@ struct FoldedSkin {};
 /// when a curve cannot be made to follow the crossing; throws FoldedSkin.
 std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const RuledLines& lines,
                                                         double tolerance);
+
+/// The cubic through points of a plane (a patch's or a surface's parameters) at ascending
+/// parameters, as OCCT interpolates them; null when it cannot be made.
+Handle(Geom2d_BSplineCurve)
+    curveThroughPoints(const std::vector<gp_Pnt2d>& points, const std::vector<double>& parameters);
 
 /// The point moved onto a patch's bound where it lies within the tolerance of it, so that a
 /// curve ending there ends on the face's edge.

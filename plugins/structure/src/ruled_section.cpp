@@ -9,15 +9,12 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepLib.hxx>
-#include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
-#include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
-#include <TColgp_HArray1OfPnt2d.hxx>
 #include <TopoDS.hxx>
 
 #include "airshape/geometry/brep_building.h"
@@ -46,18 +43,13 @@ double alongLine(const RuledLines& lines, double t, const gp_Pnt& point) {
 
 /// The curve through a run's points in the surface's parameters, by t.
 Handle(Geom2d_BSplineCurve) curveThrough(const std::vector<LinePoint>& run) {
-  const int n = static_cast<int>(run.size());
-  Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n);
-  Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, n);
-  for (int i = 0; i < n; ++i) {
-    const LinePoint& point = run[static_cast<std::size_t>(i)];
-    points->SetValue(i + 1, gp_Pnt2d(point.t, point.s));
-    parameters->SetValue(i + 1, point.t);
+  std::vector<gp_Pnt2d> points;
+  std::vector<double> parameters;
+  for (const LinePoint& point : run) {
+    points.emplace_back(point.t, point.s);
+    parameters.push_back(point.t);
   }
-  Geom2dAPI_Interpolate interpolation(points, parameters, false, 1e-15);
-  interpolation.Perform();
-  if (!interpolation.IsDone()) return nullptr;
-  return interpolation.Curve();
+  return curveThroughPoints(points, parameters);
 }
 
 /// The run of a crossing piece: the curve through its points, with points added halfway
