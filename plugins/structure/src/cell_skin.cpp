@@ -201,7 +201,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   // The skin split along where the prism's sides meet it (no surfaces intersected), or, where
   // that does not apply, cut by the prism in a Boolean common.
   const TopoDS_Shape skin = frame.skin(cell.upper);
-  RuledLoop ruled{{}, {}, prism.solid};
+  RuledLoop ruled{{}, {}, prism.solid, false};
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));
     ruled.directions.push_back(frame.toGlobal(normals[k]));

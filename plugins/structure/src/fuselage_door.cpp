@@ -17,10 +17,13 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "compounds.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
 #include "position_rays.h"
+#include "skin_section.h"
+#include "skin_split.h"
 
 namespace airshape::structure {
 
@@ -78,25 +81,31 @@ double frameStation(const FuselageFrame& fuselage, const FuselageElement<schema:
   return fuselage.stationX(frameNamed(*door.structure, frameUid, door.node->xpath + "/" + field));
 }
 
-}  // namespace
+/// The loop around a door on the skin: along the first stringer's rays from the start to the end
+/// station, across the end frame's plane to the last stringer, back along it and across the
+/// start frame's plane (the rays between two stringers' the shorter way round), global frame.
+RuledLoop doorLoop(const FuselageFrame& fuselage, const StringerPath& first, const StringerPath& last, double fromX,
+                   double toX) {
+  RuledLoop loop;
+  loop.rays = true;
+  auto add = [&](const PositionRay& ray) {
+    const gp_Pnt origin = fuselage.toGlobal(ray.origin);
+    loop.points.push_back(origin);
+    loop.directions.push_back(gp_Vec(origin, fuselage.toGlobal(ray.origin.Translated(ray.direction))));
+  };
+  for (const auto& span : first.spans(fromX, toX)) add(span.first);
+  add(first.rayAt(toX));
+  const std::vector<RaySpan> back = last.spans(fromX, toX);
+  add(last.rayAt(toX));
+  for (auto span = back.rbegin(); span != back.rend(); ++span) add(span->first);
+  return loop;
+}
 
-NamedShape fuselageDoor(const Configuration& configuration, const std::string& uid) {
-  const auto door = doorNamed(configuration, uid);
-  const schema::DoorAssemblyPositionType& node = *door.node;
-  const FuselageFrame fuselage(configuration, *door.fuselage);
-  const double startX = frameStation(fuselage, door, node.startFrameUID, "startFrameUID");
-  const double endX = frameStation(fuselage, door, node.endFrameUID, "endFrameUID");
-  const double fromX = std::min(startX, endX), toX = std::max(startX, endX);
-  if (toX - fromX <= 1e-9 * std::max(1.0, std::abs(toX)))
-    throw Error(ErrorCode::InvalidModel, "the door's start and end frames lie at one station", {},
-                node.xpath + "/endFrameUID");
-  const StringerPath first(fuselage,
-                           stringerNamed(*door.structure, node.startStringerUID, node.xpath + "/startStringerUID"));
-  const StringerPath last(fuselage,
-                          stringerNamed(*door.structure, node.endStringerUID, node.xpath + "/endStringerUID"));
-
-  // The skin split by the two frame planes and the two stringers' swept surfaces, which run a
-  // little beyond the frames so that the cuts meet.
+/// The skin faces that reach between the stations split by the two frame planes and the two
+/// stringers' swept surfaces, which run a little beyond the frames so that the cuts meet.
+std::vector<TopoDS_Face> splitByFramesAndStringers(const FuselageFrame& fuselage, const StringerPath& first,
+                                                   const StringerPath& last, double fromX, double toX,
+                                                   const std::string& where) {
   TopTools_ListOfShape arguments, tools;
   for (const TopoDS_Face& face : fuselage.skinFaces())
     if (reachesStations(fuselage, face, fromX, toX)) arguments.Append(face);
@@ -117,15 +126,43 @@ NamedShape fuselageDoor(const Configuration& configuration, const std::string& u
   splitter.Build();
   if (!splitter.IsDone() || splitter.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the fuselage's skin cannot be cut at the door's frames and stringers", {},
-                node.xpath);
+                where);
+  std::vector<TopoDS_Face> faces;
+  for (TopExp_Explorer face(splitter.Shape(), TopAbs_FACE); face.More(); face.Next())
+    faces.push_back(TopoDS::Face(face.Current()));
+  return faces;
+}
 
+}  // namespace
+
+NamedShape fuselageDoor(const Configuration& configuration, const std::string& uid) {
+  const auto door = doorNamed(configuration, uid);
+  const schema::DoorAssemblyPositionType& node = *door.node;
+  const FuselageFrame fuselage(configuration, *door.fuselage);
+  const double startX = frameStation(fuselage, door, node.startFrameUID, "startFrameUID");
+  const double endX = frameStation(fuselage, door, node.endFrameUID, "endFrameUID");
+  const double fromX = std::min(startX, endX), toX = std::max(startX, endX);
+  if (toX - fromX <= 1e-9 * std::max(1.0, std::abs(toX)))
+    throw Error(ErrorCode::InvalidModel, "the door's start and end frames lie at one station", {},
+                node.xpath + "/endFrameUID");
+  const StringerPath first(fuselage,
+                           stringerNamed(*door.structure, node.startStringerUID, node.xpath + "/startStringerUID"));
+  const StringerPath last(fuselage,
+                          stringerNamed(*door.structure, node.endStringerUID, node.xpath + "/endStringerUID"));
+
+  std::vector<TopoDS_Face> split;
+  if (auto direct = skinSplitByLoop(compoundOf(fuselage.skinFaces()), doorLoop(fuselage, first, last, fromX, toX),
+                                    kTraceTolerance * fuselage.reach()))
+    split = *direct;
+  else
+    split = splitByFramesAndStringers(fuselage, first, last, fromX, toX, node.xpath);
   std::vector<TopoDS_Face> pieces;
-  for (TopExp_Explorer face(splitter.Shape(), TopAbs_FACE); face.More(); face.Next()) {
+  for (const TopoDS_Face& face : split) {
     GProp_GProps area;
-    BRepGProp::SurfaceProperties(face.Current(), area);
+    BRepGProp::SurfaceProperties(face, area);
     const gp_Pnt centre = fuselage.toLocal(area.CentreOfMass());
     if (centre.X() > fromX && centre.X() < toX && betweenStringers(fuselage, first, last, centre, node.xpath))
-      pieces.push_back(TopoDS::Face(face.Current()));
+      pieces.push_back(face);
   }
   NamedFaces shape;
   shape.add(uid + "/door", pieces);

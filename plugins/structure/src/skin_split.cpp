@@ -58,7 +58,7 @@ std::optional<std::vector<Drawn>> crossingsOf(const std::vector<Patch>& patches,
   std::vector<Drawn> drawn;
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t next = (k + 1) % n;
-    const RuledLines side{loop.points[k], loop.points[next], loop.directions[k], loop.directions[next]};
+    const RuledLines side{loop.points[k], loop.points[next], loop.directions[k], loop.directions[next], loop.rays};
     const auto pieces = ruledCrossing(patches, side, tolerance);
     if (!pieces) return std::nullopt;
     for (const CrossingPiece& piece : *pieces) {
@@ -207,38 +207,46 @@ std::optional<std::vector<TopoDS_Face>> splitFaces(const std::vector<TopoDS_Face
   return result;
 }
 
-/// The skin's faces inside the loop (skinInsideLoop), throwing FoldedSkin or OCCT's failures
-/// where the direct way does not apply.
-std::optional<std::vector<TopoDS_Face>> facesInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
-                                                        double tolerance) {
+/// The split skin (skinSplitByLoop), throwing FoldedSkin or OCCT's failures where the direct
+/// way does not apply.
+std::optional<std::vector<TopoDS_Face>> splitByLoop(const TopoDS_Shape& skin, const RuledLoop& loop, double tolerance) {
   const auto patches = skinPatches(skin);
   if (!patches) return std::nullopt;
   const auto drawn = crossingsOf(patches->patches, loop, tolerance);
   if (!drawn) return std::nullopt;
-  const auto split = splitFaces(patches->faces, patches->patches, *drawn, skin, tolerance);
-  if (!split) return std::nullopt;
-  const Handle(IntTools_Context) context = new IntTools_Context;
-  BRepClass3d_SolidClassifier prism(loop.prism);
-  std::vector<TopoDS_Face> inside;
-  for (const TopoDS_Face& face : *split) {
-    gp_Pnt point;
-    gp_Pnt2d uv;
-    if (BOPTools_AlgoTools3D::PointInFace(face, point, uv, context) != 0) return std::nullopt;
-    prism.Perform(point, tolerance);
-    if (prism.State() == TopAbs_IN) inside.push_back(face);
-  }
-  return inside;
+  return splitFaces(patches->faces, patches->patches, *drawn, skin, tolerance);
 }
 
 }  // namespace
 
-std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
-                                                       double tolerance) {
+std::optional<std::vector<TopoDS_Face>> skinSplitByLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                        double tolerance) {
   try {
-    return facesInsideLoop(skin, loop, tolerance);
+    return splitByLoop(skin, loop, tolerance);
   } catch (const FoldedSkin&) {
     return std::nullopt;
   } catch (const Standard_Failure&) {  // a curve or face OCCT cannot make: the Boolean way then
+    return std::nullopt;
+  }
+}
+
+std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                       double tolerance) {
+  const auto split = skinSplitByLoop(skin, loop, tolerance);
+  if (!split) return std::nullopt;
+  try {
+    const Handle(IntTools_Context) context = new IntTools_Context;
+    BRepClass3d_SolidClassifier prism(loop.prism);
+    std::vector<TopoDS_Face> inside;
+    for (const TopoDS_Face& face : *split) {
+      gp_Pnt point;
+      gp_Pnt2d uv;
+      if (BOPTools_AlgoTools3D::PointInFace(face, point, uv, context) != 0) return std::nullopt;
+      prism.Perform(point, tolerance);
+      if (prism.State() == TopAbs_IN) inside.push_back(face);
+    }
+    return inside;
+  } catch (const Standard_Failure&) {
     return std::nullopt;
   }
 }
