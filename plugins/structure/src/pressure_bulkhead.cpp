@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepPrimAPI_MakeHalfSpace.hxx>
 
 #include "airshape/configuration.h"
@@ -14,6 +16,7 @@
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
 #include "position_rays.h"
+#include "skin_lines.h"
 
 namespace airshape::structure {
 
@@ -39,6 +42,22 @@ std::vector<std::pair<PositionRay, std::string>> raysAlong(const FuselageFrame& 
   return rays;
 }
 
+/// The fuselage's cross section at a frame's station: the plane face inside the ring drawn on
+/// the skin from the rays all round the frame's first position's reference point (skin_lines.h),
+/// or, where the skin does not allow that, the plane's common with the fuselage's solid.
+std::vector<TopoDS_Face> stationSection(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  const gp_Pln station = fuselage.station(frame);
+  if (const auto ring = raysOnSkin(fuselage, ringSpans(fuselage, frame))) {
+    BRepBuilderAPI_MakeWire wire;
+    for (const SkinEdge& piece : *ring) wire.Add(piece.edge);
+    if (wire.IsDone() && wire.Wire().Closed()) {
+      BRepBuilderAPI_MakeFace face(station, wire.Wire(), true);
+      if (face.IsDone() && BRepCheck_Analyzer(face.Face()).IsValid()) return {face.Face()};
+    }
+  }
+  return fuselage.crossSection(station.Location(), station.Axis().Direction());
+}
+
 /// A bulkhead on a frame of several positions at one station: each position's ray
 /// (position_rays.h) meets the skin; the frame runs along the skin from the first of these points
 /// to the last, and the bulkhead is the part of the cross section that the chord between them
@@ -54,7 +73,7 @@ std::vector<TopoDS_Face> sectionPart(const FuselageFrame& fuselage, const schema
                 frame.xpath);
   const TopoDS_Face cut = BRepBuilderAPI_MakeFace(gp_Pln(hits.front(), gp_Dir(chord.Crossed(gp_Vec(normal)))));
   const TopoDS_Shape side = BRepPrimAPI_MakeHalfSpace(cut, hits[1]).Solid();
-  return facesInside(compoundOf(fuselage.crossSection(hits.front(), normal)), side);
+  return facesInside(compoundOf(stationSection(fuselage, frame)), side);
 }
 
 }  // namespace
@@ -71,8 +90,7 @@ NamedShape pressureBulkhead(const Configuration& configuration, const std::strin
     } else if (frame.framePosition.size() > 1) {
       faces = sectionPart(fuselage, frame);
     } else {
-      const gp_Pln station = fuselage.station(frame);
-      faces = fuselage.crossSection(station.Location(), station.Axis().Direction());
+      faces = stationSection(fuselage, frame);
     }
   } catch (const Error& error) {
     if (!error.cpacsPath().empty()) throw;

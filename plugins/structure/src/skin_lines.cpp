@@ -83,34 +83,51 @@ bool covers(const std::vector<CrossingPiece>& pieces) {
   return true;
 }
 
-/// The line where the rays of the spans meet the skin, made straight from the skin (each ray
-/// met with its faces by Newton's method, ruled_crossing.h): edges whose curves lie on the skin
-/// faces, consecutive edges sharing their vertices. Nothing where the skin is not what that
-/// handles (trimmed faces, a ray that misses the skin or meets it twice); the caller then
-/// sections the skin.
-std::optional<std::vector<SkinEdge>> straightFromSkin(const FuselageFrame& fuselage,
-                                                      const std::vector<RaySpan>& spans) {
+/// The line where the rays of the spans meet the skin: straight from the skin, or by a section.
+std::vector<SkinEdge> linesOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans,
+                                  const std::vector<TopoDS_Face>& sweep, const std::string& where) {
+  if (auto edges = raysOnSkin(fuselage, spans)) return *edges;
+  return onSkin(fuselage, sweep, where);
+}
+
+NamedShape linesOf(const std::vector<SkinEdge>& pieces) {
+  std::vector<TopoDS_Edge> edges;
+  for (const SkinEdge& piece : pieces) edges.push_back(piece.edge);
+  return edgesOf(compoundOf(edges));
+}
+
+}  // namespace
+
+std::optional<std::vector<SkinEdge>> raysOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans) {
   const auto patches = skinPatches(compoundOf(fuselage.skinFaces()));
   if (!patches) return std::nullopt;
   const double tolerance = kTraceTolerance * fuselage.reach();
   std::vector<SkinEdge> edges;
-  TopoDS_Vertex previous;
+  TopoDS_Vertex opening, previous;
   try {
-    for (const auto& [a, b] : spans) {
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+      const auto& [a, b] = spans[k];
       const gp_Pnt from = fuselage.toGlobal(a.origin), to = fuselage.toGlobal(b.origin);
       const RuledLines lines{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
                              gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
       const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
       if (!pieces || !covers(*pieces)) return std::nullopt;
-      for (const CrossingPiece& piece : *pieces) {
+      for (std::size_t p = 0; p < pieces->size(); ++p) {
+        const CrossingPiece& piece = (*pieces)[p];
         const Patch& patch = patches->patches[piece.patch];
-        const gp_Pnt2d start = piece.curve->Value(piece.points.front().t);
-        const bool joined = !previous.IsNull() && BRep_Tool::Pnt(previous).Distance(
-                                                      patch.surface->Value(start.X(), start.Y())) <= 10.0 * tolerance;
-        TopoDS_Vertex first =
-            joined ? previous : geometry::vertexWithin(patch.surface->Value(start.X(), start.Y()), 10.0 * tolerance);
-        const gp_Pnt2d end = piece.curve->Value(piece.points.back().t);
-        const TopoDS_Vertex last = geometry::vertexWithin(patch.surface->Value(end.X(), end.Y()), 10.0 * tolerance);
+        auto pointAt = [&](double t) {
+          const gp_Pnt2d uv = piece.curve->Value(t);
+          return patch.surface->Value(uv.X(), uv.Y());
+        };
+        auto near = [&](const TopoDS_Vertex& vertex, const gp_Pnt& point) {
+          return !vertex.IsNull() && BRep_Tool::Pnt(vertex).Distance(point) <= 10.0 * tolerance;
+        };
+        const gp_Pnt start = pointAt(piece.points.front().t), end = pointAt(piece.points.back().t);
+        const TopoDS_Vertex first = near(previous, start) ? previous : geometry::vertexWithin(start, 10.0 * tolerance);
+        if (opening.IsNull()) opening = first;
+        // A line that comes back to where it began (a frame all round) closes on its first vertex.
+        const bool closing = k + 1 == spans.size() && p + 1 == pieces->size() && near(opening, end);
+        const TopoDS_Vertex last = closing ? opening : geometry::vertexWithin(end, 10.0 * tolerance);
         BRepBuilderAPI_MakeEdge edge(piece.curve, patch.surface, first, last, piece.points.front().t,
                                      piece.points.back().t);
         if (!edge.IsDone()) return std::nullopt;
@@ -127,21 +144,6 @@ std::optional<std::vector<SkinEdge>> straightFromSkin(const FuselageFrame& fusel
   }
   return edges;
 }
-
-/// The line where the rays of the spans meet the skin: straight from the skin, or by a section.
-std::vector<SkinEdge> linesOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans,
-                                  const std::vector<TopoDS_Face>& sweep, const std::string& where) {
-  if (auto edges = straightFromSkin(fuselage, spans)) return *edges;
-  return onSkin(fuselage, sweep, where);
-}
-
-NamedShape linesOf(const std::vector<SkinEdge>& pieces) {
-  std::vector<TopoDS_Edge> edges;
-  for (const SkinEdge& piece : pieces) edges.push_back(piece.edge);
-  return edgesOf(compoundOf(edges));
-}
-
-}  // namespace
 
 std::vector<SkinEdge> frameOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
                                   const std::string& uid) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -8,12 +9,15 @@
 
 #include "airshape/named_shape.h"
 #include "airshape/tank/tank_services.h"
+#include "position_rays.h"
 
 namespace airshape {
 class Configuration;
 }
 
 namespace airshape::structure {
+
+class FuselageFrame;
 
 /// A piece of a line on a body's skin: an edge and the skin face it lies on.
 struct SkinEdge {
@@ -32,6 +36,14 @@ std::vector<SkinEdge> frameOnSkin(const Configuration& configuration, const tank
 /// last position (position_rays.h). Throws Error naming the CPACS path when it cannot be built.
 std::vector<SkinEdge> stringerOnSkin(const Configuration& configuration, const tank::TankServices* tanks,
                                      const std::string& uid);
+
+/// Where the rays of the spans (position_rays.h) meet the fuselage's skin, drawn straight from
+/// it: each ray met with the skin's faces by Newton's method as a half-line from its origin, the
+/// line a curve in each face's own parameters that follows the crossing within 1e-8 of the
+/// fuselage's size; consecutive edges share their vertices, and a line that comes back to where
+/// it began closes. Nothing where the skin does not allow that (trimmed faces, a ray that misses
+/// the skin or meets it twice); the caller then sections the skin.
+std::optional<std::vector<SkinEdge>> raysOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans);
 
 /// A frame (frameOnSkin) as its line: edges, no faces.
 NamedShape frameLine(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid);
