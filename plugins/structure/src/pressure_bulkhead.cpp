@@ -16,7 +16,9 @@
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
 #include "position_rays.h"
+#include "ruled_section.h"
 #include "skin_lines.h"
+#include "skin_section.h"
 
 namespace airshape::structure {
 
@@ -58,6 +60,23 @@ std::vector<TopoDS_Face> stationSection(const FuselageFrame& fuselage, const sch
   return fuselage.crossSection(station.Location(), station.Axis().Direction());
 }
 
+/// The surface a riffled frame's rays sweep, inside the fuselage: each piece between two rays
+/// from their origins out to the skin (ruled_section.h), or, where the skin does not allow
+/// that, the swept surface's common with the fuselage's solid.
+std::vector<TopoDS_Face> sweptInside(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  const TopoDS_Shape skin = compoundOf(fuselage.skinFaces());
+  std::vector<TopoDS_Face> faces;
+  for (const auto& [a, b] : frameSpans(fuselage, frame)) {
+    const gp_Pnt from = fuselage.toGlobal(a.origin), to = fuselage.toGlobal(b.origin);
+    const RuledLines rays{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
+                          gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
+    const auto face = ruledFaceOutToSkin(skin, rays, kTraceTolerance * fuselage.reach());
+    if (!face) return facesInside(compoundOf(frameSweep(fuselage, frame, fuselage.localReach())), fuselage.solid());
+    faces.push_back(*face);
+  }
+  return faces;
+}
+
 /// A bulkhead on a frame of several positions at one station: each position's ray
 /// (position_rays.h) meets the skin; the frame runs along the skin from the first of these points
 /// to the last, and the bulkhead is the part of the cross section that the chord between them
@@ -86,7 +105,7 @@ NamedShape pressureBulkhead(const Configuration& configuration, const std::strin
   std::vector<TopoDS_Face> faces;
   try {
     if (fuselage.offFirstStation(frame) != nullptr) {
-      faces = facesInside(compoundOf(frameSweep(fuselage, frame, fuselage.localReach())), fuselage.solid());
+      faces = sweptInside(fuselage, frame);
     } else if (frame.framePosition.size() > 1) {
       faces = sectionPart(fuselage, frame);
     } else {

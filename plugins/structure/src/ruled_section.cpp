@@ -151,12 +151,11 @@ std::optional<TopoDS_Edge> alongLineEdge(const Handle(Geom_Surface) & surface, d
   return TopoDS::Edge(reversed->Reversed());
 }
 
-/// The section (ruledSectionBetweenSkins), throwing FoldedSkin or OCCT's failures where the
-/// direct way does not apply.
-std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
-                                     const RuledLines& lines, double tolerance) {
-  const auto upper = crossingOf(upperSkin, lines, tolerance);
-  const auto lower = crossingOf(lowerSkin, lines, tolerance);
+/// The face of the ruled surface between two runs of its points, each from the line at t = 0 to
+/// the line at t = 1, and those lines; throws OCCT's failures.
+std::optional<TopoDS_Face> faceBetween(const std::optional<std::vector<Run>>& upper,
+                                       const std::optional<std::vector<Run>>& lower, const RuledLines& lines,
+                                       double tolerance) {
   if (!upper || !lower) return std::nullopt;
   double reach = 1.0;
   for (const auto* runs : {&*upper, &*lower})
@@ -189,7 +188,33 @@ std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS
   return face.Face();
 }
 
+/// The section (ruledSectionBetweenSkins), throwing FoldedSkin or OCCT's failures where the
+/// direct way does not apply.
+std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
+                                     const RuledLines& lines, double tolerance) {
+  return faceBetween(crossingOf(upperSkin, lines, tolerance), crossingOf(lowerSkin, lines, tolerance), lines,
+                     tolerance);
+}
+
+/// The base line s = 0 of the ruled surface as a run.
+std::vector<Run> baseLine() {
+  Run run;
+  run.points = {{0.0, 0.0}, {1.0, 0.0}};
+  run.curve = curveThrough(run.points);
+  return {run};
+}
+
 }  // namespace
+
+std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance) {
+  try {
+    return faceBetween(crossingOf(skin, lines, tolerance), baseLine(), lines, tolerance);
+  } catch (const FoldedSkin&) {
+    return std::nullopt;
+  } catch (const Standard_Failure&) {  // a curve or face OCCT cannot make: the Boolean way then
+    return std::nullopt;
+  }
+}
 
 std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
                                                     const RuledLines& lines, double tolerance) {

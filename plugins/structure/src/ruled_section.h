@@ -19,4 +19,9 @@ namespace airshape::structure {
 std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
                                                     const RuledLines& lines, double tolerance);
 
+/// The face of the ruled surface of `lines` (rays from inside a body: `lines.rays`) from its base
+/// line (s = 0, through the rays' origins) out to where the rays meet `skin`, between the rays
+/// at t = 0 and t = 1, made the same way. Nothing where the skin does not allow that.
+std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance);
+
 }  // namespace airshape::structure
