@@ -127,8 +127,8 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   return planarFace(wire.Wire());
 }
 
-TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces) {
-  BRepBuilderAPI_Sewing sewing(kJoinTolerance);
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces, double tolerance) {
+  BRepBuilderAPI_Sewing sewing(tolerance);
   for (const TopoDS_Face& face : faces)
     if (!face.IsNull()) sewing.Add(face);
   sewing.Perform();

@@ -23,6 +23,7 @@
 #include "rib_list.h"
 #include "spar_web.h"
 #include "structure_frame.h"
+#include "tank_from_skins.h"
 #include "tank_outline.h"
 
 namespace airshape::structure {
@@ -34,6 +35,7 @@ namespace {
 struct Border {
   NamedShape wall;
   TankOutline::Border outline;
+  TankWall direct;
 };
 
 /// Rethrows an error of a border's element with the border's CPACS path.
@@ -57,6 +59,13 @@ Border sparBorder(const Configuration& configuration, const StructureFrame& fram
   NamedFaces faces;
   faces.add(tank.uid + "/" + sparUid, wall.faces());
   border.wall = faces.shape();
+  border.direct.name = sparUid;
+  border.direct.spar = true;
+  if (wall.pieces.size() + 1 == wall.points.size()) {  // no plane pieces carried beyond twisted ones
+    border.direct.points = wall.points;
+    border.direct.ups.push_back(wall.pieces.front().fromUp);
+    for (const SparWall::Piece& piece : wall.pieces) border.direct.ups.push_back(piece.toUp);
+  }
   border.outline.spar = true;
   border.outline.firstEta = frame.etaOf(frame.toWing(wall.points.front()));
   border.outline.lastEta = frame.etaOf(frame.toWing(wall.points.back()));
@@ -97,6 +106,10 @@ Border ribBorder(const Configuration& configuration, const StructureFrame& frame
   faces.add(tank.uid + "/" + ribsUid + "/rib " + std::to_string(number),
             {BRepBuilderAPI_MakeFace(plane, -reach, reach, -reach, reach).Face()});
   border.wall = faces.shape();
+  border.direct.name = ribsUid + "/rib " + std::to_string(number);
+  border.direct.point = frame.toGlobal(rib.point);
+  border.direct.normal = frame.toGlobal(normal).Normalized();
+  border.direct.up = frame.toGlobal(rib.up);
   const gp_Vec carried = reach * along.Normalized();
   border.outline.line = {rib.point.Translated(-carried), rib.point.Translated(carried)};
   return border;
@@ -148,7 +161,11 @@ NamedShape wingFuelTankSolid(const Configuration& configuration, const Structure
   const StructureFrame frame(configuration, services, tank.componentSegmentUid, tank.wingUid, "");
   const std::vector<Border> borders = bordersOf(configuration, frame, tank);
   std::vector<TankOutline::Border> lines;
-  for (const Border& border : borders) lines.push_back(border.outline);
+  std::vector<TankWall> walls;
+  for (const Border& border : borders) {
+    lines.push_back(border.outline);
+    walls.push_back(border.direct);
+  }
   const std::vector<std::size_t> order = TankOutline::orderAround(lines);
   if (!order.empty() && !std::is_sorted(order.begin(), order.end())) {
     std::string taken;
@@ -156,8 +173,13 @@ NamedShape wingFuelTankSolid(const Configuration& configuration, const Structure
     configuration.warnAboutGeometry({Problem::Severity::Warning, tank.xpath + "/geometry",
                                      "the borders are not listed in order around the tank; taken as border " + taken});
     std::vector<TankOutline::Border> ordered;
-    for (const std::size_t index : order) ordered.push_back(lines[index]);
+    std::vector<TankWall> orderedWalls;
+    for (const std::size_t index : order) {
+      ordered.push_back(lines[index]);
+      orderedWalls.push_back(walls[index]);
+    }
     lines = ordered;
+    walls = orderedWalls;
   }
   std::optional<TankOutline> outline;
   try {
@@ -165,6 +187,8 @@ NamedShape wingFuelTankSolid(const Configuration& configuration, const Structure
   } catch (const Error& error) {
     throw Error(error.code(), error.message(), {}, tank.xpath + "/geometry");
   }
+  // Straight from the skins where they allow it.
+  if (auto direct = tankFromSkins(frame, walls, tank.uid)) return *direct;
 
   // Split the component segment's solid by every wall; the tank is the cells inside the outline.
   const NamedShape& componentSegment = configuration.shapes().namedShapeOf(configuration, tank.componentSegmentUid);

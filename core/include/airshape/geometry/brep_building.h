@@ -48,7 +48,9 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 /// Sews faces into a closed shell and makes it a solid, faces pointing outwards. Throws Error
 /// when they do not close or enclose no volume.
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
-TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr);
+/// Edges within `tolerance` of each other are joined.
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr,
+                       double tolerance = kJoinTolerance);
 
 /// The planar face on a closed wire, sharing its edges, its normal turned so that the wire
 /// runs anticlockwise about it. Throws Error when the wire is not planar, or encloses no
