@@ -84,6 +84,38 @@ struct Loop {
   std::vector<std::size_t> sideWalls;
 };
 
+/// The plane of the component segment's inner (eta 0) or outer (eta 1) end as a wall: the
+/// section's plane there, up along its thickness.
+TankWall endWall(const StructureFrame& frame, bool inner) {
+  const double eta = inner ? 0.0 : 1.0;
+  const gp_Pnt front = frame.chordPoint("", eta, 0.0), back = frame.chordPoint("", eta, 1.0);
+  const gp_Vec up = frame.thicknessDirection(eta, 0.5);
+  TankWall wall;
+  wall.name = frame.componentSegmentUid() + (inner ? "/inner end" : "/outer end");
+  wall.point = frame.toGlobal(front);
+  wall.normal = frame.toGlobal(gp_Vec(front, back).Crossed(up)).Normalized();
+  wall.up = frame.toGlobal(up).Normalized();
+  return wall;
+}
+
+/// The walls closed: where the last and the first are spars that do not meet, the component
+/// segment's end nearer to the other corners (their mean eta below or above 0.5) joins them, as
+/// the tank's outline is closed (tank_outline.h).
+std::vector<TankWall> closed(const StructureFrame& frame, std::vector<TankWall> walls, double tolerance) {
+  const std::size_t n = walls.size();
+  if (!walls.back().spar || !walls.front().spar || meet(walls.back(), walls.front(), tolerance)) return walls;
+  double meanEta = 0.0;
+  std::size_t corners = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (const auto corner = meet(walls[i], walls[i + 1], tolerance)) {
+      meanEta += frame.etaOf(frame.toWing(corner->point));
+      ++corners;
+    }
+  if (corners == 0) return walls;
+  walls.push_back(endWall(frame, meanEta / static_cast<double>(corners) < 0.5));
+  return walls;
+}
+
 std::optional<Loop> loopAround(const std::vector<TankWall>& walls, double tolerance) {
   const std::size_t n = walls.size();
   std::vector<Corner> corners;  // corners[i]: wall i meets wall i + 1
@@ -133,7 +165,8 @@ TopoDS_Shape prismOf(const RuledLoop& loop, double reach) {
 std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::vector<TankWall>& walls,
                                         const std::string& tankUid) {
   const double reach = frame.reach(), tolerance = kTraceTolerance * reach;
-  auto loop = loopAround(walls, 1e-9 * reach);
+  const std::vector<TankWall> all = closed(frame, walls, 1e-9 * reach);
+  auto loop = loopAround(all, 1e-9 * reach);
   if (!loop) return std::nullopt;
   loop->lines.prism = prismOf(loop->lines, reach);
   if (loop->lines.prism.IsNull()) return std::nullopt;
@@ -155,7 +188,7 @@ std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::
     const auto face = ruledSectionBetweenSkins(upperSkin, lowerSkin, side, tolerance);
     if (!face) return std::nullopt;
     faces.push_back(*face);
-    names.push_back(tankUid + "/" + walls[loop->sideWalls[k]].name);
+    names.push_back(tankUid + "/" + all[loop->sideWalls[k]].name);
   }
   // Sewn as tightly as the pieces allow: a wall along a skin's edge (a rib in the root) follows
   // that edge less closely than a crossing in the skin's middle.
