@@ -2,16 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
-#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BOPTools_AlgoTools3D.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <IntTools_Context.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
-#include "airshape/geometry/ruled_sections.h"
 #include "ruled_section.h"
 #include "skin_section.h"
 #include "skin_split.h"
@@ -148,31 +150,33 @@ std::optional<Loop> loopAround(const std::vector<TankWall>& walls, double tolera
   return loop;
 }
 
-/// The prism of the loop's lines, reaching `reach` either way: what lies inside the tank.
-TopoDS_Shape prismOf(const RuledLoop& loop, double reach) {
-  auto level = [&](double side) {
-    BRepBuilderAPI_MakePolygon polygon;
-    for (std::size_t k = 0; k < loop.points.size(); ++k)
-      polygon.Add(loop.points[k].Translated(side * reach * loop.directions[k]));
-    polygon.Close();
-    return polygon.Wire();
-  };
-  return geometry::ruledThroughSections({level(-1.0), level(1.0)}).solid;
+/// The pieces of a skin split along the loop that lie inside the tank (by a point inside each).
+std::optional<std::vector<TopoDS_Face>> skinInside(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                   const std::function<bool(const gp_Pnt&)>& inside, double tolerance) {
+  const auto split = skinSplitByLoop(skin, loop, tolerance);
+  if (!split) return std::nullopt;
+  const Handle(IntTools_Context) context = new IntTools_Context;
+  std::vector<TopoDS_Face> kept;
+  for (const TopoDS_Face& face : *split) {
+    gp_Pnt point;
+    gp_Pnt2d uv;
+    if (BOPTools_AlgoTools3D::PointInFace(face, point, uv, context) != 0) return std::nullopt;
+    if (inside(point)) kept.push_back(face);
+  }
+  return kept;
 }
 
 }  // namespace
 
 std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::vector<TankWall>& walls,
-                                        const std::string& tankUid) {
+                                        const std::function<bool(const gp_Pnt&)>& inside, const std::string& tankUid) {
   const double reach = frame.reach(), tolerance = kTraceTolerance * reach;
   const std::vector<TankWall> all = closed(frame, walls, 1e-9 * reach);
   auto loop = loopAround(all, 1e-9 * reach);
   if (!loop) return std::nullopt;
-  loop->lines.prism = prismOf(loop->lines, reach);
-  if (loop->lines.prism.IsNull()) return std::nullopt;
   const TopoDS_Shape upperSkin = frame.skin(true), lowerSkin = frame.skin(false);
-  const auto upper = skinInsideLoop(upperSkin, loop->lines, tolerance);
-  const auto lower = skinInsideLoop(lowerSkin, loop->lines, tolerance);
+  const auto upper = skinInside(upperSkin, loop->lines, inside, tolerance);
+  const auto lower = skinInside(lowerSkin, loop->lines, inside, tolerance);
   if (!upper || !lower || upper->empty() || lower->empty()) return std::nullopt;
 
   std::vector<TopoDS_Face> faces;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,12 +29,13 @@ struct TankWall {
 /// The tank enclosed by its walls, listed in order around it, made from the component segment's
 /// skins without intersecting surfaces: the loop of lines where consecutive walls meet (and
 /// through a spar's positions between), the skins split along that loop (skin_split.h), the
-/// walls' faces between the skins (ruled_section.h), sewn into one solid. Faces on a wall are
+/// walls' faces between the skins (ruled_section.h), sewn into one solid; `inside` tells the
+/// skin pieces of the tank (a point of each, global frame). Faces on a wall are
 /// named `<tank>/<wall's name>`, on the skins `<tank>/<component segment>/upper` and `/lower`.
 /// Nothing where that does not apply (walls that do not meet each next one in a line, a twisted
 /// piece of a spar's wall in the loop, skins the direct constructions do not take): the caller
 /// then splits the component segment's solid.
 std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::vector<TankWall>& walls,
-                                        const std::string& tankUid);
+                                        const std::function<bool(const gp_Pnt&)>& inside, const std::string& tankUid);
 
 }  // namespace airshape::structure

@@ -188,7 +188,8 @@ NamedShape wingFuelTankSolid(const Configuration& configuration, const Structure
     throw Error(error.code(), error.message(), {}, tank.xpath + "/geometry");
   }
   // Straight from the skins where they allow it.
-  if (auto direct = tankFromSkins(frame, walls, tank.uid)) return *direct;
+  const auto inOutline = [&](const gp_Pnt& point) { return outline->contains(frame.toWing(point)); };
+  if (auto direct = tankFromSkins(frame, walls, inOutline, tank.uid)) return *direct;
 
   // Split the component segment's solid by every wall; the tank is the cells inside the outline.
   const NamedShape& componentSegment = configuration.shapes().namedShapeOf(configuration, tank.componentSegmentUid);
