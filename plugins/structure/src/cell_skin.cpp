@@ -5,6 +5,7 @@
 #include <string>
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <TopoDS.hxx>
@@ -201,12 +202,18 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   // The skin split along where the prism's sides meet it (no surfaces intersected), or, where
   // that does not apply, cut by the prism in a Boolean common.
   const TopoDS_Shape skin = frame.skin(cell.upper);
-  RuledLoop ruled{{}, {}, prism.solid, false};
+  RuledLoop ruled;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));
     ruled.directions.push_back(frame.toGlobal(normals[k]));
   }
-  std::optional<std::vector<TopoDS_Face>> inside = skinInsideLoop(skin, ruled, kTraceTolerance * reach);
+  const double tolerance = kTraceTolerance * reach;
+  BRepClass3d_SolidClassifier inPrism(prism.solid);
+  const auto keep = [&](const gp_Pnt& point) {
+    inPrism.Perform(point, tolerance);
+    return inPrism.State() == TopAbs_IN;
+  };
+  std::optional<std::vector<TopoDS_Face>> inside = skinPiecesWhere(skin, ruled, keep, tolerance);
   if (!inside) inside = cutByPrism(skin, prism.solid, cell.xpath);
   // A wing that folds back over itself (a joined or box wing) can bring skin of other segments
   // into the prism: only pieces within the cell's span count.

@@ -42,6 +42,14 @@ Handle(Geom2d_BSplineCurve)
   return interpolation.Curve();
 }
 
+bool coversAllLines(const std::vector<CrossingPiece>& pieces) {
+  if (pieces.empty() || pieces.front().points.front().t > 1e-12 || pieces.back().points.back().t < 1.0 - 1e-12)
+    return false;
+  for (std::size_t k = 1; k < pieces.size(); ++k)
+    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > 1e-9) return false;
+  return true;
+}
+
 namespace {
 
 /// Where a line of a side meets the skin: on which patch, at which of its parameters.

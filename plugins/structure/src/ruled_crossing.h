@@ -45,6 +45,9 @@ struct FoldedSkin {};
 std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const RuledLines& lines,
                                                         double tolerance);
 
+/// Whether crossing pieces run without a gap from the line at t = 0 to the line at t = 1.
+bool coversAllLines(const std::vector<CrossingPiece>& pieces);
+
 /// The cubic through points of a plane (a patch's or a surface's parameters) at ascending
 /// parameters, as OCCT interpolates them; null when it cannot be made.
 Handle(Geom2d_BSplineCurve)

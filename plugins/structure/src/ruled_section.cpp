@@ -83,12 +83,9 @@ std::optional<std::vector<Run>> crossingOf(const TopoDS_Shape& skin, const Ruled
   const auto patches = skinPatches(skin);
   if (!patches) return std::nullopt;
   const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
-  if (!pieces || pieces->empty()) return std::nullopt;
-  if (pieces->front().points.front().t > 1e-12 || pieces->back().points.back().t < 1.0 - 1e-12) return std::nullopt;
+  if (!pieces || !coversAllLines(*pieces)) return std::nullopt;
   std::vector<Run> runs;
-  for (std::size_t k = 0; k < pieces->size(); ++k) {
-    const CrossingPiece& piece = (*pieces)[k];
-    if (k > 0 && piece.points.front().t - (*pieces)[k - 1].points.back().t > 1e-9) return std::nullopt;
+  for (const CrossingPiece& piece : *pieces) {
     const auto run = runOf(piece, patches->patches[piece.patch], lines, tolerance);
     if (!run) return std::nullopt;
     runs.push_back(*run);

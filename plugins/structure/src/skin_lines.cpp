@@ -74,15 +74,6 @@ std::vector<SkinEdge> onSkin(const FuselageFrame& fuselage, const std::vector<To
   return pieces;
 }
 
-/// Whether crossing pieces run without a gap from the line at t = 0 to the line at t = 1.
-bool covers(const std::vector<CrossingPiece>& pieces) {
-  if (pieces.empty() || pieces.front().points.front().t > 1e-12 || pieces.back().points.back().t < 1.0 - 1e-12)
-    return false;
-  for (std::size_t k = 1; k < pieces.size(); ++k)
-    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > 1e-9) return false;
-  return true;
-}
-
 /// The line where the rays of the spans meet the skin: straight from the skin, or by a section.
 std::vector<SkinEdge> linesOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans,
                                   const std::vector<TopoDS_Face>& sweep, const std::string& where) {
@@ -111,7 +102,7 @@ std::optional<std::vector<SkinEdge>> raysOnSkin(const FuselageFrame& fuselage, c
       const RuledLines lines{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
                              gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
       const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
-      if (!pieces || !covers(*pieces)) return std::nullopt;
+      if (!pieces || !coversAllLines(*pieces)) return std::nullopt;
       for (std::size_t p = 0; p < pieces->size(); ++p) {
         const CrossingPiece& piece = (*pieces)[p];
         const Patch& patch = patches->patches[piece.patch];

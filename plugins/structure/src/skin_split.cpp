@@ -7,7 +7,6 @@
 #include <BOPTools_AlgoTools.hxx>
 #include <BOPTools_AlgoTools3D.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -230,22 +229,21 @@ std::optional<std::vector<TopoDS_Face>> skinSplitByLoop(const TopoDS_Shape& skin
   }
 }
 
-std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
-                                                       double tolerance) {
+std::optional<std::vector<TopoDS_Face>> skinPiecesWhere(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                        const std::function<bool(const gp_Pnt&)>& keep,
+                                                        double tolerance) {
   const auto split = skinSplitByLoop(skin, loop, tolerance);
   if (!split) return std::nullopt;
   try {
     const Handle(IntTools_Context) context = new IntTools_Context;
-    BRepClass3d_SolidClassifier prism(loop.prism);
-    std::vector<TopoDS_Face> inside;
+    std::vector<TopoDS_Face> kept;
     for (const TopoDS_Face& face : *split) {
       gp_Pnt point;
       gp_Pnt2d uv;
       if (BOPTools_AlgoTools3D::PointInFace(face, point, uv, context) != 0) return std::nullopt;
-      prism.Perform(point, tolerance);
-      if (prism.State() == TopAbs_IN) inside.push_back(face);
+      if (keep(point)) kept.push_back(face);
     }
-    return inside;
+    return kept;
   } catch (const Standard_Failure&) {
     return std::nullopt;
   }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -13,12 +14,11 @@ namespace airshape::structure {
 /// A closed loop of ruled sides across a skin (global frame): side k joins the line through
 /// `points[k]` along `directions[k]` to the line through the next point along the next
 /// direction (the lines between them interpolated linearly), as the sides of a prism whose
-/// outline is the loop. `prism` is that prism as a solid (for skinInsideLoop). `rays`: only
-/// the half-lines from the points along the directions count (rays from inside a fuselage).
+/// outline is the loop. `rays`: only the half-lines from the points along the directions count
+/// (rays from inside a fuselage).
 struct RuledLoop {
   std::vector<gp_Pnt> points;
   std::vector<gp_Vec> directions;
-  TopoDS_Shape prism;
   bool rays = false;
 };
 
@@ -33,8 +33,10 @@ struct RuledLoop {
 std::optional<std::vector<TopoDS_Face>> skinSplitByLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
                                                         double tolerance);
 
-/// The pieces of the split skin (skinSplitByLoop) inside the loop's prism.
-std::optional<std::vector<TopoDS_Face>> skinInsideLoop(const TopoDS_Shape& skin, const RuledLoop& loop,
-                                                       double tolerance);
+/// The pieces of the split skin (skinSplitByLoop) a point inside which passes `keep` (global
+/// frame); nothing where the split does not apply.
+std::optional<std::vector<TopoDS_Face>> skinPiecesWhere(const TopoDS_Shape& skin, const RuledLoop& loop,
+                                                        const std::function<bool(const gp_Pnt&)>& keep,
+                                                        double tolerance);
 
 }  // namespace airshape::structure

@@ -4,13 +4,10 @@
 #include <cmath>
 #include <functional>
 
-#include <BOPTools_AlgoTools3D.hxx>
 #include <BRepCheck_Analyzer.hxx>
-#include <IntTools_Context.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <gp_Pnt2d.hxx>
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
@@ -150,22 +147,6 @@ std::optional<Loop> loopAround(const std::vector<TankWall>& walls, double tolera
   return loop;
 }
 
-/// The pieces of a skin split along the loop that lie inside the tank (by a point inside each).
-std::optional<std::vector<TopoDS_Face>> skinInside(const TopoDS_Shape& skin, const RuledLoop& loop,
-                                                   const std::function<bool(const gp_Pnt&)>& inside, double tolerance) {
-  const auto split = skinSplitByLoop(skin, loop, tolerance);
-  if (!split) return std::nullopt;
-  const Handle(IntTools_Context) context = new IntTools_Context;
-  std::vector<TopoDS_Face> kept;
-  for (const TopoDS_Face& face : *split) {
-    gp_Pnt point;
-    gp_Pnt2d uv;
-    if (BOPTools_AlgoTools3D::PointInFace(face, point, uv, context) != 0) return std::nullopt;
-    if (inside(point)) kept.push_back(face);
-  }
-  return kept;
-}
-
 }  // namespace
 
 std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::vector<TankWall>& walls,
@@ -175,8 +156,8 @@ std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::
   auto loop = loopAround(all, 1e-9 * reach);
   if (!loop) return std::nullopt;
   const TopoDS_Shape upperSkin = frame.skin(true), lowerSkin = frame.skin(false);
-  const auto upper = skinInside(upperSkin, loop->lines, inside, tolerance);
-  const auto lower = skinInside(lowerSkin, loop->lines, inside, tolerance);
+  const auto upper = skinPiecesWhere(upperSkin, loop->lines, inside, tolerance);
+  const auto lower = skinPiecesWhere(lowerSkin, loop->lines, inside, tolerance);
   if (!upper || !lower || upper->empty() || lower->empty()) return std::nullopt;
 
   std::vector<TopoDS_Face> faces;
