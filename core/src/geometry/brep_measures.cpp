@@ -184,12 +184,12 @@ double occtVolume(const TopoDS_Shape& shape, Accuracy accuracy) {
   return properties.Mass();
 }
 
-/// ∮ n·(C × C') dt / 2 along one edge's curve, in the direction the face runs it: the edge's
+/// ∮ n·((C - O) × C') dt / 2 along one edge's curve, in the direction the face runs it: the edge's
 /// share of a plane face's area (Green's theorem). Polynomial on every knot span of a
 /// non-rational B-spline (degree 2p − 1), so p + 1 Gauss points per span are exact there;
 /// other curves are taken as B-splines (rational ones with more points, then only nearly
 /// exact).
-double edgeAreaShare(const TopoDS_Edge& edge, const gp_Dir& normal) {
+double edgeAreaShare(const TopoDS_Edge& edge, const gp_Dir& normal, const gp_Pnt& origin) {
   double first, last;
   const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
   if (curve.IsNull()) return 0.0;  // a degenerate edge encloses nothing
@@ -205,17 +205,21 @@ double edgeAreaShare(const TopoDS_Edge& edge, const gp_Dir& normal) {
       gp_Pnt p;
       gp_Vec d;
       evaluator.D1(mid + half * rule.points(a), p, d);
-      sum += rule.weights(a) * half * n.Dot(gp_Vec(p.XYZ()).Crossed(d));
+      sum += rule.weights(a) * half * n.Dot(gp_Vec(origin, p).Crossed(d));
     }
   }
   return (edge.Orientation() == TopAbs_REVERSED ? -0.5 : 0.5) * sum;
 }
 
-/// The signed area the edges of a face or wire enclose about `normal` (Green's theorem).
+/// The signed area the edges of a face or wire enclose about `normal` (Green's theorem), taken
+/// about a point of the boundary: where its edges meet only within their tolerance, the gaps
+/// then add areas of the size of the boundary, not of its distance from the origin.
 double areaAlong(const TopoDS_Shape& boundary, const gp_Dir& normal) {
   double area = 0.0;
+  TopExp_Explorer vertex(boundary, TopAbs_VERTEX);
+  const gp_Pnt origin = vertex.More() ? BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())) : gp_Pnt();
   for (TopExp_Explorer edges(boundary, TopAbs_EDGE); edges.More(); edges.Next())
-    area += edgeAreaShare(TopoDS::Edge(edges.Current()), normal);
+    area += edgeAreaShare(TopoDS::Edge(edges.Current()), normal, origin);
   return area;
 }
 
