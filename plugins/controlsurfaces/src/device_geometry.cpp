@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepLib.hxx>
@@ -194,6 +195,12 @@ std::string deviceFaceName(const std::string& wingFaceName) {
 }  // namespace
 
 NamedShape DeviceGeometry::cutter() const {
+  // Cached: the device at rest, its cut-out and the structure inside it all start from it.
+  return *configuration_.cache().obtain<NamedShape>("device-cutter:" + device_.uid,
+                                                    [&] { return std::make_shared<const NamedShape>(ruledCutter()); });
+}
+
+NamedShape DeviceGeometry::ruledCutter() const {
   const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
   const std::vector<TopoDS_Wire> between = intermediateWires(innerPlane, outerPlane);
   std::vector<TopoDS_Wire> wires{borderWireOf(device_.outerBorder, outerPlane)};

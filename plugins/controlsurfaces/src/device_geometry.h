@@ -57,6 +57,8 @@ class DeviceGeometry {
   const Device& device() const { return device_; }
 
  private:
+  /// The cutter, built.
+  NamedShape ruledCutter() const;
   /// A border point on the component segment's chord surface.
   gp_Pnt chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const;
   /// The component-segment eta of an eta given relative to a reference (at `xpath`).

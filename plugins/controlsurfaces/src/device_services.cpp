@@ -24,6 +24,11 @@ class DeviceCoordinates final : public DeviceServices {
     return {csEta, csXsi};
   }
 
+  Cutter cutter(const Configuration& configuration, const std::string& deviceUid) const override {
+    const DeviceGeometry device(configuration, *wing_, deviceInAnyModel(configuration, deviceUid));
+    return {device.cutter().shape, device.device().innerBorder.nose == BorderDefinition::Nose::Airfoil};
+  }
+
  private:
   std::shared_ptr<const wing::WingServices> wing_;
 };

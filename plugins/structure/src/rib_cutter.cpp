@@ -9,6 +9,8 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "faces_inside.h"
+#include "plane_region.h"
+#include "ruled_solid_section.h"
 #include "skin_section.h"
 #include "spar_list.h"
 #include "spar_web.h"
@@ -135,26 +137,66 @@ RibOutline RibCutter::outline(const gp_Pnt& point, const gp_Vec& direction, cons
 std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOutline>& outlines,
                                                         const std::vector<std::string>& names,
                                                         const std::string& where) const {
-  // Ribs between lines straight from the skins where they allow it (much faster than a Boolean
-  // cut of skins with many knots); the others cut out of the component segment by one common.
-  const auto& [upper, lower] = skins();
-  std::vector<TopoDS_Face> faces;
-  for (const RibOutline& outline : outlines) faces.push_back(outline.face);
-  const auto traced = [&](std::size_t i) {
-    return sectionBetweenSkins(upper, lower, outlines[i].lines, outlines[i].start, outlines[i].end,
-                               kTraceTolerance * reach_, OpenEnds::SkinsMeet);
+  // Ribs straight from the skins where they allow it (much faster than a Boolean cut of skins
+  // with many knots); the others cut out of the component segment (or device) by one common.
+  const std::optional<TopoDS_Shape> cutter = frame_.deviceCutter();
+  const auto direct = [&](std::size_t i) -> std::optional<std::vector<TopoDS_Face>> {
+    if (!frame_.inDevice()) {
+      const auto& [upper, lower] = skins();
+      if (auto face = sectionOf(outlines[i], upper, lower)) return std::vector<TopoDS_Face>{*face};
+      return std::nullopt;
+    }
+    return cutter ? inDevice(outlines[i], *cutter) : std::nullopt;
   };
-  std::vector<std::vector<TopoDS_Face>> ribs;
-  try {
-    ribs = facesInsideEach(
-        faces, [&]() -> const TopoDS_Shape& { return frame_.solid(); }, traced);
-  } catch (const Error&) {
-    throw Error(ErrorCode::InvalidModel, "the ribs cannot be cut out of their component segment", {}, where);
+  std::vector<std::vector<TopoDS_Face>> ribs(outlines.size());
+  std::vector<TopoDS_Face> toCut;
+  std::vector<std::size_t> cutIndices;
+  for (std::size_t i = 0; i < outlines.size(); ++i) {
+    if (auto faces = direct(i)) {
+      ribs[i] = *faces;
+    } else {
+      toCut.push_back(outlines[i].face);
+      cutIndices.push_back(i);
+    }
+  }
+  if (!toCut.empty()) {
+    std::vector<std::vector<TopoDS_Face>> cut;
+    try {
+      cut = facesInsideEach(toCut, frame_.solid());
+    } catch (const Error&) {
+      throw Error(ErrorCode::InvalidModel, std::string("the ribs cannot be cut out of ") + frame_.hostName(), {},
+                  where);
+    }
+    for (std::size_t k = 0; k < cut.size(); ++k) ribs[cutIndices[k]] = cut[k];
   }
   for (std::size_t i = 0; i < ribs.size(); ++i)
     if (ribs[i].empty())
       throw Error(ErrorCode::InvalidModel, names[i] + " does not cross " + frame_.hostName(), {}, where);
   return ribs;
+}
+
+std::optional<TopoDS_Face> RibCutter::sectionOf(const RibOutline& outline, const TopoDS_Shape& upper,
+                                                const TopoDS_Shape& lower) const {
+  return sectionBetweenSkins(upper, lower, outline.lines, outline.start, outline.end, kTraceTolerance * reach_,
+                             OpenEnds::SkinsMeet);
+}
+
+std::optional<std::vector<TopoDS_Face>> RibCutter::inDevice(const RibOutline& outline,
+                                                            const TopoDS_Shape& cutter) const {
+  // The device is its wing's common with a simple solid: in the rib's plane, the wing's
+  // section straight from the wing's untrimmed skins in common with that solid's section (the
+  // device's own faces are trimmed pieces of the skins, which the trace does not take).
+  if (!wingSkins_) wingSkins_.emplace(frame_.componentSegmentSkin(true), frame_.componentSegmentSkin(false));
+  const std::optional<TopoDS_Face> section = sectionOf(outline, wingSkins_->first, wingSkins_->second);
+  if (!section) return std::nullopt;
+  const double tolerance = kTraceTolerance * reach_;
+  const gp_Pln plane(outline.lines.origin, outline.lines.planeNormal());
+  const std::optional<PlaneRegion> wing = regionOf(plane, *section);
+  const std::optional<PlaneRegion> device = ruledSolidSection(cutter, plane, tolerance);
+  if (!wing || !device) return std::nullopt;
+  std::optional<std::vector<TopoDS_Face>> faces = commonOf(plane, *wing, *device, tolerance);
+  if (!faces || faces->empty()) return std::nullopt;  // what a Boolean cut tells better
+  return faces;
 }
 
 std::vector<TopoDS_Face> RibCutter::cut(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,

@@ -66,9 +66,10 @@ class RibCutter {
   RibOutline outline(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up, const std::string& ribStart,
                      const std::string& ribEnd, const std::string& name, const std::string& where) const;
 
-  /// Several ribs' outlines cut out of the component segment's solid, named `names` (for the
-  /// errors of ribs that do not cross it): those between lines made from the skins, the others
-  /// by one Boolean common.
+  /// Several ribs' outlines cut out of the component segment's (or device's) solid, named
+  /// `names` (for the errors of ribs that do not cross it): those the skins give directly made
+  /// from them (in a device: the wing's section in common with the device's cutter, in the
+  /// rib's plane), the others by one Boolean common.
   std::vector<std::vector<TopoDS_Face>> cutAll(const std::vector<RibOutline>& outlines,
                                                const std::vector<std::string>& names, const std::string& where) const;
 
@@ -79,6 +80,12 @@ class RibCutter {
   std::vector<gp_Pnt> side(const std::string& border, const gp_Pnt& origin, const gp_Vec& outwards, const gp_Vec& up,
                            const gp_Pln& plane, const std::string& where) const;
   const std::pair<TopoDS_Shape, TopoDS_Shape>& skins() const;
+  /// A rib's face straight from two skins where they allow it.
+  std::optional<TopoDS_Face> sectionOf(const RibOutline& outline, const TopoDS_Shape& upper,
+                                       const TopoDS_Shape& lower) const;
+  /// A rib's faces in a device cut out of its wing by `cutter`, made without a Boolean
+  /// operation where the wing's skins allow it.
+  std::optional<std::vector<TopoDS_Face>> inDevice(const RibOutline& outline, const TopoDS_Shape& cutter) const;
   /// A rib's start or end as the end of a trace: the line where its plane meets a spar's web,
   /// or open at the wing's leading or trailing edge.
   CrossingEnd border(const std::string& name, const gp_Pln& plane, const std::string& where) const;
@@ -89,6 +96,8 @@ class RibCutter {
   mutable std::map<std::string, SparWall> walls_;
   /// The component segment's upper and lower skin, fetched for the first rib made from them.
   mutable std::optional<std::pair<TopoDS_Shape, TopoDS_Shape>> skins_;
+  /// In a device, the upper and lower skin of the component segment it is cut out of.
+  mutable std::optional<std::pair<TopoDS_Shape, TopoDS_Shape>> wingSkins_;
   const schema::WingComponentSegmentStructureType& structure_;
   double reach_;
 };

@@ -6,12 +6,7 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
-#include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <TColStd_HArray1OfBoolean.hxx>
-#include <TColStd_HArray1OfReal.hxx>
-#include <TColgp_Array1OfVec.hxx>
-#include <TColgp_HArray1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
@@ -19,6 +14,7 @@
 #include <gp_Vec2d.hxx>
 
 #include "bspline_patch.h"
+#include "curve_fit.h"
 
 namespace airshape::structure {
 
@@ -147,97 +143,22 @@ bool meetLineAt(const Patch& patch, const CrossingLines& lines, double t, PatchP
   return true;
 }
 
-/// A point of a crossing with its derivative along t.
-struct TracedPoint {
-  PatchPoint at;
-  gp_Vec tangent;
-};
-
-/// Adds to `nodes` the points strictly between `a` and `b` that make the cubic through the
-/// points and derivatives of a, the added points and b follow the crossing within the
-/// tolerance: where the cubic's middle strays from the crossing's, the interval is halved.
-/// Only where the crossing bends or passes a knot of the skin are the points dense.
-bool refine(const Patch& patch, const CrossingLines& lines, const TracedPoint& a, const TracedPoint& b,
-            double tolerance, int depth, std::vector<TracedPoint>& nodes, std::vector<PatchPoint>& middles) {
-  const double h = b.at.t - a.at.t;
-  TracedPoint middle{{0.5 * (a.at.t + b.at.t), 0.5 * (a.at.u + b.at.u), 0.5 * (a.at.v + b.at.v), {}}, {}};
-  if (!meetLineAt(patch, lines, middle.at.t, middle.at, middle.tangent)) return false;
-  // The cubic Hermite interpolant's middle: (Pa + Pb) / 2 + h (Ta - Tb) / 8.
-  const gp_XYZ cubic = 0.5 * (a.at.point.XYZ() + b.at.point.XYZ()) + (h / 8.0) * (a.tangent - b.tangent).XYZ();
-  if ((cubic - middle.at.point.XYZ()).Modulus() <= tolerance) {
-    middles.push_back(middle.at);
-    return true;
-  }
-  if (depth >= 24) return false;
-  if (!refine(patch, lines, a, middle, tolerance, depth + 1, nodes, middles)) return false;
-  nodes.push_back(middle);
-  return refine(patch, lines, middle, b, tolerance, depth + 1, nodes, middles);
-}
-
-/// The cubic B-spline through the traced points, parametrised by t, with their derivatives at
-/// every point (a Hermite cubic) or only at the ends (a C2 cubic).
-Handle(Geom_BSplineCurve) interpolated(const std::vector<TracedPoint>& nodes, bool everyDerivative) {
-  const int count = static_cast<int>(nodes.size());
-  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, count);
-  Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, count);
-  for (int i = 0; i < count; ++i) {
-    points->SetValue(i + 1, nodes[i].at.point);
-    parameters->SetValue(i + 1, nodes[i].at.t);
-  }
-  GeomAPI_Interpolate interpolation(points, parameters, false, 1e-15);
-  if (everyDerivative) {
-    TColgp_Array1OfVec tangents(1, count);
-    Handle(TColStd_HArray1OfBoolean) flags = new TColStd_HArray1OfBoolean(1, count);
-    for (int i = 0; i < count; ++i) {
-      tangents.SetValue(i + 1, nodes[i].tangent);
-      flags->SetValue(i + 1, true);
-    }
-    interpolation.Load(tangents, flags, false);
-  } else {
-    interpolation.Load(nodes.front().tangent, nodes.back().tangent, false);
-  }
-  interpolation.Perform();
-  return interpolation.IsDone() ? interpolation.Curve() : nullptr;
-}
-
-/// Whether the curve passes within the tolerance of each of the crossing's points.
-bool within(const Handle(Geom_BSplineCurve) & curve, const std::vector<PatchPoint>& points, double tolerance) {
-  for (const PatchPoint& point : points)
-    if (curve->Value(point.t).Distance(point.point) > tolerance) return false;
-  return true;
-}
-
-/// The piece of the crossing on one patch from `first` to `last` (already on the patch): the
-/// cubic through the points and derivatives of the lines that `refine` chooses, starting from
-/// four even intervals.
+/// The piece of the crossing on one patch from `first` to `last` (already on the patch),
+/// sampled where the lines meet the patch, each from the patch parameters of its neighbours.
 Handle(Geom_BSplineCurve) tracePiece(const Patch& patch, const CrossingLines& lines, const PatchPoint& first,
                                      const PatchPoint& last, double tolerance) {
-  constexpr int kStart = 4;
-  std::vector<TracedPoint> start;
-  PatchPoint current = first;
-  for (int i = 0; i <= kStart; ++i) {
-    TracedPoint node;
-    node.at = current;
-    if (!meetLineAt(patch, lines, first.t + (last.t - first.t) * i / kStart, node.at, node.tangent)) return nullptr;
-    current = node.at;
-    start.push_back(node);
-  }
-  // The ends are the given points exactly, so that pieces meet where their patches do.
-  start.front().at.point = first.point;
-  start.back().at.point = last.point;
-  std::vector<TracedPoint> nodes{start.front()};
-  std::vector<PatchPoint> middles;
-  for (int i = 0; i < kStart; ++i) {
-    if (!refine(patch, lines, start[i], start[i + 1], tolerance, 0, nodes, middles)) return nullptr;
-    nodes.push_back(start[i + 1]);
-  }
-  // A C2 cubic through the points (derivatives at the ends only) has half the poles of the
-  // Hermite cubic, which makes later work on the edge (a general fuse) cheaper; taken where it
-  // too keeps to the crossing at every interval's middle.
-  Handle(Geom_BSplineCurve) smooth = interpolated(nodes, false);
-  if (!smooth.IsNull() && within(smooth, middles, tolerance)) return smooth;
-  Handle(Geom_BSplineCurve) hermite = interpolated(nodes, true);
-  return !hermite.IsNull() && within(hermite, middles, tolerance) ? hermite : nullptr;
+  const CurveSampler sample = [&](double t, const CurveSample& before, const CurveSample& after) {
+    const double share = after.t == before.t ? 0.0 : (t - before.t) / (after.t - before.t);
+    const gp_XY guess = before.where.XY() + share * (after.where.XY() - before.where.XY());
+    PatchPoint point{t, guess.X(), guess.Y(), {}};
+    gp_Vec tangent;
+    if (!meetLineAt(patch, lines, t, point, tangent)) return std::optional<CurveSample>();
+    return std::optional<CurveSample>(CurveSample{t, point.point, tangent, gp_Pnt2d(point.u, point.v)});
+  };
+  const auto sampleOf = [](const PatchPoint& point) {
+    return CurveSample{point.t, point.point, gp_Vec(), gp_Pnt2d(point.u, point.v)};
+  };
+  return fittedCurve(sample, sampleOf(first), sampleOf(last), tolerance);
 }
 
 /// The crossing's curve in a patch's parameters: where f(u, v) = n · (S(u, v) - origin) is 0.
@@ -363,13 +284,13 @@ Handle(Geom_BSplineCurve) traceAlongCurve(const Patch& patch, const CrossingLine
   if (points.back().point.Distance(last.point) > 0.0) return nullptr;
   // The cubic through the points, refined where its middles stray from the curve.
   for (int round = 0; round < 12; ++round) {
-    std::vector<TracedPoint> nodes;
+    std::vector<CurveSample> nodes;
     double parameter = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (i > 0) parameter += points[i].point.Distance(points[i - 1].point);
-      nodes.push_back({{parameter, points[i].u, points[i].v, points[i].point}, tangents[i]});
+      nodes.push_back({parameter, points[i].point, tangents[i], gp_Pnt2d(points[i].u, points[i].v)});
     }
-    Handle(Geom_BSplineCurve) fitted = interpolated(nodes, true);
+    Handle(Geom_BSplineCurve) fitted = cubicThrough(nodes, true);
     if (fitted.IsNull()) return nullptr;
     std::vector<PatchPoint> refinedPoints{points.front()};
     std::vector<gp_Vec> refinedTangents{tangents.front()};
@@ -379,7 +300,7 @@ Handle(Geom_BSplineCurve) traceAlongCurve(const Patch& patch, const CrossingLine
       gp_Vec tangent;
       if (!curve.settle(u, v) || !curve.direction(u, v, *sense, tangent, rate)) return nullptr;
       const gp_Pnt middle = curve.point(u, v);
-      const double at = 0.5 * (nodes[i - 1].at.t + nodes[i].at.t);
+      const double at = 0.5 * (nodes[i - 1].t + nodes[i].t);
       gp_Pnt onFit;
       gp_Vec fitTangent;
       fitted->D1(at, onFit, fitTangent);

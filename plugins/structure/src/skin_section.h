@@ -19,7 +19,9 @@ inline constexpr double kTraceTolerance = 1e-8;
 /// between the skins' ends (the plane's section of a flat end cap: a spar carried beyond the
 /// component segment), or nothing, the skins meeting there (a rib reaching a sharp leading or
 /// trailing edge), or, where they end in straight edges lying in one plane (a flat blunt
-/// trailing edge), the straight line across it; at any other blunt edge the section is not made.
+/// trailing edge), the straight line across it, and where those edges are skew (a twisted blunt
+/// trailing edge, closed by the ruled face between them), the curve where the plane meets
+/// that face: a conic, made exactly.
 enum class OpenEnds { ClosedStraight, SkinsMeet };
 
 /// The face of the plane of `lines` between a wing's upper and lower skin, from one end to the

@@ -211,9 +211,19 @@ const TopoDS_Shape& StructureFrame::solid() const {
   return configuration_.shapes().shapeOf(configuration_, inDevice() ? deviceUid_ : componentSegmentUid_);
 }
 
+TopoDS_Shape StructureFrame::componentSegmentSkin(bool upper) const {
+  return wing().componentSegmentSkin(configuration_, componentSegmentUid_, upper ? Surface::Upper : Surface::Lower);
+}
+
+std::optional<TopoDS_Shape> StructureFrame::deviceCutter() const {
+  if (!inDevice()) return std::nullopt;
+  const controlsurfaces::DeviceServices::Cutter cutter = services_.devices.cutter(configuration_, deviceUid_);
+  if (cutter.ownAirfoil) return std::nullopt;
+  return cutter.solid;
+}
+
 TopoDS_Shape StructureFrame::skin(bool upper) const {
-  if (!inDevice())
-    return wing().componentSegmentSkin(configuration_, componentSegmentUid_, upper ? Surface::Upper : Surface::Lower);
+  if (!inDevice()) return componentSegmentSkin(upper);
   const NamedShape& device = configuration_.shapes().namedShapeOf(configuration_, deviceUid_);
   const std::string name = deviceUid_ + (upper ? "/upper" : "/lower");
   TopoDS_Compound faces;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <TopoDS_Shape.hxx>
@@ -78,6 +79,13 @@ class StructureFrame {
   /// The upper or the lower skin structure is bounded by (global frame): the component
   /// segment's, or the device's faces named upper or lower.
   TopoDS_Shape skin(bool upper) const;
+  /// The upper or the lower skin of the component segment (global frame), also for a device's
+  /// structure: the untrimmed skin a device is cut out of.
+  TopoDS_Shape componentSegmentSkin(bool upper) const;
+  /// For the structure of a device cut out of its wing, the simple solid that cuts it
+  /// (DeviceServices::cutter); nothing for a component segment's structure or a device with
+  /// its own airfoil.
+  std::optional<TopoDS_Shape> deviceCutter() const;
 
   const std::string& componentSegmentUid() const { return componentSegmentUid_; }
   bool inDevice() const { return !deviceUid_.empty(); }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <TopoDS_Shape.hxx>
 #include <gp_Pnt.hxx>
 
 namespace airshape {
@@ -38,9 +39,20 @@ class DeviceServices {
   /// wing's directions there.
   virtual ComponentSegmentPoint componentSegmentPoint(const Configuration& configuration, const std::string& deviceUid,
                                                       double eta, double xsi) const = 0;
+
+  /// The ruled solid between the device's inner and outer border (global frame) that cuts it
+  /// out of its wing: the device at rest is this solid's common with the clean wing, or, when
+  /// `ownAirfoil`, this solid itself (a device with its own airfoil). Where the wing's skins
+  /// give the wing's section directly, structure inside the device is that section cut by this
+  /// simple solid instead of by the device's trimmed faces.
+  struct Cutter {
+    TopoDS_Shape solid;
+    bool ownAirfoil = false;
+  };
+  virtual Cutter cutter(const Configuration& configuration, const std::string& deviceUid) const = 0;
 };
 
 /// The service name; the number changes whenever DeviceServices does.
-inline constexpr const char* kDeviceServices = "airshape.controlsurfaces.DeviceServices/1";
+inline constexpr const char* kDeviceServices = "airshape.controlsurfaces.DeviceServices/2";
 
 }  // namespace airshape::controlsurfaces

@@ -1,0 +1,96 @@
+#include "curve_fit.h"
+
+#include <vector>
+
+#include <GeomAPI_Interpolate.hxx>
+#include <TColStd_HArray1OfBoolean.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_Array1OfVec.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+
+namespace airshape::structure {
+
+namespace {
+
+constexpr int kStartIntervals = 4;
+constexpr int kDeepestHalving = 24;
+
+/// Adds to `nodes` the samples strictly between `a` and `b` that make the cubic Hermite
+/// interpolant follow the curve within the tolerance, and to `middles` the samples it was
+/// checked at.
+bool refine(const CurveSampler& sample, const CurveSample& a, const CurveSample& b, double tolerance, int depth,
+            std::vector<CurveSample>& nodes, std::vector<CurveSample>& middles) {
+  const std::optional<CurveSample> middle = sample(0.5 * (a.t + b.t), a, b);
+  if (!middle) return false;
+  // The cubic Hermite interpolant's middle: (Pa + Pb) / 2 + h (Ta - Tb) / 8.
+  const gp_XYZ cubic = 0.5 * (a.point.XYZ() + b.point.XYZ()) + ((b.t - a.t) / 8.0) * (a.tangent - b.tangent).XYZ();
+  if ((cubic - middle->point.XYZ()).Modulus() <= tolerance) {
+    middles.push_back(*middle);
+    return true;
+  }
+  if (depth >= kDeepestHalving) return false;
+  if (!refine(sample, a, *middle, tolerance, depth + 1, nodes, middles)) return false;
+  nodes.push_back(*middle);
+  return refine(sample, *middle, b, tolerance, depth + 1, nodes, middles);
+}
+
+/// Whether the curve passes within the tolerance of each sample.
+bool within(const Handle(Geom_BSplineCurve) & curve, const std::vector<CurveSample>& samples, double tolerance) {
+  for (const CurveSample& sample : samples)
+    if (curve->Value(sample.t).Distance(sample.point) > tolerance) return false;
+  return true;
+}
+
+}  // namespace
+
+Handle(Geom_BSplineCurve) cubicThrough(const std::vector<CurveSample>& nodes, bool everyDerivative) {
+  const int count = static_cast<int>(nodes.size());
+  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, count);
+  Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, count);
+  for (int i = 0; i < count; ++i) {
+    points->SetValue(i + 1, nodes[i].point);
+    parameters->SetValue(i + 1, nodes[i].t);
+  }
+  GeomAPI_Interpolate interpolation(points, parameters, false, 1e-15);
+  if (everyDerivative) {
+    TColgp_Array1OfVec tangents(1, count);
+    Handle(TColStd_HArray1OfBoolean) flags = new TColStd_HArray1OfBoolean(1, count);
+    for (int i = 0; i < count; ++i) {
+      tangents.SetValue(i + 1, nodes[i].tangent);
+      flags->SetValue(i + 1, true);
+    }
+    interpolation.Load(tangents, flags, false);
+  } else {
+    interpolation.Load(nodes.front().tangent, nodes.back().tangent, false);
+  }
+  interpolation.Perform();
+  return interpolation.IsDone() ? interpolation.Curve() : nullptr;
+}
+
+Handle(Geom_BSplineCurve)
+    fittedCurve(const CurveSampler& sample, const CurveSample& first, const CurveSample& last, double tolerance) {
+  std::vector<CurveSample> start;
+  CurveSample previous = first;
+  for (int i = 0; i <= kStartIntervals; ++i) {
+    const double t = first.t + (last.t - first.t) * i / kStartIntervals;
+    const std::optional<CurveSample> next = sample(t, previous, previous);
+    if (!next) return nullptr;
+    start.push_back(previous = *next);
+  }
+  // The ends are the given points exactly, so that neighbouring curves meet where they should.
+  start.front().point = first.point;
+  start.back().point = last.point;
+  std::vector<CurveSample> nodes{start.front()}, middles;
+  for (int i = 0; i < kStartIntervals; ++i) {
+    if (!refine(sample, start[i], start[i + 1], tolerance, 0, nodes, middles)) return nullptr;
+    nodes.push_back(start[i + 1]);
+  }
+  // A C2 cubic has half the poles of the Hermite cubic, which makes later work on the edge
+  // cheaper; taken where it too keeps to the curve.
+  Handle(Geom_BSplineCurve) smooth = cubicThrough(nodes, false);
+  if (!smooth.IsNull() && within(smooth, middles, tolerance)) return smooth;
+  Handle(Geom_BSplineCurve) hermite = cubicThrough(nodes, true);
+  return !hermite.IsNull() && within(hermite, middles, tolerance) ? hermite : nullptr;
+}
+
+}  // namespace airshape::structure

@@ -1,0 +1,324 @@
+#include "plane_region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2dAPI_InterCurveCurve.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <IntRes2d_IntersectionPoint.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+namespace airshape::structure {
+
+PlaneCurve planeCurve(const gp_Pln& plane, const Handle(Geom_BSplineCurve) & curve) {
+  const gp_Ax3& frame = plane.Position();
+  const gp_Pnt origin = frame.Location();
+  const gp_Vec x(frame.XDirection()), y(frame.YDirection());
+  Handle(Geom_BSplineCurve) inPlane = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  if (inPlane->IsPeriodic()) inPlane->SetNotPeriodic();  // a closed curve, begun at its seam
+  TColgp_Array1OfPnt2d images(1, inPlane->NbPoles());
+  for (int i = 1; i <= inPlane->NbPoles(); ++i) {
+    const gp_Vec offset(origin, inPlane->Pole(i));
+    const gp_Pnt2d image(offset.Dot(x), offset.Dot(y));
+    images.SetValue(i, image);
+    inPlane->SetPole(i, origin.Translated(image.X() * x + image.Y() * y));
+  }
+  TColStd_Array1OfReal knots(1, inPlane->NbKnots());
+  TColStd_Array1OfInteger multiplicities(1, inPlane->NbKnots());
+  inPlane->Knots(knots);
+  inPlane->Multiplicities(multiplicities);
+  Handle(Geom2d_BSplineCurve) image;
+  if (inPlane->IsRational()) {
+    TColStd_Array1OfReal weights(1, inPlane->NbPoles());
+    inPlane->Weights(weights);
+    image = new Geom2d_BSplineCurve(images, weights, knots, multiplicities, inPlane->Degree());
+  } else {
+    image = new Geom2d_BSplineCurve(images, knots, multiplicities, inPlane->Degree());
+  }
+  return {inPlane, image};
+}
+
+namespace {
+
+/// The piece of a curve between two of its parameters, as a B-spline of its own.
+Handle(Geom_BSplineCurve) pieceOf(const Handle(Geom_BSplineCurve) & curve, double from, double to) {
+  Handle(Geom_BSplineCurve) piece = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  if (from > piece->FirstParameter() || to < piece->LastParameter()) piece->Segment(from, to);
+  return piece;
+}
+
+/// An edge's curve as a B-spline over the edge's range, running the way the edge does.
+Handle(Geom_BSplineCurve) curveOf(const TopoDS_Edge& edge) {
+  double first = 0.0, last = 0.0;
+  const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+  if (curve.IsNull()) return nullptr;
+  Handle(Geom_BSplineCurve) spline = Handle(Geom_BSplineCurve)::DownCast(curve);
+  spline = spline.IsNull() ? GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last))
+                           : pieceOf(spline, first, last);
+  if (edge.Orientation() == TopAbs_REVERSED) spline->Reverse();
+  return spline;
+}
+
+/// Points along a loop, closely enough to stand for it in the tests of which side a point
+/// lies on (eight to each span of each curve).
+std::vector<gp_Pnt2d> polygonOf(const PlaneLoop& loop) {
+  std::vector<gp_Pnt2d> points;
+  for (const PlaneCurve& curve : loop) {
+    const int count = 8 * std::max(1, curve.image->NbKnots() - 1) * curve.image->Degree();
+    const double a = curve.image->FirstParameter(), b = curve.image->LastParameter();
+    for (int i = 0; i < count; ++i) points.push_back(curve.image->Value(a + (b - a) * i / count));
+  }
+  return points;
+}
+
+/// Twice the signed area a polygon encloses (positive counterclockwise).
+double doubleArea(const std::vector<gp_Pnt2d>& polygon) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const gp_Pnt2d &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+    sum += p.X() * q.Y() - q.X() * p.Y();
+  }
+  return sum;
+}
+
+/// Whether a point lies inside a region given by the polygons of its loops (even-odd rule).
+bool insideOf(const std::vector<std::vector<gp_Pnt2d>>& polygons, const gp_Pnt2d& point) {
+  bool inside = false;
+  for (const std::vector<gp_Pnt2d>& polygon : polygons)
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const gp_Pnt2d &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+      if ((p.Y() > point.Y()) == (q.Y() > point.Y())) continue;
+      const double x = p.X() + (point.Y() - p.Y()) * (q.X() - p.X()) / (q.Y() - p.Y());
+      if (x > point.X()) inside = !inside;
+    }
+  return inside;
+}
+
+std::vector<std::vector<gp_Pnt2d>> polygonsOf(const PlaneRegion& region) {
+  std::vector<std::vector<gp_Pnt2d>> polygons;
+  for (const PlaneLoop& loop : region) polygons.push_back(polygonOf(loop));
+  return polygons;
+}
+
+/// A place on a region's boundary: which loop, which of its curves, at which parameter.
+struct Place {
+  std::size_t loop = 0, curve = 0;
+  double t = 0.0;
+  bool operator<(const Place& other) const {
+    return std::tie(loop, curve, t) < std::tie(other.loop, other.curve, other.t);
+  }
+};
+
+/// Where the two boundaries cross: the place on each, and the point.
+struct Crossing {
+  Place onA, onB;
+  gp_Pnt point;
+};
+
+/// Every crossing of the two boundaries; nothing where they run together or touch without
+/// crossing.
+std::optional<std::vector<Crossing>> crossingsOf(const PlaneRegion& a, const PlaneRegion& b, double tolerance) {
+  std::vector<Crossing> crossings;
+  for (std::size_t la = 0; la < a.size(); ++la)
+    for (std::size_t ca = 0; ca < a[la].size(); ++ca)
+      for (std::size_t lb = 0; lb < b.size(); ++lb)
+        for (std::size_t cb = 0; cb < b[lb].size(); ++cb) {
+          const PlaneCurve &first = a[la][ca], &second = b[lb][cb];
+          const Geom2dAPI_InterCurveCurve meeting(first.image, second.image, 0.1 * tolerance);
+          if (meeting.NbSegments() > 0) return std::nullopt;
+          for (int i = 1; i <= meeting.NbPoints(); ++i) {
+            const IntRes2d_IntersectionPoint& point = meeting.Intersector().Point(i);
+            const double ta = point.ParamOnFirst(), tb = point.ParamOnSecond();
+            gp_Pnt2d at;
+            gp_Vec2d da, db;
+            first.image->D1(ta, at, da);
+            second.image->D1(tb, at, db);
+            if (std::abs(da.Crossed(db)) <= 1e-6 * da.Magnitude() * db.Magnitude()) return std::nullopt;
+            const gp_Pnt spot = first.curve->Value(ta);
+            // A crossing at a joint of two curves is found on both: kept once.
+            const bool known = std::any_of(crossings.begin(), crossings.end(), [&](const Crossing& crossing) {
+              return crossing.point.Distance(spot) <= tolerance;
+            });
+            if (!known) crossings.push_back({{la, ca, ta}, {lb, cb, tb}, spot});
+          }
+        }
+  return crossings;
+}
+
+/// A run along one loop of a boundary from one crossing to the next (or, for a loop no
+/// crossing meets, the whole loop): its curves' pieces and the crossings at its ends.
+struct Run {
+  std::vector<Handle(Geom_BSplineCurve)> pieces;
+  std::optional<std::size_t> from, to;  ///< crossing indices; none for a whole loop
+  gp_Pnt2d middle;                      ///< a point of the run away from its ends
+};
+
+/// The runs of a region's boundary between the crossings (`onA`: their places on a, else b).
+std::vector<Run> runsOf(const PlaneRegion& region, const std::vector<Crossing>& crossings, bool onA, double tolerance) {
+  std::vector<Run> runs;
+  for (std::size_t l = 0; l < region.size(); ++l) {
+    const PlaneLoop& loop = region[l];
+    std::vector<std::pair<Place, std::size_t>> marks;
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+      const Place& place = onA ? crossings[i].onA : crossings[i].onB;
+      if (place.loop == l) marks.emplace_back(place, i);
+    }
+    std::sort(marks.begin(), marks.end());
+    if (marks.empty()) {
+      Run whole;
+      for (const PlaneCurve& curve : loop) whole.pieces.push_back(curve.curve);
+      const PlaneCurve& first = loop.front();
+      whole.middle = first.image->Value(0.5 * (first.image->FirstParameter() + first.image->LastParameter()));
+      runs.push_back(whole);
+      continue;
+    }
+    // From each mark along the loop (round its end) to the next.
+    for (std::size_t m = 0; m < marks.size(); ++m) {
+      const auto& [start, startIndex] = marks[m];
+      const auto& [end, endIndex] = marks[(m + 1) % marks.size()];
+      Run run;
+      run.from = startIndex;
+      run.to = endIndex;
+      double longest = -1.0;
+      std::size_t curve = start.curve;
+      double t = start.t;
+      for (std::size_t step = 0; step <= loop.size(); ++step) {
+        const PlaneCurve& here = loop[curve];
+        // The run ends on the end mark's curve, unless that is where it starts and the end
+        // lies behind the start (the run goes round the loop first).
+        const bool last = curve == end.curve && (step > 0 || end.t > t);
+        const double stop = last ? end.t : here.curve->LastParameter();
+        const gp_Pnt a = here.curve->Value(t), b = here.curve->Value(stop);
+        if (stop - t > 1e-12 * (here.curve->LastParameter() - here.curve->FirstParameter()) &&
+            a.Distance(b) > tolerance) {
+          run.pieces.push_back(pieceOf(here.curve, t, stop));
+          if (a.Distance(b) > longest) {
+            longest = a.Distance(b);
+            run.middle = here.image->Value(0.5 * (t + stop));
+          }
+        }
+        if (last) break;
+        curve = (curve + 1) % loop.size();
+        t = loop[curve].curve->FirstParameter();
+      }
+      if (!run.pieces.empty()) runs.push_back(run);
+    }
+  }
+  return runs;
+}
+
+/// The face of the plane a closed chain of curve pieces bounds, the pieces joined by shared
+/// vertices; nothing when OCCT cannot make it.
+std::optional<TopoDS_Face> faceOf(const gp_Pln& plane, const std::vector<Handle(Geom_BSplineCurve)>& pieces,
+                                  double tolerance) {
+  std::vector<TopoDS_Vertex> vertices;
+  BRep_Builder builder;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const gp_Pnt end = pieces[i]->EndPoint(), next = pieces[(i + 1) % pieces.size()]->StartPoint();
+    TopoDS_Vertex vertex;
+    builder.MakeVertex(vertex, gp_Pnt(0.5 * (end.XYZ() + next.XYZ())),
+                       std::max(2.0 * tolerance, 0.6 * end.Distance(next)));
+    vertices.push_back(vertex);
+  }
+  BRepBuilderAPI_MakeWire wire;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const TopoDS_Vertex& from = vertices[(i + pieces.size() - 1) % pieces.size()];
+    BRepBuilderAPI_MakeEdge edge(pieces[i], from, vertices[i], pieces[i]->FirstParameter(), pieces[i]->LastParameter());
+    if (!edge.IsDone()) return std::nullopt;
+    wire.Add(edge.Edge());
+    if (!wire.IsDone()) return std::nullopt;
+  }
+  BRepBuilderAPI_MakeFace face(plane, wire.Wire(), true);
+  if (!face.IsDone()) return std::nullopt;
+  return face.Face();
+}
+
+}  // namespace
+
+std::optional<PlaneRegion> regionOf(const gp_Pln& plane, const TopoDS_Face& face) {
+  int wires = 0;
+  for (TopExp_Explorer wire(face, TopAbs_WIRE); wire.More(); wire.Next()) ++wires;
+  if (wires != 1) return std::nullopt;
+  PlaneLoop loop;
+  for (BRepTools_WireExplorer edge(BRepTools::OuterWire(face), face); edge.More(); edge.Next()) {
+    const Handle(Geom_BSplineCurve) curve = curveOf(edge.Current());
+    if (curve.IsNull()) return std::nullopt;
+    loop.push_back(planeCurve(plane, curve));
+  }
+  if (loop.empty()) return std::nullopt;
+  if (doubleArea(polygonOf(loop)) < 0.0) {  // the face lies on its left when it runs the other way
+    std::reverse(loop.begin(), loop.end());
+    for (PlaneCurve& curve : loop) {
+      curve.curve->Reverse();
+      curve.image->Reverse();
+    }
+  }
+  return PlaneRegion{loop};
+}
+
+std::optional<std::vector<TopoDS_Face>> commonOf(const gp_Pln& plane, const PlaneRegion& a, const PlaneRegion& b,
+                                                 double tolerance) {
+  const std::optional<std::vector<Crossing>> crossings = crossingsOf(a, b, tolerance);
+  if (!crossings) return std::nullopt;
+  // The common's boundary: the runs of each boundary inside the other region. Each leaves a
+  // crossing where the run before it (of either boundary) arrives: the common lies on the
+  // left of both.
+  std::vector<Run> kept;
+  const auto keep = [&](const PlaneRegion& region, const PlaneRegion& other, bool onA) {
+    const std::vector<std::vector<gp_Pnt2d>> polygons = polygonsOf(other);
+    for (const Run& run : runsOf(region, *crossings, onA, tolerance))
+      if (insideOf(polygons, run.middle)) kept.push_back(run);
+  };
+  keep(a, b, true);
+  keep(b, a, false);
+  std::map<std::size_t, std::size_t> leaving;  // crossing -> the kept run leaving it
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    if (kept[i].from && !leaving.emplace(*kept[i].from, i).second) return std::nullopt;
+  std::vector<bool> used(kept.size(), false);
+  std::vector<TopoDS_Face> faces;
+  for (std::size_t first = 0; first < kept.size(); ++first) {
+    if (used[first]) continue;
+    std::vector<Handle(Geom_BSplineCurve)> chain;
+    std::size_t run = first;
+    for (std::size_t step = 0; step <= kept.size(); ++step) {
+      used[run] = true;
+      chain.insert(chain.end(), kept[run].pieces.begin(), kept[run].pieces.end());
+      if (!kept[run].to) break;  // a whole loop
+      const auto next = leaving.find(*kept[run].to);
+      if (next == leaving.end()) return std::nullopt;
+      run = next->second;
+      if (run == first) break;
+      if (used[run]) return std::nullopt;
+    }
+    if (kept[run].to && run != first) return std::nullopt;
+    std::vector<gp_Pnt2d> polygon;
+    for (const Handle(Geom_BSplineCurve) & piece : chain) {
+      const PlaneCurve image = planeCurve(plane, piece);
+      const std::vector<gp_Pnt2d> points = polygonOf({image});
+      polygon.insert(polygon.end(), points.begin(), points.end());
+    }
+    if (doubleArea(polygon) <= 0.0) return std::nullopt;  // a hole, or nothing
+    const std::optional<TopoDS_Face> face = faceOf(plane, chain, tolerance);
+    if (!face) return std::nullopt;
+    faces.push_back(*face);
+  }
+  return faces;
+}
+
+}  // namespace airshape::structure
