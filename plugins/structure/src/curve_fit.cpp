@@ -3,8 +3,11 @@
 #include <vector>
 
 #include <GeomAPI_Interpolate.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <TColStd_HArray1OfBoolean.hxx>
 #include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_Array1OfVec.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 
@@ -42,6 +45,18 @@ bool within(const Handle(Geom_BSplineCurve) & curve, const std::vector<CurveSamp
 }
 
 }  // namespace
+
+Handle(Geom_BSplineCurve) straightCurve(const gp_Pnt& from, const gp_Pnt& to) {
+  TColgp_Array1OfPnt poles(1, 2);
+  poles.SetValue(1, from);
+  poles.SetValue(2, to);
+  TColStd_Array1OfReal knots(1, 2);
+  knots.SetValue(1, 0.0);
+  knots.SetValue(2, from.Distance(to));
+  TColStd_Array1OfInteger multiplicities(1, 2);
+  multiplicities.Init(2);
+  return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
+}
 
 Handle(Geom_BSplineCurve) cubicThrough(const std::vector<CurveSample>& nodes, bool everyDerivative) {
   const int count = static_cast<int>(nodes.size());

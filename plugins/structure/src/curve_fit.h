@@ -26,6 +26,10 @@ struct CurveSample {
 using CurveSampler =
     std::function<std::optional<CurveSample>(double t, const CurveSample& before, const CurveSample& after)>;
 
+/// The straight line from one point to another as a B-spline of degree 1, parametrised by
+/// length.
+Handle(Geom_BSplineCurve) straightCurve(const gp_Pnt& from, const gp_Pnt& to);
+
 /// The cubic B-spline through the samples (at their parameters, ascending), with their
 /// derivatives at every sample (a Hermite cubic) or only at the ends (a C2 cubic); null when
 /// OCCT cannot make it.

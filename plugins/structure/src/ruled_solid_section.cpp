@@ -8,9 +8,6 @@
 #include <BRep_Tool.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Plane.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -45,19 +42,6 @@ std::vector<double> rootsOf(const Function& f, double a, double b) {
     previous = x, fPrevious = fx;
   }
   return roots;
-}
-
-/// A straight piece from one point to another, parametrised by length.
-Handle(Geom_BSplineCurve) straightPiece(const gp_Pnt& from, const gp_Pnt& to) {
-  TColgp_Array1OfPnt poles(1, 2);
-  poles.SetValue(1, from);
-  poles.SetValue(2, to);
-  TColStd_Array1OfReal knots(1, 2);
-  knots.SetValue(1, 0.0);
-  knots.SetValue(2, from.Distance(to));
-  TColStd_Array1OfInteger multiplicities(1, 2);
-  multiplicities.Init(2);
-  return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
 }
 
 /// A piece run so that the solid lies on its left (seen from the plane's normal): `inwards`
@@ -96,7 +80,7 @@ bool planarPieces(const TopoDS_Face& face, const gp_Pln& facePlane, const gp_Pln
             [&](const gp_Pnt& a, const gp_Pnt& b) { return gp_Vec(a.XYZ()).Dot(line) < gp_Vec(b.XYZ()).Dot(line); });
   const gp_Vec inwards = outwards(face, gp_Vec(facePlane.Axis().Direction())).Reversed();
   for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
-    Handle(Geom_BSplineCurve) piece = straightPiece(points[i], points[i + 1]);
+    Handle(Geom_BSplineCurve) piece = straightCurve(points[i], points[i + 1]);
     turnInwards(piece, plane, gp_Vec(points[i], points[i + 1]), inwards);
     pieces.push_back(piece);
   }

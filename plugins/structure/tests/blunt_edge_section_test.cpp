@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <BRepAdaptor_Curve.hxx>
@@ -78,13 +79,25 @@ double offTrailingEdgeFace(const gp_Pnt& point) {
   return nearest;
 }
 
-TEST(BluntEdgeSection, TwistedTrailingEdgeIsClosedOnItsRuledFace) {
+// An oblique plane across the span, its lines running from the lower skin to the upper.
+const gp_Vec kNormal = gp_Vec(0.2, 1.0, 0.1).Normalized();
+const CrossingLines kLines{gp_Pnt(0.0, 0.5, 0.0), gp_Vec(1.0, -0.2, 0.0),
+                           kNormal.Crossed(gp_Vec(1.0, -0.2, 0.0)).Normalized()};
+
+/// The section of the two skins in that plane, open at both ends.
+std::optional<TopoDS_Face> twistedSection(OpenEnds openEnds) {
   const TopoDS_Face upper = skin(0.08, kUpperRoot, kUpperTip), lower = skin(-0.06, kLowerRoot, kLowerTip);
-  // An oblique plane across the span, its lines running from the lower skin to the upper.
-  const gp_Vec normal = gp_Vec(0.2, 1.0, 0.1).Normalized(), along(1.0, -0.2, 0.0);
-  const CrossingLines lines{gp_Pnt(0.0, 0.5, 0.0), along, normal.Crossed(along).Normalized()};
-  const auto face =
-      sectionBetweenSkins(upper, lower, lines, CrossingEnd::open(), CrossingEnd::open(), 1e-9, OpenEnds::SkinsMeet);
+  return sectionBetweenSkins(upper, lower, kLines, CrossingEnd::open(), CrossingEnd::open(), 1e-9, openEnds);
+}
+
+double areaOf(const TopoDS_Face& face) {
+  GProp_GProps properties;
+  BRepGProp::SurfaceProperties(face, properties, 1e-12);
+  return properties.Mass();
+}
+
+TEST(BluntEdgeSection, TwistedTrailingEdgeIsClosedOnItsRuledFace) {
+  const auto face = twistedSection(OpenEnds::SkinsMeet);
   ASSERT_TRUE(face);
   int closing = 0;
   for (TopExp_Explorer explorer(*face, TopAbs_EDGE); explorer.More(); explorer.Next()) {
@@ -97,31 +110,20 @@ TEST(BluntEdgeSection, TwistedTrailingEdgeIsClosedOnItsRuledFace) {
       const gp_Pnt point =
           curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / 10);
       EXPECT_LT(offTrailingEdgeFace(point), 1e-12);
-      EXPECT_LT(std::abs(gp_Vec(lines.origin, point).Dot(normal)), 1e-12);
+      EXPECT_LT(std::abs(gp_Vec(kLines.origin, point).Dot(kNormal)), 1e-12);
     }
   }
   EXPECT_EQ(closing, 1);
-  GProp_GProps properties;
-  BRepGProp::SurfaceProperties(*face, properties);
-  EXPECT_GT(properties.Mass(), 0.0);
+  EXPECT_GT(areaOf(*face), 0.0);
 }
 
 TEST(BluntEdgeSection, ClosedStraightWhenAskedTo) {
-  const TopoDS_Face upper = skin(0.08, kUpperRoot, kUpperTip), lower = skin(-0.06, kLowerRoot, kLowerTip);
-  const gp_Vec normal = gp_Vec(0.2, 1.0, 0.1).Normalized(), along(1.0, -0.2, 0.0);
-  const CrossingLines lines{gp_Pnt(0.0, 0.5, 0.0), along, normal.Crossed(along).Normalized()};
-  const auto twisted =
-      sectionBetweenSkins(upper, lower, lines, CrossingEnd::open(), CrossingEnd::open(), 1e-9, OpenEnds::SkinsMeet);
-  const auto straight = sectionBetweenSkins(upper, lower, lines, CrossingEnd::open(), CrossingEnd::open(), 1e-9,
-                                            OpenEnds::ClosedStraight);
+  const auto twisted = twistedSection(OpenEnds::SkinsMeet), straight = twistedSection(OpenEnds::ClosedStraight);
   ASSERT_TRUE(twisted);
   ASSERT_TRUE(straight);
-  GProp_GProps a, b;
-  BRepGProp::SurfaceProperties(*twisted, a);
-  BRepGProp::SurfaceProperties(*straight, b);
   // The twisted face bulges beyond the chord between the skins' ends, by a little.
-  EXPECT_GT(std::abs(a.Mass() - b.Mass()), 1e-9);
-  EXPECT_LT(std::abs(a.Mass() - b.Mass()), 1e-3 * a.Mass());
+  EXPECT_GT(std::abs(areaOf(*twisted) - areaOf(*straight)), 1e-9);
+  EXPECT_LT(std::abs(areaOf(*twisted) - areaOf(*straight)), 1e-3 * areaOf(*twisted));
 }
 
 }  // namespace

@@ -11,11 +11,9 @@
 #include <GC_MakeCircle.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomConvert.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array1OfPnt.hxx>
 #include <gp_Ax2.hxx>
 
+#include "curve_fit.h"
 #include "plane_region.h"
 
 namespace airshape::structure {
@@ -24,25 +22,13 @@ namespace {
 const gp_Pln kPlane(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
 constexpr double kTolerance = 1e-9;
 
-Handle(Geom_BSplineCurve) segment(const gp_Pnt& from, const gp_Pnt& to) {
-  TColgp_Array1OfPnt poles(1, 2);
-  poles.SetValue(1, from);
-  poles.SetValue(2, to);
-  TColStd_Array1OfReal knots(1, 2);
-  knots.SetValue(1, 0.0);
-  knots.SetValue(2, 1.0);
-  TColStd_Array1OfInteger multiplicities(1, 2);
-  multiplicities.Init(2);
-  return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
-}
-
 /// The region inside a polygon of (x, y) corners, counterclockwise.
 PlaneRegion polygon(const std::vector<std::pair<double, double>>& corners) {
   PlaneLoop loop;
   for (std::size_t i = 0; i < corners.size(); ++i) {
     const auto& [x0, y0] = corners[i];
     const auto& [x1, y1] = corners[(i + 1) % corners.size()];
-    loop.push_back(planeCurve(kPlane, segment(gp_Pnt(x0, y0, 0), gp_Pnt(x1, y1, 0))));
+    loop.push_back(planeCurve(kPlane, straightCurve(gp_Pnt(x0, y0, 0), gp_Pnt(x1, y1, 0))));
   }
   return {loop};
 }
