@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <limits>
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 
@@ -186,17 +188,46 @@ std::optional<std::vector<TopoDS_Face>> RibCutter::inDevice(const RibOutline& ou
   // The device is its wing's common with a simple solid: in the rib's plane, the wing's
   // section straight from the wing's untrimmed skins in common with that solid's section (the
   // device's own faces are trimmed pieces of the skins, which the trace does not take).
-  if (!wingSkins_) wingSkins_.emplace(frame_.componentSegmentSkin(true), frame_.componentSegmentSkin(false));
-  const std::optional<TopoDS_Face> section = sectionOf(outline, wingSkins_->first, wingSkins_->second);
-  if (!section) return std::nullopt;
   const double tolerance = kTraceTolerance * reach_;
   const gp_Pln plane(outline.lines.origin, outline.lines.planeNormal());
-  const std::optional<PlaneRegion> wing = regionOf(plane, *section);
   const std::optional<PlaneRegion> device = ruledSolidSection(cutter, plane, tolerance);
-  if (!wing || !device) return std::nullopt;
+  if (!device || device->empty()) return std::nullopt;
+  if (!wingSkins_) wingSkins_.emplace(frame_.componentSegmentSkin(true), frame_.componentSegmentSkin(false));
+  const std::optional<TopoDS_Face> section = wingSectionAcross(outline);
+  if (!section) return std::nullopt;
+  const std::optional<PlaneRegion> wing = regionOf(plane, *section);
+  if (!wing) return std::nullopt;
   std::optional<std::vector<TopoDS_Face>> faces = commonOf(plane, *wing, *device, tolerance);
   if (!faces || faces->empty()) return std::nullopt;  // what a Boolean cut tells better
   return faces;
+}
+
+std::optional<TopoDS_Face> RibCutter::wingSectionAcross(const RibOutline& outline) const {
+  // An open end need not be traced round the wing's leading edge when the device lies well
+  // aft of it (a flap): the section is traced only across the lines that reach the device's
+  // box, closed straight outside the device, where the wing reaches beyond the box.
+  if (!deviceBox_) {
+    deviceBox_.emplace();
+    BRepBndLib::Add(frame_.solid(), *deviceBox_, false);
+  }
+  double first = std::numeric_limits<double>::max(), last = -first;
+  double x[2], y[2], z[2];
+  deviceBox_->Get(x[0], y[0], z[0], x[1], y[1], z[1]);
+  for (int corner = 0; corner < 8; ++corner) {
+    const double t = outline.lines.lineThrough(gp_Pnt(x[corner & 1], y[(corner >> 1) & 1], z[(corner >> 2) & 1]));
+    first = std::min(first, t), last = std::max(last, t);
+  }
+  const double margin = 1e-3 * (last - first);
+  const auto upper = crossingSpan(wingSkins_->first, outline.lines);
+  const auto lower = crossingSpan(wingSkins_->second, outline.lines);
+  RibOutline across = outline;
+  if (upper && lower) {
+    if (across.start.kind == CrossingEnd::Kind::Open && first - margin > std::max(upper->first, lower->first))
+      across.start = CrossingEnd::atLine(first - margin);
+    if (across.end.kind == CrossingEnd::Kind::Open && last + margin < std::min(upper->second, lower->second))
+      across.end = CrossingEnd::atLine(last + margin);
+  }
+  return sectionOf(across, wingSkins_->first, wingSkins_->second);
 }
 
 std::vector<TopoDS_Face> RibCutter::cut(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,

@@ -386,10 +386,9 @@ std::optional<double> endOn(const std::vector<CrossedPatch>& crossed, const Cros
   return std::nullopt;
 }
 
-}  // namespace
-
-std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const CrossingLines& lines,
-                                              const CrossingEnd& fromEnd, const CrossingEnd& toEnd, double tolerance) {
+/// The patches the plane crosses, each once, sorted along the lines; nothing when a face is no
+/// untrimmed patch or the plane crosses one other than once.
+std::optional<std::vector<CrossedPatch>> crossedPatches(const TopoDS_Shape& skin, const CrossingLines& lines) {
   const gp_Vec normal = lines.planeNormal();
   std::vector<CrossedPatch> crossed;
   for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
@@ -404,6 +403,22 @@ std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const Cr
   if (crossed.empty()) return std::nullopt;
   std::sort(crossed.begin(), crossed.end(),
             [](const CrossedPatch& a, const CrossedPatch& b) { return a.entry.t < b.entry.t; });
+  return crossed;
+}
+
+}  // namespace
+
+std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, const CrossingLines& lines) {
+  const auto crossed = crossedPatches(skin, lines);
+  if (!crossed) return std::nullopt;
+  return std::make_pair(crossed->front().entry.t, crossed->back().exit.t);
+}
+
+std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const CrossingLines& lines,
+                                              const CrossingEnd& fromEnd, const CrossingEnd& toEnd, double tolerance) {
+  auto found = crossedPatches(skin, lines);
+  if (!found) return std::nullopt;
+  std::vector<CrossedPatch>& crossed = *found;
   for (std::size_t i = 1; i < crossed.size(); ++i) {
     if (crossed[i].entry.point.Distance(crossed[i - 1].exit.point) > tolerance) return std::nullopt;  // a gap
     crossed[i].entry.point = crossed[i - 1].exit.point;  // one point where two patches meet

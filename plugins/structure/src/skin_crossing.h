@@ -59,6 +59,10 @@ struct SkinCrossing {
   gp_Pnt end() const { return pieces.back()->EndPoint(); }
 };
 
+/// The range of the lines (their t) across which the plane crosses the skin, from its first
+/// crossing to its last; nothing when the skin is not what the trace takes.
+std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, const CrossingLines& lines);
+
 /// Traces the skin crossing, or gives nothing when the skin is not what the direct trace
 /// handles: faces that are not untrimmed B-spline patches, a face the plane crosses other than
 /// once, faces crossed with gaps between them, an end the skin does not reach, or a line the
