@@ -63,8 +63,9 @@ Handle(Geom_BSplineCurve) pieceOf(const Handle(Geom_BSplineCurve) & curve, doubl
   return piece;
 }
 
-/// An edge's curve as a B-spline over the edge's range, running the way the edge does.
-Handle(Geom_BSplineCurve) curveOf(const TopoDS_Edge& edge) {
+}  // namespace
+
+Handle(Geom_BSplineCurve) edgeCurve(const TopoDS_Edge& edge) {
   double first = 0.0, last = 0.0;
   const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
   if (curve.IsNull()) return nullptr;
@@ -74,6 +75,8 @@ Handle(Geom_BSplineCurve) curveOf(const TopoDS_Edge& edge) {
   if (edge.Orientation() == TopAbs_REVERSED) spline->Reverse();
   return spline;
 }
+
+namespace {
 
 /// Points along a loop, closely enough to stand for it in the tests of which side a point
 /// lies on and of how it runs: each knot span's start and middle, at least sixteen to a curve (the
@@ -262,14 +265,19 @@ std::optional<PlaneRegion> regionOf(const gp_Pln& plane, const TopoDS_Face& face
   int wires = 0;
   for (TopExp_Explorer wire(face, TopAbs_WIRE); wire.More(); wire.Next()) ++wires;
   if (wires != 1) return std::nullopt;
-  PlaneLoop loop;
+  std::vector<Handle(Geom_BSplineCurve)> curves;
   for (BRepTools_WireExplorer edge(BRepTools::OuterWire(face), face); edge.More(); edge.Next()) {
-    const Handle(Geom_BSplineCurve) curve = curveOf(edge.Current());
-    if (curve.IsNull()) return std::nullopt;
-    loop.push_back(planeCurve(plane, curve));
+    curves.push_back(edgeCurve(edge.Current()));
+    if (curves.back().IsNull()) return std::nullopt;
   }
+  return regionInside(plane, curves);
+}
+
+std::optional<PlaneRegion> regionInside(const gp_Pln& plane, const std::vector<Handle(Geom_BSplineCurve)>& curves) {
+  PlaneLoop loop;
+  for (const Handle(Geom_BSplineCurve) & curve : curves) loop.push_back(planeCurve(plane, curve));
   if (loop.empty()) return std::nullopt;
-  if (doubleArea(polygonOf(loop)) < 0.0) {  // the face lies on its left when it runs the other way
+  if (doubleArea(polygonOf(loop)) < 0.0) {  // the region lies on its left when it runs the other way
     std::reverse(loop.begin(), loop.end());
     for (PlaneCurve& curve : loop) {
       curve.curve->Reverse();

@@ -5,6 +5,7 @@
 
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Pln.hxx>
 
@@ -27,9 +28,17 @@ using PlaneRegion = std::vector<PlaneLoop>;
 /// The curve put exactly into the plane (its poles projected onto it), with its image.
 PlaneCurve planeCurve(const gp_Pln& plane, const Handle(Geom_BSplineCurve) & curve);
 
+/// An edge's curve as a B-spline over the edge's range, running the way the edge does; null
+/// for an edge without a curve in space.
+Handle(Geom_BSplineCurve) edgeCurve(const TopoDS_Edge& edge);
+
 /// A planar face's region: its wire, run so that the face lies on its left; nothing for a
 /// face with holes.
 std::optional<PlaneRegion> regionOf(const gp_Pln& plane, const TopoDS_Face& face);
+
+/// The region inside a closed loop of curves of the plane joined end to end, run so that it
+/// lies on the loop's left.
+std::optional<PlaneRegion> regionInside(const gp_Pln& plane, const std::vector<Handle(Geom_BSplineCurve)>& curves);
 
 /// The faces where two regions overlap (the Boolean common of two planar regions, without a
 /// Boolean operation): each bounded by the pieces of either boundary that lie inside the

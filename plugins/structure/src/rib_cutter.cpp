@@ -13,6 +13,7 @@
 #include "faces_inside.h"
 #include "plane_region.h"
 #include "ruled_solid_section.h"
+#include "section_profile.h"
 #include "skin_section.h"
 #include "spar_list.h"
 #include "spar_web.h"
@@ -146,7 +147,7 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
     if (!frame_.inDevice()) {
       const auto& [upper, lower] = skins();
       if (auto face = sectionOf(outlines[i], upper, lower)) return std::vector<TopoDS_Face>{*face};
-      return std::nullopt;
+      return inSection(outlines[i], upper, lower);
     }
     return cutter ? inDevice(outlines[i], *cutter) : std::nullopt;
   };
@@ -181,6 +182,22 @@ std::optional<TopoDS_Face> RibCutter::sectionOf(const RibOutline& outline, const
                                                 const TopoDS_Shape& lower) const {
   return sectionBetweenSkins(upper, lower, outline.lines, outline.start, outline.end, kTraceTolerance * reach_,
                              OpenEnds::SkinsMeet);
+}
+
+std::optional<std::vector<TopoDS_Face>> RibCutter::inSection(const RibOutline& outline, const TopoDS_Shape& upper,
+                                                             const TopoDS_Shape& lower) const {
+  // The trace fails where the rib's plane runs along the skins' patch boundaries: a rib lying
+  // in the root, the tip or a section between segments is the profile there, between its
+  // borders (the outline's sides).
+  const double tolerance = kTraceTolerance * reach_;
+  const gp_Pln plane(outline.lines.origin, outline.lines.planeNormal());
+  const std::optional<PlaneRegion> profile = profileInPlane(upper, lower, plane, 10.0 * tolerance);
+  if (!profile) return std::nullopt;
+  const std::optional<PlaneRegion> between = regionOf(plane, outline.face);
+  if (!between) return std::nullopt;
+  std::optional<std::vector<TopoDS_Face>> faces = commonOf(plane, *profile, *between, tolerance);
+  if (!faces || faces->empty()) return std::nullopt;
+  return faces;
 }
 
 std::optional<std::vector<TopoDS_Face>> RibCutter::inDevice(const RibOutline& outline,

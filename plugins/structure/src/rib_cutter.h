@@ -84,6 +84,10 @@ class RibCutter {
   /// A rib's face straight from two skins where they allow it.
   std::optional<TopoDS_Face> sectionOf(const RibOutline& outline, const TopoDS_Shape& upper,
                                        const TopoDS_Shape& lower) const;
+  /// A rib's faces where its plane is a section's plane of the skins (the profile there between
+  /// its borders), made without a Boolean operation.
+  std::optional<std::vector<TopoDS_Face>> inSection(const RibOutline& outline, const TopoDS_Shape& upper,
+                                                    const TopoDS_Shape& lower) const;
   /// A rib's faces in a device cut out of its wing by `cutter`, made without a Boolean
   /// operation where the wing's skins allow it.
   std::optional<std::vector<TopoDS_Face>> inDevice(const RibOutline& outline, const TopoDS_Shape& cutter) const;

@@ -6,17 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <vector>
 
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
-#include <Geom_BSplineSurface.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -24,36 +18,17 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "skin_section.h"
+#include "test_wing_skins.h"
 
 namespace airshape::structure {
 namespace {
 
-// The trailing-edge lines of the skins, from the root (y = 0) to the tip (y = 1): skew.
-const gp_Pnt kUpperRoot(1, 0, 0.01), kUpperTip(1, 1, 0.03);
-const gp_Pnt kLowerRoot(1, 0, -0.01), kLowerTip(1.05, 1, 0.0);
-
-/// A skin from the leading edge (the origin's line along y) to a trailing-edge line, cubic
-/// along the chord through a crest, straight along the span.
-TopoDS_Face skin(double crest, const gp_Pnt& root, const gp_Pnt& tip) {
-  const auto chord = [&](double y, const gp_Pnt& end) {
-    return std::vector<gp_Pnt>{gp_Pnt(0, y, 0), gp_Pnt(0, y, 0.6 * crest), gp_Pnt(0.5, y, crest), end};
-  };
-  const std::vector<gp_Pnt> atRoot = chord(0.0, root), atTip = chord(1.0, tip);
-  TColgp_Array2OfPnt poles(1, static_cast<int>(atRoot.size()), 1, 2);
-  for (std::size_t i = 0; i < atRoot.size(); ++i) {
-    poles.SetValue(static_cast<int>(i) + 1, 1, atRoot[i]);
-    poles.SetValue(static_cast<int>(i) + 1, 2, atTip[i]);
-  }
-  TColStd_Array1OfReal knots(1, 2);
-  knots.SetValue(1, 0.0);
-  knots.SetValue(2, 1.0);
-  TColStd_Array1OfInteger uMultiplicities(1, 2), vMultiplicities(1, 2);
-  uMultiplicities.Init(4);
-  vMultiplicities.Init(2);
-  const Handle(Geom_BSplineSurface) surface =
-      new Geom_BSplineSurface(poles, knots, knots, uMultiplicities, vMultiplicities, 3, 1);
-  return BRepBuilderAPI_MakeFace(surface, 1e-9).Face();
-}
+using test::kLowerRoot;
+using test::kLowerTip;
+using test::kUpperRoot;
+using test::kUpperTip;
+using test::lowerSkin;
+using test::upperSkin;
 
 /// How far a point lies from the ruled face between the trailing-edge lines: from the nearest
 /// of its rulings, joining the lines' points of equal share.
@@ -86,7 +61,7 @@ const CrossingLines kLines{gp_Pnt(0.0, 0.5, 0.0), gp_Vec(1.0, -0.2, 0.0),
 
 /// The section of the two skins in that plane, open at both ends.
 std::optional<TopoDS_Face> twistedSection(OpenEnds openEnds) {
-  const TopoDS_Face upper = skin(0.08, kUpperRoot, kUpperTip), lower = skin(-0.06, kLowerRoot, kLowerTip);
+  const TopoDS_Face upper = upperSkin(), lower = lowerSkin();
   return sectionBetweenSkins(upper, lower, kLines, CrossingEnd::open(), CrossingEnd::open(), 1e-9, openEnds);
 }
 
