@@ -56,13 +56,13 @@ std::vector<std::vector<TopoDS_Face>> facesInsideEach(const std::vector<TopoDS_F
 
 std::vector<std::vector<TopoDS_Face>> facesInsideEach(
     const std::vector<TopoDS_Face>& faces, const std::function<const TopoDS_Shape&()>& solid,
-    const std::function<std::optional<TopoDS_Face>(std::size_t index)>& direct) {
+    const std::function<std::optional<std::vector<TopoDS_Face>>(std::size_t index)>& direct) {
   std::vector<std::vector<TopoDS_Face>> pieces(faces.size());
   std::vector<TopoDS_Face> toCut;
   std::vector<std::size_t> cutIndices;
   for (std::size_t i = 0; i < faces.size(); ++i) {
-    if (const std::optional<TopoDS_Face> piece = direct(i)) {
-      pieces[i] = {*piece};
+    if (std::optional<std::vector<TopoDS_Face>> made = direct(i)) {
+      pieces[i] = std::move(*made);
     } else {
       toCut.push_back(faces[i]);
       cutIndices.push_back(i);

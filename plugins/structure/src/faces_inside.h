@@ -18,12 +18,12 @@ std::vector<TopoDS_Face> facesInside(const TopoDS_Shape& faces, const TopoDS_Sha
 /// faster than one each: the solid is prepared once). Throws Error when the common fails.
 std::vector<std::vector<TopoDS_Face>> facesInsideEach(const std::vector<TopoDS_Face>& faces, const TopoDS_Shape& solid);
 
-/// For each face, the piece `direct` makes of it without a Boolean operation (a section traced
+/// For each face, the pieces `direct` makes of it without a Boolean operation (a section traced
 /// from the skins), or, where it makes none, its parts inside the solid `solid` gives (asked for
 /// only then: building it may cost more than the pieces): one Boolean common for all of those.
 /// Throws Error when the common fails.
 std::vector<std::vector<TopoDS_Face>> facesInsideEach(
     const std::vector<TopoDS_Face>& faces, const std::function<const TopoDS_Shape&()>& solid,
-    const std::function<std::optional<TopoDS_Face>(std::size_t index)>& direct);
+    const std::function<std::optional<std::vector<TopoDS_Face>>(std::size_t index)>& direct);
 
 }  // namespace airshape::structure

@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
-#include <limits>
 
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "device_section.h"
 #include "faces_inside.h"
 #include "plane_region.h"
-#include "ruled_solid_section.h"
 #include "section_profile.h"
 #include "skin_section.h"
 #include "spar_list.h"
@@ -142,35 +140,28 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
                                                         const std::string& where) const {
   // Ribs straight from the skins where they allow it (much faster than a Boolean cut of skins
   // with many knots); the others cut out of the component segment (or device) by one common.
-  const std::optional<TopoDS_Shape> cutter = frame_.deviceCutter();
+  // In a device cut out of its wing by a simple solid: the wing's section in common with the
+  // solid's, in the rib's plane (device_section.h).
+  std::optional<DeviceSection> inDevice;
+  if (const std::optional<TopoDS_Shape> cutter = frame_.deviceCutter()) inDevice.emplace(frame_, *cutter);
   const auto direct = [&](std::size_t i) -> std::optional<std::vector<TopoDS_Face>> {
     if (!frame_.inDevice()) {
       const auto& [upper, lower] = skins();
       if (auto face = sectionOf(outlines[i], upper, lower)) return std::vector<TopoDS_Face>{*face};
       return inSection(outlines[i], upper, lower);
     }
-    return cutter ? inDevice(outlines[i], *cutter) : std::nullopt;
+    if (!inDevice) return std::nullopt;
+    const RibOutline& outline = outlines[i];
+    return inDevice->faces(outline.lines, outline.start, outline.end, OpenEnds::SkinsMeet);
   };
-  std::vector<std::vector<TopoDS_Face>> ribs(outlines.size());
-  std::vector<TopoDS_Face> toCut;
-  std::vector<std::size_t> cutIndices;
-  for (std::size_t i = 0; i < outlines.size(); ++i) {
-    if (auto faces = direct(i)) {
-      ribs[i] = *faces;
-    } else {
-      toCut.push_back(outlines[i].face);
-      cutIndices.push_back(i);
-    }
-  }
-  if (!toCut.empty()) {
-    std::vector<std::vector<TopoDS_Face>> cut;
-    try {
-      cut = facesInsideEach(toCut, frame_.solid());
-    } catch (const Error&) {
-      throw Error(ErrorCode::InvalidModel, std::string("the ribs cannot be cut out of ") + frame_.hostName(), {},
-                  where);
-    }
-    for (std::size_t k = 0; k < cut.size(); ++k) ribs[cutIndices[k]] = cut[k];
+  std::vector<TopoDS_Face> faces;
+  for (const RibOutline& outline : outlines) faces.push_back(outline.face);
+  std::vector<std::vector<TopoDS_Face>> ribs;
+  try {
+    ribs = facesInsideEach(
+        faces, [&]() -> const TopoDS_Shape& { return frame_.solid(); }, direct);
+  } catch (const Error&) {
+    throw Error(ErrorCode::InvalidModel, std::string("the ribs cannot be cut out of ") + frame_.hostName(), {}, where);
   }
   for (std::size_t i = 0; i < ribs.size(); ++i)
     if (ribs[i].empty())
@@ -198,53 +189,6 @@ std::optional<std::vector<TopoDS_Face>> RibCutter::inSection(const RibOutline& o
   std::optional<std::vector<TopoDS_Face>> faces = commonOf(plane, *profile, *between, tolerance);
   if (!faces || faces->empty()) return std::nullopt;
   return faces;
-}
-
-std::optional<std::vector<TopoDS_Face>> RibCutter::inDevice(const RibOutline& outline,
-                                                            const TopoDS_Shape& cutter) const {
-  // The device is its wing's common with a simple solid: in the rib's plane, the wing's
-  // section straight from the wing's untrimmed skins in common with that solid's section (the
-  // device's own faces are trimmed pieces of the skins, which the trace does not take).
-  const double tolerance = kTraceTolerance * reach_;
-  const gp_Pln plane(outline.lines.origin, outline.lines.planeNormal());
-  const std::optional<PlaneRegion> device = ruledSolidSection(cutter, plane, tolerance);
-  if (!device || device->empty()) return std::nullopt;
-  if (!wingSkins_) wingSkins_.emplace(frame_.componentSegmentSkin(true), frame_.componentSegmentSkin(false));
-  const std::optional<TopoDS_Face> section = wingSectionAcross(outline);
-  if (!section) return std::nullopt;
-  const std::optional<PlaneRegion> wing = regionOf(plane, *section);
-  if (!wing) return std::nullopt;
-  std::optional<std::vector<TopoDS_Face>> faces = commonOf(plane, *wing, *device, tolerance);
-  if (!faces || faces->empty()) return std::nullopt;  // what a Boolean cut tells better
-  return faces;
-}
-
-std::optional<TopoDS_Face> RibCutter::wingSectionAcross(const RibOutline& outline) const {
-  // An open end need not be traced round the wing's leading edge when the device lies well
-  // aft of it (a flap): the section is traced only across the lines that reach the device's
-  // box, closed straight outside the device, where the wing reaches beyond the box.
-  if (!deviceBox_) {
-    deviceBox_.emplace();
-    BRepBndLib::Add(frame_.solid(), *deviceBox_, false);
-  }
-  double first = std::numeric_limits<double>::max(), last = -first;
-  double x[2], y[2], z[2];
-  deviceBox_->Get(x[0], y[0], z[0], x[1], y[1], z[1]);
-  for (int corner = 0; corner < 8; ++corner) {
-    const double t = outline.lines.lineThrough(gp_Pnt(x[corner & 1], y[(corner >> 1) & 1], z[(corner >> 2) & 1]));
-    first = std::min(first, t), last = std::max(last, t);
-  }
-  const double margin = 1e-3 * (last - first);
-  const auto upper = crossingSpan(wingSkins_->first, outline.lines);
-  const auto lower = crossingSpan(wingSkins_->second, outline.lines);
-  RibOutline across = outline;
-  if (upper && lower) {
-    if (across.start.kind == CrossingEnd::Kind::Open && first - margin > std::max(upper->first, lower->first))
-      across.start = CrossingEnd::atLine(first - margin);
-    if (across.end.kind == CrossingEnd::Kind::Open && last + margin < std::min(upper->second, lower->second))
-      across.end = CrossingEnd::atLine(last + margin);
-  }
-  return sectionOf(across, wingSkins_->first, wingSkins_->second);
 }
 
 std::vector<TopoDS_Face> RibCutter::cut(const gp_Pnt& point, const gp_Vec& direction, const gp_Vec& up,

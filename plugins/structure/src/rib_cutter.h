@@ -6,7 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include <Bnd_Box.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Pln.hxx>
 
@@ -88,12 +87,6 @@ class RibCutter {
   /// its borders), made without a Boolean operation.
   std::optional<std::vector<TopoDS_Face>> inSection(const RibOutline& outline, const TopoDS_Shape& upper,
                                                     const TopoDS_Shape& lower) const;
-  /// A rib's faces in a device cut out of its wing by `cutter`, made without a Boolean
-  /// operation where the wing's skins allow it.
-  std::optional<std::vector<TopoDS_Face>> inDevice(const RibOutline& outline, const TopoDS_Shape& cutter) const;
-  /// The wing's section in the rib's plane between the rib's borders, as far as the device
-  /// reaches along the rib.
-  std::optional<TopoDS_Face> wingSectionAcross(const RibOutline& outline) const;
   /// A rib's start or end as the end of a trace: the line where its plane meets a spar's web,
   /// or open at the wing's leading or trailing edge.
   CrossingEnd border(const std::string& name, const gp_Pln& plane, const std::string& where) const;
@@ -104,10 +97,6 @@ class RibCutter {
   mutable std::map<std::string, SparWall> walls_;
   /// The component segment's upper and lower skin, fetched for the first rib made from them.
   mutable std::optional<std::pair<TopoDS_Shape, TopoDS_Shape>> skins_;
-  /// In a device, the upper and lower skin of the component segment it is cut out of.
-  mutable std::optional<std::pair<TopoDS_Shape, TopoDS_Shape>> wingSkins_;
-  /// In a device, the box that holds it.
-  mutable std::optional<Bnd_Box> deviceBox_;
   const schema::WingComponentSegmentStructureType& structure_;
   double reach_;
 };

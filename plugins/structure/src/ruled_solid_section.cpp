@@ -126,7 +126,8 @@ class RuledFace {
 };
 
 /// Where the plane crosses a ruled face: for each ruling, the share s along it where it meets
-/// the plane; pieces where 0 <= s <= 1. False where a ruling runs along the plane.
+/// the plane; pieces where 0 <= s <= 1 (a ruling running along the plane cannot hold one: s
+/// is infinite there). False where a piece cannot be fitted.
 bool ruledPieces(const TopoDS_Face& face, const RuledFace& ruled, const gp_Pln& plane, double tolerance,
                  std::vector<Handle(Geom_BSplineCurve)>& pieces) {
   const gp_Vec normal(plane.Axis().Direction());
@@ -137,22 +138,29 @@ bool ruledPieces(const TopoDS_Face& face, const RuledFace& ruled, const gp_Pln& 
     ruled.ruling(w, a, b, da, db);
     return (level - gp_Vec(a.XYZ()).Dot(normal)) / gp_Vec(a, b).Dot(normal);
   };
-  // The rulings must cross the plane the same way throughout.
+  // Where a ruling runs along the plane the share jumps from one infinity to the other: the
+  // face is taken in stretches between such rulings, on each of which the share is smooth.
   const auto across = [&](double w) {
     gp_Pnt a, b;
     gp_Vec da, db;
     ruled.ruling(w, a, b, da, db);
-    return gp_Vec(a, b).Dot(normal) / std::max(a.Distance(b), 1e-300);
+    return gp_Vec(a, b).Dot(normal);
   };
-  const double w0 = ruled.first(), w1 = ruled.last();
-  for (int i = 0; i <= kSamples; ++i)
-    if (std::abs(across(w0 + (w1 - w0) * i / kSamples)) < 1e-6) return false;
-  if ((across(w0) < 0.0) != (across(w1) < 0.0)) return false;
+  const double w0 = ruled.first(), w1 = ruled.last(), slack = 1e-9 * (w1 - w0);
+  std::vector<double> breaks{w0};
+  for (const double w : rootsOf(across, w0, w1))
+    if (w - breaks.back() > slack && w1 - w > slack) breaks.push_back(w);
+  breaks.push_back(w1);
   // The stretches of w where the plane meets the ruling between its ends.
-  std::vector<double> marks{w0, w1};
-  for (const double end : {0.0, 1.0}) {
-    const std::vector<double> roots = rootsOf([&](double w) { return share(w) - end; }, w0, w1);
-    marks.insert(marks.end(), roots.begin(), roots.end());
+  std::vector<double> marks;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double from = breaks[k] + (k > 0 ? slack : 0.0), to = breaks[k + 1] - (k + 2 < breaks.size() ? slack : 0.0);
+    marks.push_back(from);
+    for (const double end : {0.0, 1.0}) {
+      const std::vector<double> roots = rootsOf([&](double w) { return share(w) - end; }, from, to);
+      marks.insert(marks.end(), roots.begin(), roots.end());
+    }
+    marks.push_back(to);
   }
   std::sort(marks.begin(), marks.end());
   const CurveSampler sample = [&](double w, const CurveSample&, const CurveSample&) {
@@ -168,8 +176,10 @@ bool ruledPieces(const TopoDS_Face& face, const RuledFace& ruled, const gp_Pln& 
   };
   for (std::size_t i = 0; i + 1 < marks.size(); ++i) {
     const double a = marks[i], b = marks[i + 1];
+    if (b - a <= 1e-12 * (w1 - w0)) continue;
     const double s = share(0.5 * (a + b));
-    if (b - a <= 1e-12 * (w1 - w0) || s < 0.0 || s > 1.0) continue;
+    if (!(s >= 0.0 && s <= 1.0)) continue;  // also where the share is no number (a ruling in the plane)
+    if (std::any_of(breaks.begin() + 1, breaks.end() - 1, [&](double w) { return w > a && w < b; })) continue;
     const std::optional<CurveSample> first = sample(a, {}, {}), last = sample(b, {}, {});
     if (first->point.Distance(last->point) <= tolerance) continue;
     Handle(Geom_BSplineCurve) piece = fittedCurve(sample, *first, *last, tolerance);

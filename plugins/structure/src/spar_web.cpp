@@ -7,6 +7,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "device_section.h"
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "ruled_section.h"
@@ -122,16 +123,26 @@ NamedShape sparWeb(const Configuration& configuration, const StructureServices& 
   // skins with many knots); the others cut out of the component segment by one Boolean common.
   const TopoDS_Shape upperSkin = frame.skin(true), lowerSkin = frame.skin(false);
   const double tolerance = kTraceTolerance * frame.reach();
-  const auto traced = [&](std::size_t i) -> std::optional<TopoDS_Face> {
+  // In a device cut out of its wing by a simple solid: the wing's section in common with the
+  // solid's, in the piece's plane (device_section.h).
+  std::optional<DeviceSection> inDevice;
+  if (const std::optional<TopoDS_Shape> cutter = frame.deviceCutter()) inDevice.emplace(frame, *cutter);
+  const auto traced = [&](std::size_t i) -> std::optional<std::vector<TopoDS_Face>> {
+    const auto one = [](const std::optional<TopoDS_Face>& face) {
+      return face ? std::optional<std::vector<TopoDS_Face>>({*face}) : std::nullopt;
+    };
     const SparWall::Piece& piece = wall.pieces[i];
-    if (!piece.plane())  // a twisted piece: the ruled surface between its lines
-      return ruledSectionBetweenSkins(upperSkin, lowerSkin, {piece.from, piece.to, piece.fromUp, piece.toUp},
-                                      tolerance);
+    if (!piece.plane()) {  // a twisted piece: the ruled surface between its lines
+      if (frame.inDevice()) return std::nullopt;
+      return one(
+          ruledSectionBetweenSkins(upperSkin, lowerSkin, {piece.from, piece.to, piece.fromUp, piece.toUp}, tolerance));
+    }
     // The piece's plane: lines along up from one spar point (t = 0) to the next (t = 1).
     const CrossingLines lines{piece.from, gp_Vec(piece.from, piece.to), piece.fromUp};
-    return sectionBetweenSkins(
-        upperSkin, lowerSkin, lines, piece.carriedBefore ? CrossingEnd::open() : CrossingEnd::atLine(0.0),
-        piece.carriedAfter ? CrossingEnd::open() : CrossingEnd::atLine(1.0), tolerance, OpenEnds::ClosedStraight);
+    const CrossingEnd from = piece.carriedBefore ? CrossingEnd::open() : CrossingEnd::atLine(0.0);
+    const CrossingEnd to = piece.carriedAfter ? CrossingEnd::open() : CrossingEnd::atLine(1.0);
+    if (frame.inDevice()) return inDevice ? inDevice->faces(lines, from, to, OpenEnds::ClosedStraight) : std::nullopt;
+    return one(sectionBetweenSkins(upperSkin, lowerSkin, lines, from, to, tolerance, OpenEnds::ClosedStraight));
   };
   std::vector<std::vector<TopoDS_Face>> pieces;
   try {

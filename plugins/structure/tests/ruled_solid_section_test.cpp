@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepGProp.hxx>
@@ -71,6 +72,33 @@ TEST(RuledSolidSection, TwistedLoftCutHalfway) {
   const auto section = ruledSolidSection(loft.solid, plane, kTolerance);
   ASSERT_TRUE(section);
   EXPECT_NEAR(areaOf(plane, *section), 0.5 * twice, 1e-9);
+}
+
+TEST(RuledSolidSection, PlaneAlongTheRulingsAgreesWithBooleanCommon) {
+  // The same twisted loft cut lengthwise (x = 0.2): the rulings of two side faces run along
+  // the plane at some point (their share jumps there); OCCT's Boolean common of the plane with
+  // the solid is the independent reference.
+  std::vector<gp_Pnt> bottom, top;
+  for (int k = 0; k < 4; ++k) {
+    const double a = M_PI / 2.0 * k, b = a + M_PI / 6.0;
+    bottom.emplace_back(std::cos(a), std::sin(a), 0.0);
+    top.emplace_back(std::cos(b), std::sin(b), 2.0);
+  }
+  const auto wire = [](const std::vector<gp_Pnt>& corners) {
+    BRepBuilderAPI_MakePolygon polygon(corners[0], corners[1], corners[2], corners[3], true);
+    return polygon.Wire();
+  };
+  const geometry::RuledSections loft = geometry::ruledThroughSections({wire(bottom), wire(top)});
+  ASSERT_FALSE(loft.solid.IsNull());
+  const gp_Pln plane(gp_Pnt(0.2, 0, 0), gp_Dir(1, 0, 0));
+  const auto section = ruledSolidSection(loft.solid, plane, kTolerance);
+  ASSERT_TRUE(section);
+  const TopoDS_Face big = BRepBuilderAPI_MakeFace(plane, -10, 10, -10, 10).Face();
+  BRepAlgoAPI_Common common(big, loft.solid);
+  ASSERT_TRUE(common.IsDone());
+  GProp_GProps reference;
+  BRepGProp::SurfaceProperties(common.Shape(), reference, 1e-12);
+  EXPECT_NEAR(areaOf(plane, *section), reference.Mass(), 1e-7);
 }
 
 TEST(RuledSolidSection, PlaneMissingTheSolidGivesNothingInside) {
