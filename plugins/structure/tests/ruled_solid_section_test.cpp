@@ -36,6 +36,25 @@ double areaOf(const gp_Pln& plane, const PlaneRegion& section) {
   return properties.Mass();
 }
 
+/// A loft ruled between a square at z = 0 and the same square turned by 30 degrees at z = 2:
+/// its side faces are twisted.
+struct TwistedLoft {
+  std::vector<gp_Pnt> bottom, top;
+  geometry::RuledSections loft;
+  TwistedLoft() {
+    for (int k = 0; k < 4; ++k) {
+      const double a = M_PI / 2.0 * k, b = a + M_PI / 6.0;
+      bottom.emplace_back(std::cos(a), std::sin(a), 0.0);
+      top.emplace_back(std::cos(b), std::sin(b), 2.0);
+    }
+    const auto wire = [](const std::vector<gp_Pnt>& corners) {
+      BRepBuilderAPI_MakePolygon polygon(corners[0], corners[1], corners[2], corners[3], true);
+      return polygon.Wire();
+    };
+    loft = geometry::ruledThroughSections({wire(bottom), wire(top)});
+  }
+};
+
 TEST(RuledSolidSection, ObliquePlaneThroughABox) {
   // A unit cube cut by the plane x + z = 1.2: a rectangle 1 by 0.8 sqrt(2).
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
@@ -50,22 +69,13 @@ TEST(RuledSolidSection, TwistedLoftCutHalfway) {
   // A loft ruled between a square at z = 0 and the same square turned by 30 degrees at z = 2:
   // halfway up, every ruling is cut at its middle, so the section is the square of the
   // corners' midpoints (shoelace area), though the side faces are twisted.
-  std::vector<gp_Pnt> bottom, top;
-  for (int k = 0; k < 4; ++k) {
-    const double a = M_PI / 2.0 * k, b = a + M_PI / 6.0;
-    bottom.emplace_back(std::cos(a), std::sin(a), 0.0);
-    top.emplace_back(std::cos(b), std::sin(b), 2.0);
-  }
-  const auto wire = [](const std::vector<gp_Pnt>& corners) {
-    BRepBuilderAPI_MakePolygon polygon(corners[0], corners[1], corners[2], corners[3], true);
-    return polygon.Wire();
-  };
-  const geometry::RuledSections loft = geometry::ruledThroughSections({wire(bottom), wire(top)});
+  const TwistedLoft twisted;
+  const geometry::RuledSections& loft = twisted.loft;
   ASSERT_FALSE(loft.solid.IsNull());
   double twice = 0.0;
   for (int k = 0; k < 4; ++k) {
-    const gp_XYZ p = 0.5 * (bottom[k].XYZ() + top[k].XYZ()),
-                 q = 0.5 * (bottom[(k + 1) % 4].XYZ() + top[(k + 1) % 4].XYZ());
+    const gp_XYZ p = 0.5 * (twisted.bottom[k].XYZ() + twisted.top[k].XYZ()),
+                 q = 0.5 * (twisted.bottom[(k + 1) % 4].XYZ() + twisted.top[(k + 1) % 4].XYZ());
     twice += p.X() * q.Y() - q.X() * p.Y();
   }
   const gp_Pln plane(gp_Pnt(0, 0, 1), gp_Dir(0, 0, 1));
@@ -78,17 +88,8 @@ TEST(RuledSolidSection, PlaneAlongTheRulingsAgreesWithBooleanCommon) {
   // The same twisted loft cut lengthwise (x = 0.2): the rulings of two side faces run along
   // the plane at some point (their share jumps there); OCCT's Boolean common of the plane with
   // the solid is the independent reference.
-  std::vector<gp_Pnt> bottom, top;
-  for (int k = 0; k < 4; ++k) {
-    const double a = M_PI / 2.0 * k, b = a + M_PI / 6.0;
-    bottom.emplace_back(std::cos(a), std::sin(a), 0.0);
-    top.emplace_back(std::cos(b), std::sin(b), 2.0);
-  }
-  const auto wire = [](const std::vector<gp_Pnt>& corners) {
-    BRepBuilderAPI_MakePolygon polygon(corners[0], corners[1], corners[2], corners[3], true);
-    return polygon.Wire();
-  };
-  const geometry::RuledSections loft = geometry::ruledThroughSections({wire(bottom), wire(top)});
+  const TwistedLoft twisted;
+  const geometry::RuledSections& loft = twisted.loft;
   ASSERT_FALSE(loft.solid.IsNull());
   const gp_Pln plane(gp_Pnt(0.2, 0, 0), gp_Dir(1, 0, 0));
   const auto section = ruledSolidSection(loft.solid, plane, kTolerance);
