@@ -1,13 +1,17 @@
 #include "cell_skin.h"
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
+#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
@@ -17,6 +21,8 @@
 #include "contour_cell.h"
 #include "faces_inside.h"
 #include "named_faces.h"
+#include "parameter_region.h"
+#include "plane_region.h"
 #include "rib_point.h"
 #include "skin_section.h"
 #include "skin_split.h"
@@ -157,6 +163,63 @@ std::vector<TopoDS_Face> cutByPrism(const TopoDS_Shape& skin, const TopoDS_Shape
   }
 }
 
+/// Whether two faces lie on one surface: the same, or B-spline surfaces with the same degrees,
+/// knots and poles (a Boolean result may hold a copy).
+bool sameSurface(const Handle(Geom_Surface) & a, const Handle(Geom_Surface) & b) {
+  if (a == b) return true;
+  const Handle(Geom_BSplineSurface) p = Handle(Geom_BSplineSurface)::DownCast(a);
+  const Handle(Geom_BSplineSurface) q = Handle(Geom_BSplineSurface)::DownCast(b);
+  if (p.IsNull() || q.IsNull() || p->UDegree() != q->UDegree() || p->VDegree() != q->VDegree() ||
+      p->NbUPoles() != q->NbUPoles() || p->NbVPoles() != q->NbVPoles() || p->NbUKnots() != q->NbUKnots() ||
+      p->NbVKnots() != q->NbVKnots())
+    return false;
+  for (int i = 1; i <= p->NbUKnots(); ++i)
+    if (p->UKnot(i) != q->UKnot(i)) return false;
+  for (int j = 1; j <= p->NbVKnots(); ++j)
+    if (p->VKnot(j) != q->VKnot(j)) return false;
+  for (int i = 1; i <= p->NbUPoles(); ++i)
+    for (int j = 1; j <= p->NbVPoles(); ++j)
+      if (p->Pole(i, j).Distance(q->Pole(i, j)) > 1e-12 * (1.0 + gp_Vec(p->Pole(i, j).XYZ()).Magnitude())) return false;
+  return true;
+}
+
+/// A device's cell without a Boolean operation: the cell's pieces of the wing's untrimmed skin
+/// (split directly along its loop) in common with the device's own faces on the same surfaces,
+/// in the surfaces' parameter planes (the device's faces are trimmed pieces of the skin, which
+/// the split does not take). Nothing where that does not apply (then the Boolean cut of the
+/// device's faces by the prism).
+std::optional<std::vector<TopoDS_Face>> fromDeviceFaces(const StructureFrame& frame, bool upper, const RuledLoop& ruled,
+                                                        const std::function<bool(const gp_Pnt&)>& keep,
+                                                        double tolerance) {
+  const std::optional<std::vector<TopoDS_Face>> pieces =
+      skinPiecesWhere(frame.componentSegmentSkin(upper), ruled, keep, tolerance);
+  if (!pieces) return std::nullopt;
+  std::vector<TopoDS_Face> cell;
+  for (TopExp_Explorer explorer(frame.skin(upper), TopAbs_FACE); explorer.More(); explorer.Next()) {
+    const TopoDS_Face& device = TopoDS::Face(explorer.Current());
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(device);
+    double u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
+    surface->Bounds(u0, u1, v0, v1);
+    const double parameterTolerance = 1e-9 * std::max(u1 - u0, v1 - v0);
+    std::optional<PlaneRegion> deviceRegion;
+    for (const TopoDS_Face& piece : *pieces) {
+      if (!sameSurface(BRep_Tool::Surface(piece), surface)) continue;
+      if (!deviceRegion && !(deviceRegion = parameterRegionOf(device))) return std::nullopt;
+      const std::optional<PlaneRegion> pieceRegion = parameterRegionOf(piece);
+      if (!pieceRegion) return std::nullopt;
+      const auto common = commonOf(kParameterPlane, *deviceRegion, *pieceRegion, parameterTolerance);
+      if (!common) return std::nullopt;
+      for (const TopoDS_Face& inParameters : *common) {
+        const std::optional<TopoDS_Face> face = faceOnSurface(surface, inParameters, device);
+        if (!face) return std::nullopt;
+        cell.push_back(*face);
+      }
+    }
+  }
+  if (cell.empty()) return std::nullopt;
+  return cell;
+}
+
 }  // namespace
 
 NamedShape cellSkin(const Configuration& configuration, const StructureServices& services, const WingCell& cell) {
@@ -213,7 +276,9 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
     inPrism.Perform(point, tolerance);
     return inPrism.State() == TopAbs_IN;
   };
-  std::optional<std::vector<TopoDS_Face>> inside = skinPiecesWhere(skin, ruled, keep, tolerance);
+  std::optional<std::vector<TopoDS_Face>> inside = frame.inDevice()
+                                                       ? fromDeviceFaces(frame, cell.upper, ruled, keep, tolerance)
+                                                       : skinPiecesWhere(skin, ruled, keep, tolerance);
   if (!inside) inside = cutByPrism(skin, prism.solid, cell.xpath);
   // A wing that folds back over itself (a joined or box wing) can bring skin of other segments
   // into the prism: only pieces within the cell's span count.

@@ -16,6 +16,7 @@
 #include <GeomConvert.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <IntRes2d_IntersectionPoint.hxx>
+#include <IntRes2d_IntersectionSegment.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <TopExp.hxx>
@@ -139,34 +140,85 @@ struct Crossing {
   gp_Pnt point;
 };
 
-/// Every crossing of the two boundaries; nothing where they run together or touch without
-/// crossing.
-std::optional<std::vector<Crossing>> crossingsOf(const PlaneRegion& a, const PlaneRegion& b, double tolerance) {
+/// Where the two boundaries run together: the stretch on each (one curve of each, between two
+/// parameters), and whether they run opposite ways.
+struct Overlap {
+  Place fromA, toA, fromB, toB;
+  bool opposite = false;
+};
+
+/// How the two boundaries meet: where they cross (the ends of where they run together too),
+/// and where they run together.
+struct Meetings {
   std::vector<Crossing> crossings;
+  std::vector<Overlap> overlaps;
+
+  /// Adds a crossing unless one lies there already (one found on two curves meeting at a joint).
+  void add(const Crossing& crossing, double tolerance) {
+    const bool known = std::any_of(crossings.begin(), crossings.end(), [&](const Crossing& other) {
+      return other.point.Distance(crossing.point) <= tolerance;
+    });
+    if (!known) crossings.push_back(crossing);
+  }
+  bool near(const gp_Pnt& point, double tolerance) const {
+    return std::any_of(crossings.begin(), crossings.end(),
+                       [&](const Crossing& crossing) { return crossing.point.Distance(point) <= tolerance; });
+  }
+};
+
+/// Every crossing and overlap of the two boundaries; nothing where they touch without crossing.
+std::optional<Meetings> meetingsOf(const PlaneRegion& a, const PlaneRegion& b, double tolerance) {
+  Meetings meetings;
+  std::vector<Crossing> points;  // taken after the overlaps, whose ends they may repeat
   for (std::size_t la = 0; la < a.size(); ++la)
     for (std::size_t ca = 0; ca < a[la].size(); ++ca)
       for (std::size_t lb = 0; lb < b.size(); ++lb)
         for (std::size_t cb = 0; cb < b[lb].size(); ++cb) {
           const PlaneCurve &first = a[la][ca], &second = b[lb][cb];
           const Geom2dAPI_InterCurveCurve meeting(first.image, second.image, 0.1 * tolerance);
-          if (meeting.NbSegments() > 0) return std::nullopt;
+          for (int k = 1; k <= meeting.NbSegments(); ++k) {
+            const IntRes2d_IntersectionSegment& segment = meeting.Intersector().Segment(k);
+            if (!segment.HasFirstPoint() || !segment.HasLastPoint()) return std::nullopt;
+            const IntRes2d_IntersectionPoint &start = segment.FirstPoint(), &end = segment.LastPoint();
+            meetings.overlaps.push_back({{la, ca, start.ParamOnFirst()},
+                                         {la, ca, end.ParamOnFirst()},
+                                         {lb, cb, start.ParamOnSecond()},
+                                         {lb, cb, end.ParamOnSecond()},
+                                         segment.IsOpposite()});
+            for (const IntRes2d_IntersectionPoint* point : {&start, &end})
+              meetings.add({{la, ca, point->ParamOnFirst()},
+                            {lb, cb, point->ParamOnSecond()},
+                            first.curve->Value(point->ParamOnFirst())},
+                           tolerance);
+          }
           for (int i = 1; i <= meeting.NbPoints(); ++i) {
             const IntRes2d_IntersectionPoint& point = meeting.Intersector().Point(i);
-            const double ta = point.ParamOnFirst(), tb = point.ParamOnSecond();
-            gp_Pnt2d at;
-            gp_Vec2d da, db;
-            first.image->D1(ta, at, da);
-            second.image->D1(tb, at, db);
-            if (std::abs(da.Crossed(db)) <= 1e-6 * da.Magnitude() * db.Magnitude()) return std::nullopt;
-            const gp_Pnt spot = first.curve->Value(ta);
-            // A crossing at a joint of two curves is found on both: kept once.
-            const bool known = std::any_of(crossings.begin(), crossings.end(), [&](const Crossing& crossing) {
-              return crossing.point.Distance(spot) <= tolerance;
-            });
-            if (!known) crossings.push_back({{la, ca, ta}, {lb, cb, tb}, spot});
+            points.push_back({{la, ca, point.ParamOnFirst()},
+                              {lb, cb, point.ParamOnSecond()},
+                              first.curve->Value(point.ParamOnFirst())});
           }
         }
-  return crossings;
+  for (const Crossing& crossing : points) {
+    if (meetings.near(crossing.point, tolerance)) continue;
+    gp_Pnt2d at;
+    gp_Vec2d da, db;
+    a[crossing.onA.loop][crossing.onA.curve].image->D1(crossing.onA.t, at, da);
+    b[crossing.onB.loop][crossing.onB.curve].image->D1(crossing.onB.t, at, db);
+    if (std::abs(da.Crossed(db)) <= 1e-6 * da.Magnitude() * db.Magnitude()) return std::nullopt;  // a touch
+    meetings.add(crossing, tolerance);
+  }
+  return meetings;
+}
+
+/// The overlap a run of a (`onA`) or b lies in, by its middle; nothing when it lies in none.
+std::optional<Overlap> overlapHolding(const std::vector<Overlap>& overlaps, const Place& middle, bool onA) {
+  for (const Overlap& overlap : overlaps) {
+    const Place &from = onA ? overlap.fromA : overlap.fromB, &to = onA ? overlap.toA : overlap.toB;
+    if (from.loop == middle.loop && from.curve == middle.curve && middle.t > std::min(from.t, to.t) &&
+        middle.t < std::max(from.t, to.t))
+      return overlap;
+  }
+  return std::nullopt;
 }
 
 /// A run along one loop of a boundary from one crossing to the next (or, for a loop no
@@ -175,6 +227,7 @@ struct Run {
   std::vector<Handle(Geom_BSplineCurve)> pieces;
   std::optional<std::size_t> from, to;  ///< crossing indices; none for a whole loop
   gp_Pnt2d middle;                      ///< a point of the run away from its ends
+  Place middlePlace;                    ///< where that point lies on its loop
 };
 
 /// The runs of a region's boundary between the crossings (`onA`: their places on a, else b).
@@ -192,7 +245,9 @@ std::vector<Run> runsOf(const PlaneRegion& region, const std::vector<Crossing>& 
       Run whole;
       for (const PlaneCurve& curve : loop) whole.pieces.push_back(curve.curve);
       const PlaneCurve& first = loop.front();
-      whole.middle = first.image->Value(0.5 * (first.image->FirstParameter() + first.image->LastParameter()));
+      const double t = 0.5 * (first.image->FirstParameter() + first.image->LastParameter());
+      whole.middle = first.image->Value(t);
+      whole.middlePlace = {l, 0, t};
       runs.push_back(whole);
       continue;
     }
@@ -219,6 +274,7 @@ std::vector<Run> runsOf(const PlaneRegion& region, const std::vector<Crossing>& 
           if (a.Distance(b) > longest) {
             longest = a.Distance(b);
             run.middle = here.image->Value(0.5 * (t + stop));
+            run.middlePlace = {l, curve, 0.5 * (t + stop)};
           }
         }
         if (last) break;
@@ -289,16 +345,22 @@ std::optional<PlaneRegion> regionInside(const gp_Pln& plane, const std::vector<H
 
 std::optional<std::vector<TopoDS_Face>> commonOf(const gp_Pln& plane, const PlaneRegion& a, const PlaneRegion& b,
                                                  double tolerance) {
-  const std::optional<std::vector<Crossing>> crossings = crossingsOf(a, b, tolerance);
-  if (!crossings) return std::nullopt;
+  const std::optional<Meetings> meetings = meetingsOf(a, b, tolerance);
+  if (!meetings) return std::nullopt;
   // The common's boundary: the runs of each boundary inside the other region. Each leaves a
   // crossing where the run before it (of either boundary) arrives: the common lies on the
-  // left of both.
+  // left of both. Where the boundaries run together, the common's boundary follows them once
+  // (a's run) if both regions lie on the same side, else not at all.
   std::vector<Run> kept;
   const auto keep = [&](const PlaneRegion& region, const PlaneRegion& other, bool onA) {
     const std::vector<std::vector<gp_Pnt2d>> polygons = polygonsOf(other);
-    for (const Run& run : runsOf(region, *crossings, onA, tolerance))
-      if (insideOf(polygons, run.middle)) kept.push_back(run);
+    for (const Run& run : runsOf(region, meetings->crossings, onA, tolerance)) {
+      if (const auto overlap = overlapHolding(meetings->overlaps, run.middlePlace, onA)) {
+        if (onA && !overlap->opposite) kept.push_back(run);
+      } else if (insideOf(polygons, run.middle)) {
+        kept.push_back(run);
+      }
+    }
   };
   keep(a, b, true);
   keep(b, a, false);

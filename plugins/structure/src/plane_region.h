@@ -42,9 +42,11 @@ std::optional<PlaneRegion> regionInside(const gp_Pln& plane, const std::vector<H
 
 /// The faces where two regions overlap (the Boolean common of two planar regions, without a
 /// Boolean operation): each bounded by the pieces of either boundary that lie inside the
-/// other, split where the boundaries cross. Empty when the regions do not overlap; nothing
-/// when this cannot tell: boundaries that run together or touch without crossing, or a common
-/// with a hole. `tolerance` is a length: how close points must be to be one.
+/// other, split where the boundaries cross; where the boundaries run together (a side two
+/// faces of one surface share), followed once when both regions lie on the same side of it.
+/// Empty when the regions do not overlap; nothing when this cannot tell: boundaries that touch
+/// without crossing, or a common with a hole. `tolerance` is a length: how close points must
+/// be to be one.
 std::optional<std::vector<TopoDS_Face>> commonOf(const gp_Pln& plane, const PlaneRegion& a, const PlaneRegion& b,
                                                  double tolerance);
 

@@ -8,9 +8,7 @@
 #include <optional>
 
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -18,6 +16,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "skin_section.h"
+#include "test_area.h"
 #include "test_wing_skins.h"
 
 namespace airshape::structure {
@@ -65,12 +64,6 @@ std::optional<TopoDS_Face> twistedSection(OpenEnds openEnds) {
   return sectionBetweenSkins(upper, lower, kLines, CrossingEnd::open(), CrossingEnd::open(), 1e-9, openEnds);
 }
 
-double areaOf(const TopoDS_Face& face) {
-  GProp_GProps properties;
-  BRepGProp::SurfaceProperties(face, properties, 1e-12);
-  return properties.Mass();
-}
-
 TEST(BluntEdgeSection, TwistedTrailingEdgeIsClosedOnItsRuledFace) {
   const auto face = twistedSection(OpenEnds::SkinsMeet);
   ASSERT_TRUE(face);
@@ -89,7 +82,7 @@ TEST(BluntEdgeSection, TwistedTrailingEdgeIsClosedOnItsRuledFace) {
     }
   }
   EXPECT_EQ(closing, 1);
-  EXPECT_GT(areaOf(*face), 0.0);
+  EXPECT_GT(test::accurateArea(*face), 0.0);
 }
 
 TEST(BluntEdgeSection, ClosedStraightWhenAskedTo) {
@@ -97,8 +90,9 @@ TEST(BluntEdgeSection, ClosedStraightWhenAskedTo) {
   ASSERT_TRUE(twisted);
   ASSERT_TRUE(straight);
   // The twisted face bulges beyond the chord between the skins' ends, by a little.
-  EXPECT_GT(std::abs(areaOf(*twisted) - areaOf(*straight)), 1e-9);
-  EXPECT_LT(std::abs(areaOf(*twisted) - areaOf(*straight)), 1e-3 * areaOf(*twisted));
+  EXPECT_GT(std::abs(test::accurateArea(*twisted) - test::accurateArea(*straight)), 1e-9);
+  EXPECT_LT(std::abs(test::accurateArea(*twisted) - test::accurateArea(*straight)),
+            1e-3 * test::accurateArea(*twisted));
 }
 
 }  // namespace

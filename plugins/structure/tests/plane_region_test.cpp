@@ -89,11 +89,31 @@ TEST(PlaneRegion, RegionsApartHaveNoCommon) {
   EXPECT_TRUE(faces->empty());
 }
 
-TEST(PlaneRegion, BoundariesRunningTogetherAreLeftToTheCaller) {
-  // Squares sharing a side: the overlap of their boundaries is not resolved here.
+TEST(PlaneRegion, SquaresSharingASideOnlyTouch) {
+  // The shared side has the squares on either side: no common.
   const auto faces = commonOf(kPlane, polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}),
                               polygon({{1, 0}, {2, 0}, {2, 1}, {1, 1}}), kTolerance);
-  EXPECT_FALSE(faces);
+  ASSERT_TRUE(faces);
+  EXPECT_TRUE(faces->empty());
+}
+
+TEST(PlaneRegion, BoundariesRunningTogetherAreFollowedOnce) {
+  // Two strips of one band, overlapping in the middle: their bottom and top sides run
+  // together there.
+  const auto faces = commonOf(kPlane, polygon({{0, 0}, {2, 0}, {2, 1}, {0, 1}}),
+                              polygon({{1, 0}, {3, 0}, {3, 1}, {1, 1}}), kTolerance);
+  ASSERT_TRUE(faces);
+  ASSERT_EQ(faces->size(), 1u);
+  EXPECT_NEAR(areaOf(*faces), 1.0, 1e-12);
+}
+
+TEST(PlaneRegion, RegionInACornerOfTheOther) {
+  // The small square shares two sides with the large one: the common is the small square.
+  const auto faces = commonOf(kPlane, polygon({{0, 0}, {2, 0}, {2, 2}, {0, 2}}),
+                              polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), kTolerance);
+  ASSERT_TRUE(faces);
+  ASSERT_EQ(faces->size(), 1u);
+  EXPECT_NEAR(areaOf(*faces), 1.0, 1e-12);
 }
 
 TEST(PlaneRegion, FaceWhoseWireRunsClockwiseGivesItsInside) {

@@ -6,22 +6,15 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 
 #include "plane_region.h"
 #include "section_profile.h"
+#include "test_area.h"
 #include "test_wing_skins.h"
 
 namespace airshape::structure {
 namespace {
-
-double areaOf(const TopoDS_Face& face) {
-  GProp_GProps properties;
-  BRepGProp::SurfaceProperties(face, properties, 1e-12);
-  return properties.Mass();
-}
 
 TEST(SectionProfile, RootProfileClosedStraightAcrossTheBluntEdge) {
   // The plane of the root (y = 0): the skins' root edges and the straight line across the
@@ -51,7 +44,7 @@ TEST(SectionProfile, RootProfileClosedStraightAcrossTheBluntEdge) {
   };
   const double across = test::kUpperRoot.X() * test::kLowerRoot.Z() - test::kLowerRoot.X() * test::kUpperRoot.Z();
   const double twice = along(upper, false) + across + along(lower, true);
-  EXPECT_NEAR(areaOf((*faces)[0]), std::abs(0.5 * twice), 1e-9);
+  EXPECT_NEAR(test::accurateArea((*faces)[0]), std::abs(0.5 * twice), 1e-9);
 }
 
 TEST(SectionProfile, PlaneBetweenSectionsHasNone) {
