@@ -2,17 +2,18 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Pln.hxx>
 
 #include "airshape/configuration.h"
@@ -71,8 +72,7 @@ class CellCorners {
   gp_Pnt onRib(const schema::CellPositioningSpanwiseType& spanwise,
                const schema::CellPositioningChordwiseType& chordwise, bool inner, const std::string& spanwisePath,
                const std::string& chordwisePath) const {
-    const gp_Pln rib =
-        ribPlane(configuration_, frame_, *spanwise.ribDefinitionUID, spanwise.ribNumber.value_or(1), spanwisePath);
+    const gp_Pln rib = ribPlaneOf(*spanwise.ribDefinitionUID, spanwise.ribNumber.value_or(1), spanwisePath);
     auto side = [&](const gp_Pnt& p) { return gp_Vec(rib.Location(), p).Dot(gp_Vec(rib.Axis().Direction())); };
     if (chordwise.sparUID) {
       const Polyline spar = frame_.sparLine(sparSegmentNamed(configuration_, *chordwise.sparUID));
@@ -97,6 +97,16 @@ class CellCorners {
         high = middle;
     }
     return frame_.chordPoint("", 0.5 * (low + high), xsi);
+  }
+
+  /// A rib's plane, placed once for the cell's corners on it (placing a rib places its whole
+  /// set).
+  gp_Pln ribPlaneOf(const std::string& ribsUid, long long number, const std::string& where) const {
+    const auto key = std::make_pair(ribsUid, number);
+    auto known = ribPlanes_.find(key);
+    if (known == ribPlanes_.end())
+      known = ribPlanes_.emplace(key, ribPlane(configuration_, frame_, ribsUid, number, where)).first;
+    return known->second;
   }
 
   /// The component segment eta of a border at the leading edge (eta1) or trailing edge (eta2).
@@ -152,6 +162,7 @@ class CellCorners {
   const Configuration& configuration_;
   const WingCell& cell_;
   const StructureFrame& frame_;
+  mutable std::map<std::pair<std::string, long long>, gp_Pln> ribPlanes_;
 };
 
 /// The skin's faces inside the prism, by a Boolean common.
@@ -285,9 +296,14 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   const double low = *std::min_element(etas.begin(), etas.end()), high = *std::max_element(etas.begin(), etas.end());
   std::vector<TopoDS_Face> withinSpan;
   for (const TopoDS_Face& face : *inside) {
-    GProp_GProps area;
-    BRepGProp::SurfaceProperties(face, area);
-    const double eta = frame.etaOf(frame.toWing(area.CentreOfMass()));
+    // Where a piece lies: the middle of its corners (integrating its centre of mass cost a
+    // third of a large cell's time).
+    gp_XYZ sum(0, 0, 0);
+    int count = 0;
+    for (TopExp_Explorer vertex(face, TopAbs_VERTEX); vertex.More(); vertex.Next(), ++count)
+      sum += BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())).XYZ();
+    if (count == 0) continue;
+    const double eta = frame.etaOf(frame.toWing(gp_Pnt(sum / count)));
     if (eta > low - 1e-6 && eta < high + 1e-6) withinSpan.push_back(face);
   }
   NamedFaces patch;
