@@ -166,6 +166,46 @@ struct Meetings {
   }
 };
 
+/// Overlaps of one pair of curves that follow each other with a little gap between them made
+/// one: where two boundaries made separately agree within their tolerances only (a Boolean
+/// result's edge along a skin's own edge), the curve intersection finds them apart, and the
+/// stretch between would lie on neither side.
+void mergeNeighbouringOverlaps(std::vector<Overlap>& overlaps, const PlaneRegion& a, const PlaneRegion& b) {
+  const auto low = [](const Place& from, const Place& to) { return std::min(from.t, to.t); };
+  const auto high = [](const Place& from, const Place& to) { return std::max(from.t, to.t); };
+  std::sort(overlaps.begin(), overlaps.end(), [&](const Overlap& x, const Overlap& y) {
+    return std::make_tuple(x.fromA.loop, x.fromA.curve, x.fromB.loop, x.fromB.curve, low(x.fromA, x.toA)) <
+           std::make_tuple(y.fromA.loop, y.fromA.curve, y.fromB.loop, y.fromB.curve, low(y.fromA, y.toA));
+  });
+  std::vector<Overlap> merged;
+  for (const Overlap& overlap : overlaps) {
+    if (!merged.empty()) {
+      Overlap& last = merged.back();
+      const PlaneCurve& curveA = a[overlap.fromA.loop][overlap.fromA.curve];
+      const PlaneCurve& curveB = b[overlap.fromB.loop][overlap.fromB.curve];
+      const double rangeA = curveA.image->LastParameter() - curveA.image->FirstParameter();
+      const double rangeB = curveB.image->LastParameter() - curveB.image->FirstParameter();
+      const bool samePair = last.fromA.loop == overlap.fromA.loop && last.fromA.curve == overlap.fromA.curve &&
+                            last.fromB.loop == overlap.fromB.loop && last.fromB.curve == overlap.fromB.curve &&
+                            last.opposite == overlap.opposite;
+      const double gapA = low(overlap.fromA, overlap.toA) - high(last.fromA, last.toA);
+      const double gapB = std::max(low(overlap.fromB, overlap.toB) - high(last.fromB, last.toB),
+                                   low(last.fromB, last.toB) - high(overlap.fromB, overlap.toB));
+      if (samePair && gapA <= 1e-3 * rangeA && gapB <= 1e-3 * rangeB) {
+        // The union of the two stretches on each curve.
+        last.fromA.t = std::min(low(last.fromA, last.toA), low(overlap.fromA, overlap.toA));
+        last.toA.t = std::max(high(last.fromA, last.toA), high(overlap.fromA, overlap.toA));
+        const double fromB = std::min(low(last.fromB, last.toB), low(overlap.fromB, overlap.toB));
+        const double toB = std::max(high(last.fromB, last.toB), high(overlap.fromB, overlap.toB));
+        last.fromB.t = fromB, last.toB.t = toB;
+        continue;
+      }
+    }
+    merged.push_back(overlap);
+  }
+  overlaps = merged;
+}
+
 /// Every crossing and overlap of the two boundaries; nothing where they touch without crossing.
 std::optional<Meetings> meetingsOf(const PlaneRegion& a, const PlaneRegion& b, double tolerance) {
   Meetings meetings;
@@ -198,6 +238,7 @@ std::optional<Meetings> meetingsOf(const PlaneRegion& a, const PlaneRegion& b, d
                               first.curve->Value(point.ParamOnFirst())});
           }
         }
+  mergeNeighbouringOverlaps(meetings.overlaps, a, b);
   for (const Crossing& crossing : points) {
     if (meetings.near(crossing.point, tolerance)) continue;
     gp_Pnt2d at;
