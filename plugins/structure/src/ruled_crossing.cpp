@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Bnd_Box.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
 #include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
 
 namespace airshape::structure {
@@ -61,7 +65,9 @@ struct Hit {
 /// The lines of a ruled surface and where they meet the skin's patches.
 class Side {
  public:
-  Side(const std::vector<Patch>& patches, const RuledLines& lines) : patches_(patches), lines_(lines) {}
+  Side(const std::vector<Patch>& patches, const RuledLines& lines) : patches_(patches), lines_(lines) {
+    for (const Patch& patch : patches) boxes_.push_back(hullBox(patch));
+  }
 
   /// Where the line at `lambda` meets the patch, from the guess `near`; nothing where it meets
   /// it outside the patch's bounds.
@@ -79,8 +85,10 @@ class Side {
   std::vector<Hit> search(double lambda) const {
     constexpr int kGuesses = 6;
     std::vector<Hit> hits;
+    const gp_Lin line(lines_.base(lambda), gp_Dir(lines_.direction(lambda)));
     for (std::size_t k = 0; k < patches_.size(); ++k) {
       const Patch& patch = patches_[k];
+      if (boxes_[k].IsOut(line)) continue;
       for (int i = 0; i < kGuesses * kGuesses; ++i) {
         PatchPoint guess;
         guess.u = patch.u0 + (patch.u1 - patch.u0) * (0.5 + i / kGuesses) / kGuesses;
@@ -97,8 +105,20 @@ class Side {
   const Patch& patch(std::size_t k) const { return patches_[k]; }
 
  private:
+  /// A box round the patch's poles, which hold the whole surface (convex hull property): a line
+  /// that misses it misses the patch, which spares the grid of Newton searches on it.
+  static Bnd_Box hullBox(const Patch& patch) {
+    Bnd_Box box;
+    const TColgp_Array2OfPnt& poles = patch.surface->Poles();
+    for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+      for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) box.Add(poles(i, j));
+    box.Enlarge(1e-6 * std::sqrt(box.SquareExtent()));
+    return box;
+  }
+
   const std::vector<Patch>& patches_;
   const RuledLines& lines_;
+  std::vector<Bnd_Box> boxes_;
 };
 
 using Piece = CrossingPiece;
