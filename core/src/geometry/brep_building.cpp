@@ -13,6 +13,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -127,14 +128,16 @@ TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary) {
   return planarFace(wire.Wire());
 }
 
-TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces, double tolerance) {
+TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces, double tolerance,
+                       Orienting orienting) {
   BRepBuilderAPI_Sewing sewing(tolerance);
   for (const TopoDS_Face& face : faces)
     if (!face.IsNull()) sewing.Add(face);
   sewing.Perform();
   TopExp_Explorer shells(sewing.SewedShape(), TopAbs_SHELL);
   if (!shells.More()) throw Error(ErrorCode::InvalidModel, "the faces do not close into a solid");
-  const TopoDS_Solid solid = outwards(BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid());
+  TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
+  if (orienting == Orienting::ByVolume || !BRepLib::OrientClosedSolid(solid)) solid = outwards(solid);
   if (sewnFaces) {
     sewnFaces->clear();
     for (const TopoDS_Face& face : faces)

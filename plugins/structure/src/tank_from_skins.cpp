@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include <BRepCheck_Analyzer.hxx>
+#include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -115,6 +115,17 @@ std::vector<TankWall> closed(const StructureFrame& frame, std::vector<TankWall> 
   return walls;
 }
 
+/// Whether the sewn solid holds every face and its shell is closed: every edge shared by two
+/// faces. (OCCT's whole check of the solid would classify every face's wires again, a fifth of
+/// the tank's time.)
+bool closesAll(const TopoDS_Shape& solid, std::size_t faces) {
+  TopExp_Explorer shell(solid, TopAbs_SHELL);
+  if (!shell.More() || !BRep_Tool::IsClosed(shell.Current())) return false;
+  std::size_t held = 0;
+  for (TopExp_Explorer face(solid, TopAbs_FACE); face.More(); face.Next()) ++held;
+  return held == faces;
+}
+
 std::optional<Loop> loopAround(const std::vector<TankWall>& walls, double tolerance) {
   const std::size_t n = walls.size();
   std::vector<Corner> corners;  // corners[i]: wall i meets wall i + 1
@@ -180,8 +191,8 @@ std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::
   for (const double join : {10.0 * tolerance, 100.0 * tolerance}) {
     try {
       std::vector<TopoDS_Face> sewn;
-      NamedShape tank{geometry::sewnSolid(faces, &sewn, join), {}};
-      if (!BRepCheck_Analyzer(tank.shape).IsValid()) continue;  // pieces that did not close
+      NamedShape tank{geometry::sewnSolid(faces, &sewn, join, geometry::Orienting::ByClassification), {}};
+      if (!closesAll(tank.shape, faces.size())) continue;  // pieces that did not close
       for (std::size_t k = 0; k < sewn.size(); ++k)
         if (!sewn[k].IsNull()) tank.faces.emplace_back(names[k], sewn[k]);
       return tank;

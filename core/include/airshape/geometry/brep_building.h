@@ -45,12 +45,18 @@ TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom
 /// Error when they are not planar.
 TopoDS_Face planarFace(const std::vector<Handle(Geom_BSplineCurve)>& boundary);
 
+/// How a sewn solid is turned outwards: by the sign of its rough volume, which also refuses a
+/// solid of no volume, or by whether the point at infinity lies outside it (OCCT's
+/// classification), far cheaper where faces are trimmed: OCCT integrates their volume over
+/// every knot span of their surfaces. The volume decides where the classification cannot.
+enum class Orienting { ByVolume, ByClassification };
+
 /// Sews faces into a closed shell and makes it a solid, faces pointing outwards. Throws Error
-/// when they do not close or enclose no volume.
+/// when they do not close or (`Orienting::ByVolume`) enclose no volume.
 /// `sewnFaces`, when given, receives the solid's face for each input face (null for null).
 /// Edges within `tolerance` of each other are joined.
 TopoDS_Shape sewnSolid(const std::vector<TopoDS_Face>& faces, std::vector<TopoDS_Face>* sewnFaces = nullptr,
-                       double tolerance = kJoinTolerance);
+                       double tolerance = kJoinTolerance, Orienting orienting = Orienting::ByVolume);
 
 /// The planar face on a closed wire, sharing its edges, its normal turned so that the wire
 /// runs anticlockwise about it. Throws Error when the wire is not planar, or encloses no
