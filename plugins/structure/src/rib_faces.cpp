@@ -358,12 +358,17 @@ class ExplicitRib {
 
 RibPlacement ribPlacement(const Configuration& configuration, const RibsDefinition& ribs, const StructureFrame& frame,
                           long long number) {
-  const RibCutter cutter(configuration, frame, *ribs.structure);
-  std::vector<RibPlacement> all;
-  if (ribs.node->ribsPositioning)
-    all = RibSet(ribs, cutter).placements();
-  else if (ribs.node->ribExplicitPositioning)
-    all = {ExplicitRib(ribs, cutter).placement()};
+  // Cached: the cells, spars and tanks bounded by ribs of one set each ask for them.
+  const auto placed = configuration.cache().obtain<std::vector<RibPlacement>>("rib-placements:" + ribs.uid, [&] {
+    const RibCutter cutter(configuration, frame, *ribs.structure);
+    auto all = std::make_shared<std::vector<RibPlacement>>();
+    if (ribs.node->ribsPositioning)
+      *all = RibSet(ribs, cutter).placements();
+    else if (ribs.node->ribExplicitPositioning)
+      *all = {ExplicitRib(ribs, cutter).placement()};
+    return std::shared_ptr<const std::vector<RibPlacement>>(all);
+  });
+  const std::vector<RibPlacement>& all = *placed;
   if (number < 1 || number > static_cast<long long>(all.size()))
     throw Error(ErrorCode::InvalidModel, "the ribs definition '" + ribs.uid + "' has no rib " + std::to_string(number) +
                                              " (it has " + std::to_string(all.size()) + ")");

@@ -13,6 +13,7 @@
 #include "airshape/error.h"
 #include "rib_cutter.h"
 #include "rib_point.h"
+#include "smallest_value.h"
 
 namespace airshape::structure {
 
@@ -74,27 +75,15 @@ double StructureFrame::frameEta(const std::string& referenceUid, double eta) con
 }
 
 double StructureFrame::etaOf(const gp_Pnt& point) const {
-  // The distance to the chord line at eta is smallest at the point's eta: golden sections.
-  auto distance = [&](double eta) {
+  // The distance to the chord line at eta is smallest at the point's eta. Its square is
+  // smooth there, even for a point on the chord surface (where the distance has a corner), so
+  // parabolas find it to rounding.
+  auto squaredDistance = [&](double eta) {
     const gp_Pnt front = chordPoint("", eta, 0.0), back = chordPoint("", eta, 1.0);
     const gp_Vec chord(front, back);
-    const gp_Vec toPoint(front, point);
-    return toPoint.Crossed(chord).Magnitude() / chord.Magnitude();
+    return gp_Vec(front, point).Crossed(chord).SquareMagnitude() / chord.SquareMagnitude();
   };
-  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
-  double a = 0.0, b = 1.0;
-  double c = b - golden * (b - a), d = a + golden * (b - a);
-  double fc = distance(c), fd = distance(d);
-  while (b - a > 1e-12) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc;
-      c = b - golden * (b - a), fc = distance(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + golden * (b - a), fd = distance(d);
-    }
-  }
-  return 0.5 * (a + b);
+  return argumentOfMinimum(squaredDistance, 0.0, 1.0, 1e-12);
 }
 
 gp_Vec StructureFrame::midplaneNormal(double eta) const {
