@@ -110,11 +110,14 @@ Device deviceNamed(const Configuration& configuration, const std::string& uid) {
 }
 
 Device deviceInAnyModel(const Configuration& configuration, const std::string& uid) {
-  for (const model::ModelComponents& model : model::everyModel(configuration))
-    for (const schema::WingType* wing : model.wings)
-      for (const Device& device : allDevicesOf(*wing, true))
-        if (device.uid == uid) return device;
-  throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");
+  // Cached: the structure inside a device asks for its coordinates point by point.
+  return *configuration.cache().obtain<Device>("device:" + uid, [&] {
+    for (const model::ModelComponents& model : model::everyModel(configuration))
+      for (const schema::WingType* wing : model.wings)
+        for (const Device& device : allDevicesOf(*wing, true))
+          if (device.uid == uid) return std::make_shared<const Device>(device);
+    throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");
+  });
 }
 
 std::pair<double, double> parameterRangeOf(const Device& device) {
