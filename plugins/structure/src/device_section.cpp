@@ -44,7 +44,7 @@ std::optional<TopoDS_Face> DeviceSection::wingSection(const CrossingLines& lines
   }
   const double margin = 1e-3 * (last - first);
   const auto& [upperSkin, lowerSkin] = *wingSkins_;
-  const auto upper = crossingSpan(upperSkin, lines), lower = crossingSpan(lowerSkin, lines);
+  const auto upper = crossingSpan(upperSkin, lines, tolerance_), lower = crossingSpan(lowerSkin, lines, tolerance_);
   if (upper && lower) {
     if (from.kind == CrossingEnd::Kind::Open && first - margin > std::max(upper->first, lower->first))
       from = CrossingEnd::atLine(first - margin);

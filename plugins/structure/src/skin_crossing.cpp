@@ -386,43 +386,80 @@ std::optional<double> endOn(const std::vector<CrossedPatch>& crossed, const Cros
   return std::nullopt;
 }
 
-/// The patches the plane crosses, each once, sorted along the lines; nothing when a face is no
-/// untrimmed patch or the plane crosses one other than once.
-std::optional<std::vector<CrossedPatch>> crossedPatches(const TopoDS_Shape& skin, const CrossingLines& lines) {
+/// The crossed patches in runs along the lines, each patch entered where the one before it in
+/// its run is left (within the tolerance).
+std::vector<std::vector<CrossedPatch>> runsOf(std::vector<CrossedPatch> crossed, double tolerance) {
+  std::sort(crossed.begin(), crossed.end(),
+            [](const CrossedPatch& a, const CrossedPatch& b) { return a.entry.t < b.entry.t; });
+  std::vector<std::vector<CrossedPatch>> runs;
+  for (const CrossedPatch& patch : crossed) {
+    const auto run = std::find_if(runs.begin(), runs.end(), [&](const std::vector<CrossedPatch>& candidate) {
+      return candidate.back().exit.point.Distance(patch.entry.point) <= tolerance;
+    });
+    if (run == runs.end())
+      runs.push_back({patch});
+    else
+      run->push_back(patch);
+  }
+  return runs;
+}
+
+/// Whether a range of t meets the lines between t = 0 and t = 1.
+bool meetsUnitRange(double low, double high) { return high >= 0.0 && low <= 1.0; }
+
+/// The patches the plane crosses, each once, sorted along the lines, each entered where the one
+/// before is left. Where the plane crosses the skin in separate runs (a box wing's other wing,
+/// further along the plane), the run that meets
+/// the lines between t = 0 and 1, where the family is set up (a spar's piece between its
+/// positions, a rib between its ends). Nothing when a face is no untrimmed patch, no run or
+/// more than one meets those lines, or a face the plane crosses other than once lies along
+/// the run.
+std::optional<std::vector<CrossedPatch>> crossedPatches(const TopoDS_Shape& skin, const CrossingLines& lines,
+                                                        double tolerance) {
   const gp_Vec normal = lines.planeNormal();
   std::vector<CrossedPatch> crossed;
+  std::vector<std::pair<double, double>> unclear;  // the t ranges of faces crossed other than once
   for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
     const std::optional<Patch> patch = patchOf(TopoDS::Face(explorer.Current()));
     if (!patch) return std::nullopt;
     if (!poleHullCrossesPlane(*patch, lines, normal)) continue;
     const std::vector<PatchPoint> crossings = boundaryCrossings(*patch, lines, normal);
     if (crossings.empty()) continue;
-    if (crossings.size() != 2 || crossings[1].t - crossings[0].t <= 0.0) return std::nullopt;
-    crossed.push_back({*patch, crossings[0], crossings[1]});
+    if (crossings.size() != 2 || crossings[1].t - crossings[0].t <= 0.0)
+      unclear.emplace_back(crossings.front().t, crossings.back().t);
+    else
+      crossed.push_back({*patch, crossings[0], crossings[1]});
   }
-  if (crossed.empty()) return std::nullopt;
-  std::sort(crossed.begin(), crossed.end(),
-            [](const CrossedPatch& a, const CrossedPatch& b) { return a.entry.t < b.entry.t; });
-  return crossed;
+  std::vector<std::vector<CrossedPatch>> runs = runsOf(crossed, tolerance);
+  if (runs.size() > 1)
+    runs.erase(std::remove_if(runs.begin(), runs.end(),
+                              [](const std::vector<CrossedPatch>& run) {
+                                return !meetsUnitRange(run.front().entry.t, run.back().exit.t);
+                              }),
+               runs.end());
+  if (runs.size() != 1) return std::nullopt;
+  const double low = runs.front().front().entry.t, high = runs.front().back().exit.t;
+  for (const auto& [first, last] : unclear)
+    if (last >= low && first <= high) return std::nullopt;
+  return runs.front();
 }
 
 }  // namespace
 
-std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, const CrossingLines& lines) {
-  const auto crossed = crossedPatches(skin, lines);
+std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, const CrossingLines& lines,
+                                                      double tolerance) {
+  const auto crossed = crossedPatches(skin, lines, tolerance);
   if (!crossed) return std::nullopt;
   return std::make_pair(crossed->front().entry.t, crossed->back().exit.t);
 }
 
 std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const CrossingLines& lines,
                                               const CrossingEnd& fromEnd, const CrossingEnd& toEnd, double tolerance) {
-  auto found = crossedPatches(skin, lines);
+  auto found = crossedPatches(skin, lines, tolerance);
   if (!found) return std::nullopt;
   std::vector<CrossedPatch>& crossed = *found;
-  for (std::size_t i = 1; i < crossed.size(); ++i) {
-    if (crossed[i].entry.point.Distance(crossed[i - 1].exit.point) > tolerance) return std::nullopt;  // a gap
+  for (std::size_t i = 1; i < crossed.size(); ++i)
     crossed[i].entry.point = crossed[i - 1].exit.point;  // one point where two patches meet
-  }
   const double first = crossed.front().entry.t, last = crossed.back().exit.t;
   const double slack = 1e-12 * (last - first);
   const std::optional<double> from = endOn(crossed, lines, fromEnd, true), to = endOn(crossed, lines, toEnd, false);

@@ -60,13 +60,17 @@ struct SkinCrossing {
 };
 
 /// The range of the lines (their t) across which the plane crosses the skin, from its first
-/// crossing to its last; nothing when the skin is not what the trace takes.
-std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, const CrossingLines& lines);
+/// crossing to its last (in the run of faces the trace takes); nothing when the skin is not
+/// what the trace takes.
+std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, const CrossingLines& lines,
+                                                      double tolerance);
 
 /// Traces the skin crossing, or gives nothing when the skin is not what the direct trace
 /// handles: faces that are not untrimmed B-spline patches, a face the plane crosses other than
 /// once, faces crossed with gaps between them, an end the skin does not reach, or a line the
-/// skin meets tangentially. The caller then cuts by a Boolean operation.
+/// skin meets tangentially. The caller then cuts by a Boolean operation. Where the plane
+/// crosses the skin in runs of faces apart from each other (a box wing's lower and upper
+/// wings), the trace takes the run that meets the lines between t = 0 and 1, if only one does.
 std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const CrossingLines& lines,
                                               const CrossingEnd& from, const CrossingEnd& to, double tolerance);
 

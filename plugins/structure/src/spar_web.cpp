@@ -80,6 +80,21 @@ std::vector<SparWall::Piece> piecesBetween(const gp_Pnt& from, const gp_Pnt& to,
   return pieces;
 }
 
+/// Whether a piece that carries a twisted piece's plane on beyond the wall's end (past the
+/// component segment's root or tip) meets the skins only at that end: then it holds nothing.
+bool beyondSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin, const CrossingLines& lines,
+                 const SparWall::Piece& piece, double tolerance) {
+  if (piece.carriedBefore == piece.carriedAfter) return false;
+  const double slack = tolerance / lines.along.Magnitude();
+  for (const TopoDS_Shape* skin : {&upperSkin, &lowerSkin}) {
+    const auto span = crossingSpan(*skin, lines, tolerance);
+    if (!span) return false;
+    const bool inside = piece.carriedBefore ? span->first < 1.0 - slack : span->second > slack;
+    if (inside) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<TopoDS_Face> SparWall::faces() const {
@@ -142,6 +157,7 @@ NamedShape sparWeb(const Configuration& configuration, const StructureServices& 
     const CrossingEnd from = piece.carriedBefore ? CrossingEnd::open() : CrossingEnd::atLine(0.0);
     const CrossingEnd to = piece.carriedAfter ? CrossingEnd::open() : CrossingEnd::atLine(1.0);
     if (frame.inDevice()) return inDevice ? inDevice->faces(lines, from, to, OpenEnds::ClosedStraight) : std::nullopt;
+    if (beyondSkins(upperSkin, lowerSkin, lines, piece, tolerance)) return std::vector<TopoDS_Face>{};
     return one(sectionBetweenSkins(upperSkin, lowerSkin, lines, from, to, tolerance, OpenEnds::ClosedStraight));
   };
   std::vector<std::vector<TopoDS_Face>> pieces;
