@@ -103,6 +103,7 @@ class Side {
   }
 
   const Patch& patch(std::size_t k) const { return patches_[k]; }
+  gp_Pnt base(double lambda) const { return lines_.base(lambda); }
 
  private:
   /// A box round the patch's poles, which hold the whole surface (convex hull property): a line
@@ -124,13 +125,25 @@ class Side {
 using Piece = CrossingPiece;
 
 /// The one point where the line at `lambda` meets the skin, on the patch the crossing goes on
-/// over towards `ahead`; nothing when it misses the skin. Throws FoldedSkin where it meets it at
-/// two points.
+/// over towards `ahead`; nothing when it misses the skin. A line may meet the skin again far
+/// off (a box wing's other wing): the point nearest the line's base counts where every other
+/// lies at least ten times as far from the base. Throws FoldedSkin where the line meets the
+/// skin at two points otherwise.
 std::optional<Hit> entry(const Side& side, double lambda, double ahead, double tolerance) {
-  const std::vector<Hit> hits = side.search(lambda);
+  std::vector<Hit> hits = side.search(lambda);
   if (hits.empty()) return std::nullopt;
+  const gp_Pnt base = side.base(lambda);
+  std::sort(hits.begin(), hits.end(),
+            [&](const Hit& a, const Hit& b) { return base.Distance(a.at.point) < base.Distance(b.at.point); });
+  const gp_Pnt nearest = hits.front().at.point;
+  const double reach = base.Distance(nearest);
+  std::vector<Hit> atNearest;
   for (const Hit& hit : hits)
-    if (hit.at.point.Distance(hits.front().at.point) > tolerance) throw FoldedSkin();
+    if (hit.at.point.Distance(nearest) <= tolerance)
+      atNearest.push_back(hit);
+    else if (base.Distance(hit.at.point) < 10.0 * reach + tolerance)
+      throw FoldedSkin();
+  hits = atNearest;
   for (const Hit& hit : hits)
     if (side.on(hit.patch, ahead, hit.at)) return Hit{hit.patch, ontoBound(side.patch(hit.patch), hit.at, tolerance)};
   return Hit{hits.front().patch, ontoBound(side.patch(hits.front().patch), hits.front().at, tolerance)};
