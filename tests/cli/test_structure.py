@@ -351,6 +351,23 @@ def test_cells_reaching_the_edges_of_their_skin(tmp_path):
     assert lower_box["max"][1] == pytest.approx(2.5, abs=1e-6) and lower_box["max"][2] < 0
 
 
+def test_a_cell_on_the_tip_reaches_a_tip_that_leans_outwards(tmp_path):
+    # The tip section turned −30° about x leans its upper skin outwards: a point of height h on
+    # it lies at y = 5 + h/2. The cell's lines at the tip stand along z and meet that skin short
+    # of its edge, but a border on the tip is the skin's own edge: the cell of ξ 0.2 to 0.6 ends
+    # there, its farthest point at ξ 0.5 (h = 0.075), y = 5.0375.
+    positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
+    tip = cell("TipCell", 0.5, 1.0, "<xsi1>0.2</xsi1><xsi2>0.2</xsi2>", "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"), cells(tip))
+    path.write_text(path.read_text().replace(
+        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>',
+        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
+        "<rotation><x>-30</x><y>0</y><z>0</z></rotation>", 1))
+    box, = (a["ok"] for a in ask(path, {"op": "bounding_box", "uid": "TipCell"}))
+    assert box["max"][1] == pytest.approx(5 + 0.075 * 0.5, abs=1e-6)
+    assert box["min"][0] == pytest.approx(1.4, abs=1e-3) and box["max"][0] == pytest.approx(2.2, abs=1e-3)
+
+
 def simpson(f, a, b, steps=200):
     h = (b - a) / steps
     return h / 3 * sum((1 if k in (0, steps) else 4 if k % 2 else 2) * f(a + k * h) for k in range(steps + 1))

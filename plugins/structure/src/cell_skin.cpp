@@ -7,9 +7,11 @@
 #include <string>
 #include <utility>
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -231,6 +233,48 @@ std::optional<std::vector<TopoDS_Face>> fromDeviceFaces(const StructureFrame& fr
   return cell;
 }
 
+/// Moves a border on the component segment's root or tip beyond the skin's end. It lies on the
+/// skin's own edge there, which a section leaning outwards carries past the border's lines: they
+/// would meet the skin short of its edge, or (an upright one) just at its bound, found on it or
+/// off it by rounding. Beyond the skin they miss it, which then ends the cell with its own edge.
+/// `outerFront` indexes the outer border's first corner in the loop (the outer border runs from
+/// it to the next corner, the inner from the last corner to the first); `skinCorners` are the
+/// corners of a box round the skin (the loop's frame).
+void beyondSkinEnds(std::vector<gp_Pnt>& loop, const std::vector<double>& etas, std::size_t outerFront,
+                    const std::vector<gp_Pnt>& skinCorners) {
+  // Each corner along its side, past the farthest of the box's corners that way, and a thousandth
+  // of the side further.
+  const auto prolong = [&](std::size_t corner, std::size_t neighbour) {
+    const gp_Vec side(loop[neighbour], loop[corner]);
+    const gp_Dir along(side);
+    double past = 0.0;
+    for (const gp_Pnt& skinCorner : skinCorners)
+      past = std::max(past, gp_Vec(loop[corner], skinCorner).Dot(gp_Vec(along)));
+    loop[corner].Translate(gp_Vec(along) * (past + 1e-3 * side.Magnitude()));
+  };
+  const std::size_t last = loop.size() - 1, outerBack = outerFront + 1;
+  if (etas[outerFront] >= 1.0 - 1e-9 && etas[outerBack] >= 1.0 - 1e-9) {
+    prolong(outerFront, outerFront - 1);
+    prolong(outerBack, outerBack == last ? 0 : outerBack + 1);
+  }
+  if (etas.front() <= 1e-9 && etas.back() <= 1e-9) {
+    prolong(0, 1);
+    prolong(last, last - 1);
+  }
+}
+
+/// The corners of a box round the shape, in the frame's wing coordinates.
+std::vector<gp_Pnt> boxCorners(const TopoDS_Shape& shape, const StructureFrame& frame) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box, false);
+  double x[2], y[2], z[2];
+  box.Get(x[0], y[0], z[0], x[1], y[1], z[1]);
+  std::vector<gp_Pnt> corners;
+  for (int corner = 0; corner < 8; ++corner)
+    corners.push_back(frame.toWing(gp_Pnt(x[corner & 1], y[(corner >> 1) & 1], z[(corner >> 2) & 1])));
+  return corners;
+}
+
 }  // namespace
 
 NamedShape cellSkin(const Configuration& configuration, const StructureServices& services, const WingCell& cell) {
@@ -262,6 +306,9 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
       0.5 * (*std::min_element(etas.begin(), etas.end()) + *std::max_element(etas.begin(), etas.end()));
   std::vector<gp_Vec> normals;
   for (const double eta : etas) normals.push_back(frame.midplaneNormal(eta + (middle > eta ? 1e-6 : -1e-6)));
+  const TopoDS_Shape skin = frame.skin(cell.upper);
+  if (!frame.inDevice())
+    beyondSkinEnds(loop, etas, corners.alongSpar(true, innerFront, outerFront).size() + 1, boxCorners(skin, frame));
   const double reach = frame.reach();
   auto level = [&](double side) {
     BRepBuilderAPI_MakePolygon polygon;
@@ -275,7 +322,6 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
 
   // The skin split along where the prism's sides meet it (no surfaces intersected), or, where
   // that does not apply, cut by the prism in a Boolean common.
-  const TopoDS_Shape skin = frame.skin(cell.upper);
   RuledLoop ruled;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));

@@ -184,9 +184,7 @@ std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
   constexpr int kSamples = 16;
   const double step = 1.0 / kSamples;
   std::vector<Piece> pieces;
-  auto add = [&](Piece& piece, const PatchPoint& point) {
-    piece.points.push_back(ontoBound(side.patch(piece.patch), point, tolerance));
-  };
+  auto add = [&](Piece& piece, const PatchPoint& point) { piece.points.push_back(point); };
   auto begin = [&](const Hit& hit) {
     pieces.push_back({hit.patch, {}, nullptr});
     add(pieces.back(), hit.at);
@@ -229,10 +227,17 @@ std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
     --i;  // this line again, from there
   }
   // A piece over a mere corner of a patch (the crossing passing through a vertex) is left out:
-  // its neighbours meet within the vertices' tolerance.
+  // its neighbours meet within the vertices' tolerance. A piece's ends are put on its patch's
+  // bounds where they lie within the tolerance of them; its points between are left where they
+  // are, which along a bound close by would put the curve now on the bound, now off it.
   std::vector<Piece> kept;
-  for (const Piece& piece : pieces)
-    if (piece.points.back().t - piece.points.front().t > 1e-9) kept.push_back(piece);
+  for (Piece& piece : pieces) {
+    if (piece.points.back().t - piece.points.front().t <= 1e-9) continue;
+    const Patch& patch = side.patch(piece.patch);
+    piece.points.front() = ontoBound(patch, piece.points.front(), tolerance);
+    piece.points.back() = ontoBound(patch, piece.points.back(), tolerance);
+    kept.push_back(piece);
+  }
   for (const Piece& piece : kept)
     if (piece.points.size() < 2) return std::nullopt;
   return kept;
@@ -281,11 +286,15 @@ std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>
   const Side side(patches, lines);
   auto pieces = piecesOf(side, tolerance);
   if (!pieces) return std::nullopt;
+  // Where a line meets the skin tangentially at a piece's end (a cell's corner on the leading
+  // edge), the crossing goes there like a square root of t: the points crowd towards that end
+  // over many rounds, a few more each round.
+  constexpr std::size_t kMostPoints = 1000;
   for (CrossingPiece& piece : *pieces) {
     piece.curve = curveThrough(piece);
     bool failed = false;
-    for (int round = 0; piece.curve && !followsCrossing(side, piece, piece.curve, tolerance, failed); ++round) {
-      if (failed || round == 8) return std::nullopt;
+    while (piece.curve && !followsCrossing(side, piece, piece.curve, tolerance, failed)) {
+      if (failed || piece.points.size() > kMostPoints) return std::nullopt;
       piece.curve = curveThrough(piece);
     }
     if (!piece.curve) return std::nullopt;

@@ -44,5 +44,25 @@ TEST(RuledCrossing, RefusesASkinThatFoldsBackCloseBy) {
   EXPECT_THROW(ruledCrossing(skinWithCopyAbove(0.2), kUpFromChord, 1e-9), FoldedSkin);
 }
 
+TEST(RuledCrossing, FollowsTheSkinToWhereALineTouchesItsLeadingEdge) {
+  // Lines up along z from x = 0.3 to x = 0 at mid span: the last touches the skin at its leading
+  // edge, where the skin stands upright, so the crossing goes there like a square root of t.
+  const RuledLines toTheNose{gp_Pnt(0.3, 0.5, -1.0), gp_Pnt(0.0, 0.5, -1.0), gp_Vec(0, 0, 1), gp_Vec(0, 0, 1)};
+  const std::vector<Patch> patches = skinPatches(test::upperSkin())->patches;
+  const auto pieces = ruledCrossing(patches, toTheNose, 1e-9);
+  ASSERT_TRUE(pieces.has_value());
+  ASSERT_EQ(pieces->size(), 1u);
+  const CrossingPiece& piece = pieces->front();
+  EXPECT_NEAR(piece.points.back().point.Distance(gp_Pnt(0.0, 0.5, 0.0)), 0.0, 1e-9);
+  // The curve follows the crossing between its points, close to the nose too.
+  const Patch& patch = patches.front();
+  for (double t : {0.5, 0.9, 0.99, 0.999, 0.99999}) {
+    const gp_Pnt2d uv = piece.curve->Value(t);
+    const gp_Pnt onCurve = patch.surface->Value(uv.X(), uv.Y());
+    EXPECT_NEAR(onCurve.X(), 0.3 * (1.0 - t), 1e-8) << "at t = " << t;
+    EXPECT_NEAR(onCurve.Y(), 0.5, 1e-8) << "at t = " << t;
+  }
+}
+
 }  // namespace
 }  // namespace airshape::structure
