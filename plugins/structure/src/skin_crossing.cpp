@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -31,19 +32,30 @@ double side(const CrossingLines& lines, const gp_Vec& normal, const gp_Pnt& poin
   return gp_Vec(lines.origin, point).Dot(normal);
 }
 
-/// Whether the plane can cross the patch at all: its poles span it (the patch lies in their
-/// convex hull).
-bool poleHullCrossesPlane(const Patch& patch, const CrossingLines& lines, const gp_Vec& normal) {
+/// The range of the lines (their t) a trace looks at: between its ends where they are lines of
+/// the family, everywhere where an end is left open or lies on a border.
+struct LineWindow {
+  double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+};
+
+/// Whether the plane can cross the patch within the window at all: its poles span the plane
+/// and the lines through them meet the window (the patch lies in their convex hull, and the
+/// line's parameter t is an affine function of the point).
+bool poleHullCrossesPlane(const Patch& patch, const CrossingLines& lines, const gp_Vec& normal,
+                          const LineWindow& window) {
   bool below = false, above = false;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
   const TColgp_Array2OfPnt& poles = patch.surface->Poles();
   for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
     for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) {
       const double s = side(lines, normal, poles(i, j));
       below = below || s <= 0.0;
       above = above || s >= 0.0;
-      if (below && above) return true;
+      const double t = lines.lineThrough(poles(i, j));
+      low = std::min(low, t), high = std::max(high, t);
     }
-  return false;
+  const double slack = 1e-9 * (high - low);
+  return below && above && high >= window.low - slack && low <= window.high + slack;
 }
 
 /// The root of f between a and b, where f changes sign (f(a) = fa, f(b) = fb): regula falsi
@@ -413,16 +425,16 @@ bool meetsUnitRange(double low, double high) { return high >= 0.0 && low <= 1.0;
 /// the lines between t = 0 and 1, where the family is set up (a spar's piece between its
 /// positions, a rib between its ends). Nothing when a face is no untrimmed patch, no run or
 /// more than one meets those lines, or a face the plane crosses other than once lies along
-/// the run.
+/// the run. Faces whose poles' lines miss `window` are not looked at.
 std::optional<std::vector<CrossedPatch>> crossedPatches(const TopoDS_Shape& skin, const CrossingLines& lines,
-                                                        double tolerance) {
+                                                        double tolerance, const LineWindow& window = {}) {
   const gp_Vec normal = lines.planeNormal();
   std::vector<CrossedPatch> crossed;
   std::vector<std::pair<double, double>> unclear;  // the t ranges of faces crossed other than once
   for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
     const std::optional<Patch> patch = patchOf(TopoDS::Face(explorer.Current()));
     if (!patch) return std::nullopt;
-    if (!poleHullCrossesPlane(*patch, lines, normal)) continue;
+    if (!poleHullCrossesPlane(*patch, lines, normal, window)) continue;
     const std::vector<PatchPoint> crossings = boundaryCrossings(*patch, lines, normal);
     if (crossings.empty()) continue;
     if (crossings.size() != 2 || crossings[1].t - crossings[0].t <= 0.0)
@@ -455,7 +467,12 @@ std::optional<std::pair<double, double>> crossingSpan(const TopoDS_Shape& skin, 
 
 std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const CrossingLines& lines,
                                               const CrossingEnd& fromEnd, const CrossingEnd& toEnd, double tolerance) {
-  auto found = crossedPatches(skin, lines, tolerance);
+  // Only faces that can reach between the ends are looked at (a spar web's piece along a blade
+  // of fifty segments meets two or three).
+  LineWindow window;
+  if (fromEnd.kind == CrossingEnd::Kind::AtLine) window.low = fromEnd.t;
+  if (toEnd.kind == CrossingEnd::Kind::AtLine) window.high = toEnd.t;
+  auto found = crossedPatches(skin, lines, tolerance, window);
   if (!found) return std::nullopt;
   std::vector<CrossedPatch>& crossed = *found;
   for (std::size_t i = 1; i < crossed.size(); ++i)

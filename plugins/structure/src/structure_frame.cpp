@@ -92,13 +92,16 @@ gp_Vec StructureFrame::midplaneNormal(double eta) const {
 }
 
 std::vector<double> StructureFrame::sectionEtas() const {
-  std::vector<double> etas{0.0};
   if (inDevice()) return {0.0, 1.0};  // the device's borders
-  const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
-  for (std::size_t k = 0; k + 1 < segments.size(); ++k)
-    etas.push_back(wing().componentSegmentEta(configuration_, componentSegmentUid_, segments[k], 1.0));
-  etas.push_back(1.0);
-  return etas;
+  // Cached: every spar position asks whether it stands in a section.
+  return *configuration_.cache().obtain<std::vector<double>>("section-etas:" + componentSegmentUid_, [&] {
+    auto etas = std::make_shared<std::vector<double>>(1, 0.0);
+    const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+    for (std::size_t k = 0; k + 1 < segments.size(); ++k)
+      etas->push_back(wing().componentSegmentEta(configuration_, componentSegmentUid_, segments[k], 1.0));
+    etas->push_back(1.0);
+    return std::shared_ptr<const std::vector<double>>(etas);
+  });
 }
 
 gp_Vec StructureFrame::thicknessDirection(double eta, double xsi) const {
@@ -225,10 +228,13 @@ TopoDS_Shape StructureFrame::skin(bool upper) const {
 
 double StructureFrame::reach() const {
   // The box of the skins' poles holds the component segment (a B-spline lies in the hull of its
-  // poles), without sewing the solid for it.
-  Bnd_Box box;
-  for (const bool upper : {true, false}) BRepBndLib::Add(skin(upper), box, false);
-  return std::sqrt(box.SquareExtent());
+  // poles), without sewing the solid for it. Cached: each element of the structure asks.
+  const std::string host = inDevice() ? deviceUid_ : componentSegmentUid_;
+  return *configuration_.cache().obtain<double>("structure-reach:" + host, [&] {
+    Bnd_Box box;
+    for (const bool upper : {true, false}) BRepBndLib::Add(skin(upper), box, false);
+    return std::make_shared<const double>(std::sqrt(box.SquareExtent()));
+  });
 }
 
 }  // namespace airshape::structure
