@@ -3,9 +3,6 @@
 // skin folds back over itself and the crossing is left to the Boolean operation.
 #include <gtest/gtest.h>
 
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
-
 #include "bspline_patch.h"
 #include "ruled_crossing.h"
 #include "test_wing_skins.h"
@@ -15,16 +12,7 @@ namespace {
 
 /// The small wing's upper skin and a copy of it lifted by `lift` along z, as one skin.
 std::vector<Patch> skinWithCopyAbove(double lift) {
-  TopoDS_Compound skin;
-  BRep_Builder builder;
-  builder.MakeCompound(skin);
-  builder.Add(skin, test::upperSkin());
-  TopoDS_Shape lifted = test::upperSkin();
-  gp_Trsf shift;
-  shift.SetTranslation(gp_Vec(0, 0, lift));
-  lifted.Move(TopLoc_Location(shift));
-  builder.Add(skin, lifted);
-  return skinPatches(skin)->patches;
+  return skinPatches(test::upperSkinWithCopy(gp_Vec(0, 0, lift)))->patches;
 }
 
 // Lines up along z from the chord plane at x = 0.5, from y = 0.2 to 0.8.

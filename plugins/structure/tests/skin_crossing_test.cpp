@@ -3,9 +3,6 @@
 // up, where it gave up before.
 #include <gtest/gtest.h>
 
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
-
 #include "skin_crossing.h"
 #include "test_wing_skins.h"
 
@@ -13,19 +10,8 @@ namespace airshape::structure {
 namespace {
 
 /// Two skins of the small wing side by side: one as it is (y from 0 to 1), one shifted by 3
-/// along y, as one skin.
-TopoDS_Shape twoWingsApart() {
-  TopoDS_Compound skin;
-  BRep_Builder builder;
-  builder.MakeCompound(skin);
-  builder.Add(skin, test::upperSkin());
-  TopoDS_Shape shifted = test::upperSkin();
-  gp_Trsf shift;
-  shift.SetTranslation(gp_Vec(0, 3, 0));
-  shifted.Move(TopLoc_Location(shift));
-  builder.Add(skin, shifted);
-  return skin;
-}
+/// along y.
+TopoDS_Shape twoWingsApart() { return test::upperSkinWithCopy(gp_Vec(0, 3, 0)); }
 
 // A plane along the span at x = 0.5: its lines run up (along z) from points along y, t = 0 at
 // y = 0 and t = 1 at y = 1.

@@ -5,12 +5,17 @@
 #include <vector>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Builder.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <TopLoc_Location.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Trsf.hxx>
+#include <gp_Vec.hxx>
 
 namespace airshape::structure::test {
 
@@ -44,5 +49,18 @@ inline TopoDS_Face skin(double crest, const gp_Pnt& root, const gp_Pnt& tip) {
 /// The upper and the lower skin.
 inline TopoDS_Face upperSkin() { return skin(0.08, kUpperRoot, kUpperTip); }
 inline TopoDS_Face lowerSkin() { return skin(-0.06, kLowerRoot, kLowerTip); }
+
+/// The upper skin and a copy of it moved by `shift`, as one skin: two wings apart, as a box
+/// wing's lower and upper wing.
+inline TopoDS_Shape upperSkinWithCopy(const gp_Vec& shift) {
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, upperSkin());
+  gp_Trsf move;
+  move.SetTranslation(shift);
+  builder.Add(both, upperSkin().Moved(TopLoc_Location(move)));
+  return both;
+}
 
 }  // namespace airshape::structure::test
