@@ -288,13 +288,15 @@ std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>
   if (!pieces) return std::nullopt;
   // Where a line meets the skin tangentially at a piece's end (a cell's corner on the leading
   // edge), the crossing goes there like a square root of t: the points crowd towards that end
-  // over many rounds, a few more each round.
+  // over many rounds, a few more each round: each round halves the steps next to it, so some
+  // forty rounds take it from a sixteenth of the lines down to rounding.
   constexpr std::size_t kMostPoints = 1000;
+  constexpr int kMostRounds = 64;
   for (CrossingPiece& piece : *pieces) {
     piece.curve = curveThrough(piece);
     bool failed = false;
-    while (piece.curve && !followsCrossing(side, piece, piece.curve, tolerance, failed)) {
-      if (failed || piece.points.size() > kMostPoints) return std::nullopt;
+    for (int round = 0; piece.curve && !followsCrossing(side, piece, piece.curve, tolerance, failed); ++round) {
+      if (failed || round == kMostRounds || piece.points.size() > kMostPoints) return std::nullopt;
       piece.curve = curveThrough(piece);
     }
     if (!piece.curve) return std::nullopt;
