@@ -27,6 +27,7 @@
 #include "parameter_region.h"
 #include "plane_region.h"
 #include "rib_point.h"
+#include "ruled_prism.h"
 #include "skin_section.h"
 #include "skin_split.h"
 #include "spar_list.h"
@@ -328,8 +329,12 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
     ruled.directions.push_back(frame.toGlobal(normals[k]));
   }
   const double tolerance = kTraceTolerance * reach;
+  // Inside the prism: in closed form from its sides, or by OCCT's classification where the
+  // closed form cannot tell.
+  const RuledPrism sides(ruled.points, ruled.directions, reach);
   BRepClass3d_SolidClassifier inPrism(prism.solid);
   const auto keep = [&](const gp_Pnt& point) {
+    if (const std::optional<bool> inside = sides.contains(point)) return *inside;
     inPrism.Perform(point, tolerance);
     return inPrism.State() == TopAbs_IN;
   };
