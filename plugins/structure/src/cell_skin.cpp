@@ -332,11 +332,12 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   // Inside the prism: in closed form from its sides, or by OCCT's classification where the
   // closed form cannot tell.
   const RuledPrism sides(ruled.points, ruled.directions, reach);
-  BRepClass3d_SolidClassifier inPrism(prism.solid);
+  std::optional<BRepClass3d_SolidClassifier> inPrism;  // loaded only when first needed
   const auto keep = [&](const gp_Pnt& point) {
     if (const std::optional<bool> inside = sides.contains(point)) return *inside;
-    inPrism.Perform(point, tolerance);
-    return inPrism.State() == TopAbs_IN;
+    if (!inPrism) inPrism.emplace(prism.solid);
+    inPrism->Perform(point, tolerance);
+    return inPrism->State() == TopAbs_IN;
   };
   std::optional<std::vector<TopoDS_Face>> inside = frame.inDevice()
                                                        ? fromDeviceFaces(frame, cell.upper, ruled, keep, tolerance)

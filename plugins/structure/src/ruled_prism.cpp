@@ -1,5 +1,6 @@
 #include "ruled_prism.h"
 
+#include <array>
 #include <cmath>
 
 namespace airshape::structure {
@@ -44,12 +45,13 @@ std::optional<int> RuledPrism::crossings(const Side& side, const gp_Pnt& point) 
   const double a2 = offset.Dot(across2_), b2 = side.b.Dot(across2_), c2 = side.c.Dot(across2_),
                d2 = side.d.Dot(across2_);
   const double q2 = b2 * d1 - b1 * d2, q1 = a2 * d1 + b2 * c1 - a1 * d2 - b1 * c2, q0 = a2 * c1 - a1 * c2;
-  std::vector<double> roots;
+  std::array<double, 2> roots{};
+  std::size_t rootCount = 0;
   const double scale = std::abs(q2) + std::abs(q1) + std::abs(q0);
   if (scale == 0.0) return std::nullopt;  // the ray lies in the side
   if (std::abs(q2) <= 1e-12 * scale) {
     if (std::abs(q1) <= 1e-12 * scale) return 0;  // parallel to it
-    roots.push_back(-q0 / q1);
+    roots[rootCount++] = -q0 / q1;
   } else {
     const double discriminant = q1 * q1 - 4.0 * q2 * q0;
     if (std::abs(discriminant) <= 1e-12 * q1 * q1) return std::nullopt;  // touching
@@ -57,11 +59,12 @@ std::optional<int> RuledPrism::crossings(const Side& side, const gp_Pnt& point) 
     const double root = std::sqrt(discriminant);
     // The two roots without cancellation.
     const double q = -0.5 * (q1 + std::copysign(root, q1));
-    roots.push_back(q / q2);
-    if (q != 0.0) roots.push_back(q0 / q);
+    roots[rootCount++] = q / q2;
+    if (q != 0.0) roots[rootCount++] = q0 / q;
   }
   int count = 0;
-  for (const double t : roots) {
+  for (std::size_t k = 0; k < rootCount; ++k) {
+    const double t = roots[k];
     if (t < -1e-9 || t > 1.0 + 1e-9) continue;
     if (nearBound(t)) return std::nullopt;  // through a corner's line
     const double first = c1 + t * d1, second = c2 + t * d2;
