@@ -20,16 +20,16 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/ruled_prism.h"
 #include "airshape/geometry/ruled_sections.h"
+#include "airshape/geometry/skin_split.h"
 #include "contour_cell.h"
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "parameter_region.h"
 #include "plane_region.h"
 #include "rib_point.h"
-#include "ruled_prism.h"
 #include "skin_section.h"
-#include "skin_split.h"
 #include "spar_list.h"
 #include "structure_frame.h"
 
@@ -202,11 +202,12 @@ bool sameSurface(const Handle(Geom_Surface) & a, const Handle(Geom_Surface) & b)
 /// in the surfaces' parameter planes (the device's faces are trimmed pieces of the skin, which
 /// the split does not take). Nothing where that does not apply (then the Boolean cut of the
 /// device's faces by the prism).
-std::optional<std::vector<TopoDS_Face>> fromDeviceFaces(const StructureFrame& frame, bool upper, const RuledLoop& ruled,
+std::optional<std::vector<TopoDS_Face>> fromDeviceFaces(const StructureFrame& frame, bool upper,
+                                                        const geometry::RuledLoop& ruled,
                                                         const std::function<bool(const gp_Pnt&)>& keep,
                                                         double tolerance) {
   const std::optional<std::vector<TopoDS_Face>> pieces =
-      skinPiecesWhere(frame.componentSegmentSkin(upper), ruled, keep, tolerance);
+      geometry::skinPiecesWhere(frame.componentSegmentSkin(upper), ruled, keep, tolerance);
   if (!pieces) return std::nullopt;
   std::vector<TopoDS_Face> cell;
   for (TopExp_Explorer explorer(frame.skin(upper), TopAbs_FACE); explorer.More(); explorer.Next()) {
@@ -323,7 +324,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
 
   // The skin split along where the prism's sides meet it (no surfaces intersected), or, where
   // that does not apply, cut by the prism in a Boolean common.
-  RuledLoop ruled;
+  geometry::RuledLoop ruled;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));
     ruled.directions.push_back(frame.toGlobal(normals[k]));
@@ -331,7 +332,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   const double tolerance = kTraceTolerance * reach;
   // Inside the prism: in closed form from its sides, or by OCCT's classification where the
   // closed form cannot tell.
-  const RuledPrism sides(ruled.points, ruled.directions, reach);
+  const geometry::RuledPrism sides(ruled.points, ruled.directions, reach);
   std::optional<BRepClass3d_SolidClassifier> inPrism;  // loaded only when first needed
   const auto keep = [&](const gp_Pnt& point) {
     if (const std::optional<bool> inside = sides.contains(point)) return *inside;
@@ -341,7 +342,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   };
   std::optional<std::vector<TopoDS_Face>> inside = frame.inDevice()
                                                        ? fromDeviceFaces(frame, cell.upper, ruled, keep, tolerance)
-                                                       : skinPiecesWhere(skin, ruled, keep, tolerance);
+                                                       : geometry::skinPiecesWhere(skin, ruled, keep, tolerance);
   if (!inside) inside = cutByPrism(skin, prism.solid, cell.xpath);
   // A wing that folds back over itself (a joined or box wing) can bring skin of other segments
   // into the prism: only pieces within the cell's span count.

@@ -17,13 +17,13 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/skin_split.h"
 #include "compounds.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
 #include "position_rays.h"
 #include "skin_section.h"
-#include "skin_split.h"
 
 namespace airshape::structure {
 
@@ -84,9 +84,9 @@ double frameStation(const FuselageFrame& fuselage, const FuselageElement<schema:
 /// The loop around a door on the skin: along the first stringer's rays from the start to the end
 /// station, across the end frame's plane to the last stringer, back along it and across the
 /// start frame's plane (the rays between two stringers' the shorter way round), global frame.
-RuledLoop doorLoop(const FuselageFrame& fuselage, const StringerPath& first, const StringerPath& last, double fromX,
-                   double toX) {
-  RuledLoop loop;
+geometry::RuledLoop doorLoop(const FuselageFrame& fuselage, const StringerPath& first, const StringerPath& last,
+                             double fromX, double toX) {
+  geometry::RuledLoop loop;
   loop.rays = true;
   auto add = [&](const PositionRay& ray) {
     const gp_Pnt origin = fuselage.toGlobal(ray.origin);
@@ -151,7 +151,8 @@ NamedShape fuselageDoor(const Configuration& configuration, const std::string& u
                           stringerNamed(*door.structure, node.endStringerUID, node.xpath + "/endStringerUID"));
 
   std::vector<TopoDS_Face> split;
-  if (auto direct = skinSplitByLoop(compoundOf(fuselage.skinFaces()), doorLoop(fuselage, first, last, fromX, toX),
+  if (auto direct =
+          geometry::skinSplitByLoop(compoundOf(fuselage.skinFaces()), doorLoop(fuselage, first, last, fromX, toX),
                                     kTraceTolerance * fuselage.reach()))
     split = *direct;
   else

@@ -68,8 +68,8 @@ std::vector<TopoDS_Face> sweptInside(const FuselageFrame& fuselage, const schema
   std::vector<TopoDS_Face> faces;
   for (const auto& [a, b] : frameSpans(fuselage, frame)) {
     const gp_Pnt from = fuselage.toGlobal(a.origin), to = fuselage.toGlobal(b.origin);
-    const RuledLines rays{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
-                          gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
+    const geometry::RuledLines rays{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
+                                    gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
     const auto face = ruledFaceOutToSkin(skin, rays, kTraceTolerance * fuselage.reach());
     if (!face) return facesInside(compoundOf(frameSweep(fuselage, frame, fuselage.localReach())), fuselage.solid());
     faces.push_back(*face);

@@ -294,8 +294,8 @@ class ExplicitRib {
   std::vector<TopoDS_Face> twistedRib(const Lines& lines) const {
     const double reach = frame_.reach();
     // Straight from the skins where they allow it, else by a Boolean common.
-    const RuledLines ruled{frame_.toGlobal(lines.start.through), frame_.toGlobal(lines.end.through),
-                           frame_.toGlobal(lines.start.up), frame_.toGlobal(lines.end.up)};
+    const geometry::RuledLines ruled{frame_.toGlobal(lines.start.through), frame_.toGlobal(lines.end.through),
+                                     frame_.toGlobal(lines.start.up), frame_.toGlobal(lines.end.up)};
     if (const auto face =
             ruledSectionBetweenSkins(frame_.skin(true), frame_.skin(false), ruled, kTraceTolerance * reach))
       return {*face};

@@ -36,7 +36,7 @@ struct Run {
 };
 
 /// The parameter along the line at t of a point on it.
-double alongLine(const RuledLines& lines, double t, const gp_Pnt& point) {
+double alongLine(const geometry::RuledLines& lines, double t, const gp_Pnt& point) {
   const gp_Vec direction = lines.direction(t);
   return gp_Vec(lines.base(t), point).Dot(direction) / direction.SquareMagnitude();
 }
@@ -49,18 +49,20 @@ Handle(Geom2d_BSplineCurve) curveThrough(const std::vector<LinePoint>& run) {
     points.emplace_back(point.t, point.s);
     parameters.push_back(point.t);
   }
-  return curveThroughPoints(points, parameters);
+  return geometry::curveThroughPoints(points, parameters);
 }
 
 /// The run of a crossing piece: the curve through its points, with points added halfway
 /// between two where it strays from the piece's own curve by more than the tolerance.
-std::optional<Run> runOf(const CrossingPiece& piece, const Patch& patch, const RuledLines& lines, double tolerance) {
+std::optional<Run> runOf(const geometry::CrossingPiece& piece, const geometry::Patch& patch,
+                         const geometry::RuledLines& lines, double tolerance) {
   auto onPiece = [&](double t) {
     const gp_Pnt2d uv = piece.curve->Value(t);
     return LinePoint{t, alongLine(lines, t, patch.surface->Value(uv.X(), uv.Y()))};
   };
   Run run;
-  for (const PatchPoint& point : piece.points) run.points.push_back({point.t, alongLine(lines, point.t, point.point)});
+  for (const geometry::PatchPoint& point : piece.points)
+    run.points.push_back({point.t, alongLine(lines, point.t, point.point)});
   for (int round = 0; round < 8; ++round) {
     run.curve = curveThrough(run.points);
     if (run.curve.IsNull()) return std::nullopt;
@@ -79,13 +81,14 @@ std::optional<Run> runOf(const CrossingPiece& piece, const Patch& patch, const R
 
 /// One skin's crossing, run by run from the line at t = 0 to the line at t = 1; nothing when
 /// it leaves a gap.
-std::optional<std::vector<Run>> crossingOf(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance) {
-  const auto patches = skinPatches(skin);
+std::optional<std::vector<Run>> crossingOf(const TopoDS_Shape& skin, const geometry::RuledLines& lines,
+                                           double tolerance) {
+  const auto patches = geometry::skinPatches(skin);
   if (!patches) return std::nullopt;
-  const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
-  if (!pieces || !coversAllLines(*pieces)) return std::nullopt;
+  const auto pieces = geometry::ruledCrossing(patches->patches, lines, tolerance);
+  if (!pieces || !geometry::coversAllLines(*pieces)) return std::nullopt;
   std::vector<Run> runs;
-  for (const CrossingPiece& piece : *pieces) {
+  for (const geometry::CrossingPiece& piece : *pieces) {
     const auto run = runOf(piece, patches->patches[piece.patch], lines, tolerance);
     if (!run) return std::nullopt;
     runs.push_back(*run);
@@ -94,7 +97,7 @@ std::optional<std::vector<Run>> crossingOf(const TopoDS_Shape& skin, const Ruled
 }
 
 /// The ruled surface as a bilinear B-spline patch: u is t, v is s, over [-reach, reach].
-Handle(Geom_BSplineSurface) surfaceOf(const RuledLines& lines, double reach) {
+Handle(Geom_BSplineSurface) surfaceOf(const geometry::RuledLines& lines, double reach) {
   TColgp_Array2OfPnt poles(1, 2, 1, 2);
   for (int row = 1; row <= 2; ++row)
     for (int column = 1; column <= 2; ++column) {
@@ -151,7 +154,7 @@ std::optional<TopoDS_Edge> alongLineEdge(const Handle(Geom_Surface) & surface, d
 /// The face of the ruled surface between two runs of its points, each from the line at t = 0 to
 /// the line at t = 1, and those lines; throws OCCT's failures.
 std::optional<TopoDS_Face> faceBetween(const std::optional<std::vector<Run>>& upper,
-                                       const std::optional<std::vector<Run>>& lower, const RuledLines& lines,
+                                       const std::optional<std::vector<Run>>& lower, const geometry::RuledLines& lines,
                                        double tolerance) {
   if (!upper || !lower) return std::nullopt;
   double reach = 1.0;
@@ -188,7 +191,7 @@ std::optional<TopoDS_Face> faceBetween(const std::optional<std::vector<Run>>& up
 /// The section (ruledSectionBetweenSkins), throwing FoldedSkin or OCCT's failures where the
 /// direct way does not apply.
 std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
-                                     const RuledLines& lines, double tolerance) {
+                                     const geometry::RuledLines& lines, double tolerance) {
   return faceBetween(crossingOf(upperSkin, lines, tolerance), crossingOf(lowerSkin, lines, tolerance), lines,
                      tolerance);
 }
@@ -203,10 +206,11 @@ std::vector<Run> baseLine() {
 
 }  // namespace
 
-std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance) {
+std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const geometry::RuledLines& lines,
+                                              double tolerance) {
   try {
     return faceBetween(crossingOf(skin, lines, tolerance), baseLine(), lines, tolerance);
-  } catch (const FoldedSkin&) {
+  } catch (const geometry::FoldedSkin&) {
     return std::nullopt;
   } catch (const Standard_Failure&) {  // a curve or face OCCT cannot make: the Boolean way then
     return std::nullopt;
@@ -214,10 +218,10 @@ std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const Ru
 }
 
 std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
-                                                    const RuledLines& lines, double tolerance) {
+                                                    const geometry::RuledLines& lines, double tolerance) {
   try {
     return sectionOf(upperSkin, lowerSkin, lines, tolerance);
-  } catch (const FoldedSkin&) {
+  } catch (const geometry::FoldedSkin&) {
     return std::nullopt;
   } catch (const Standard_Failure&) {  // a curve or face OCCT cannot make: the Boolean way then
     return std::nullopt;

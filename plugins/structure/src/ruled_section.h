@@ -5,7 +5,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
-#include "ruled_crossing.h"
+#include "airshape/geometry/ruled_crossing.h"
 
 namespace airshape::structure {
 
@@ -17,11 +17,12 @@ namespace airshape::structure {
 /// this handles (faces that are not untrimmed B-spline patches, a line that misses a skin or
 /// meets it twice): the caller then cuts the surface by a Boolean operation.
 std::optional<TopoDS_Face> ruledSectionBetweenSkins(const TopoDS_Shape& upperSkin, const TopoDS_Shape& lowerSkin,
-                                                    const RuledLines& lines, double tolerance);
+                                                    const geometry::RuledLines& lines, double tolerance);
 
 /// The face of the ruled surface of `lines` (rays from inside a body: `lines.rays`) from its base
 /// line (s = 0, through the rays' origins) out to where the rays meet `skin`, between the rays
 /// at t = 0 and t = 1, made the same way. Nothing where the skin does not allow that.
-std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance);
+std::optional<TopoDS_Face> ruledFaceOutToSkin(const TopoDS_Shape& skin, const geometry::RuledLines& lines,
+                                              double tolerance);
 
 }  // namespace airshape::structure

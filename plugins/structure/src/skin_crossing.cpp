@@ -14,7 +14,7 @@
 #include <gp_Mat.hxx>
 #include <gp_Vec2d.hxx>
 
-#include "bspline_patch.h"
+#include "airshape/geometry/bspline_patch.h"
 #include "curve_fit.h"
 
 namespace airshape::structure {
@@ -41,7 +41,7 @@ struct LineWindow {
 /// Whether the plane can cross the patch within the window at all: its poles span the plane
 /// and the lines through them meet the window (the patch lies in their convex hull, and the
 /// line's parameter t is an affine function of the point).
-bool poleHullCrossesPlane(const Patch& patch, const CrossingLines& lines, const gp_Vec& normal,
+bool poleHullCrossesPlane(const geometry::Patch& patch, const CrossingLines& lines, const gp_Vec& normal,
                           const LineWindow& window) {
   bool below = false, above = false;
   double low = std::numeric_limits<double>::infinity(), high = -low;
@@ -120,11 +120,12 @@ std::vector<double> planeCrossings(const Handle(Geom_BSplineCurve) & curve, cons
 }
 
 /// Where the plane crosses the patch's boundary, sorted by t, corners found twice kept once.
-std::vector<PatchPoint> boundaryCrossings(const Patch& patch, const CrossingLines& lines, const gp_Vec& normal) {
-  std::vector<PatchPoint> crossings;
+std::vector<geometry::PatchPoint> boundaryCrossings(const geometry::Patch& patch, const CrossingLines& lines,
+                                                    const gp_Vec& normal) {
+  std::vector<geometry::PatchPoint> crossings;
   const auto add = [&](double u, double v) {
     const gp_Pnt point = patch.surface->Value(u, v);
-    for (const PatchPoint& known : crossings)
+    for (const geometry::PatchPoint& known : crossings)
       if (known.point.Distance(point) < 1e-12 * (1.0 + gp_Vec(point.XYZ()).Magnitude())) return;
     crossings.push_back({lines.lineThrough(point), u, v, point});
   };
@@ -136,15 +137,17 @@ std::vector<PatchPoint> boundaryCrossings(const Patch& patch, const CrossingLine
     const auto iso = Handle(Geom_BSplineCurve)::DownCast(patch.surface->VIso(v));
     for (double u : planeCrossings(iso, lines, normal)) add(u, v);
   }
-  std::sort(crossings.begin(), crossings.end(), [](const PatchPoint& a, const PatchPoint& b) { return a.t < b.t; });
+  std::sort(crossings.begin(), crossings.end(),
+            [](const geometry::PatchPoint& a, const geometry::PatchPoint& b) { return a.t < b.t; });
   return crossings;
 }
 
 /// The point where the line at t meets the patch (from the guess in `point`), and in
 /// `tangent` the crossing's derivative along t there: from S(u, v) = base(t) + s * across,
 /// Su u' + Sv v' - across s' = along.
-bool meetLineAt(const Patch& patch, const CrossingLines& lines, double t, PatchPoint& point, gp_Vec& tangent) {
-  if (!meetLine(patch, lines.base(t), lines.across, point)) return false;
+bool meetLineAt(const geometry::Patch& patch, const CrossingLines& lines, double t, geometry::PatchPoint& point,
+                gp_Vec& tangent) {
+  if (!geometry::meetLine(patch, lines.base(t), lines.across, point)) return false;
   point.t = t;
   gp_Pnt surfacePoint;
   gp_Vec du, dv;
@@ -157,17 +160,18 @@ bool meetLineAt(const Patch& patch, const CrossingLines& lines, double t, PatchP
 
 /// The piece of the crossing on one patch from `first` to `last` (already on the patch),
 /// sampled where the lines meet the patch, each from the patch parameters of its neighbours.
-Handle(Geom_BSplineCurve) tracePiece(const Patch& patch, const CrossingLines& lines, const PatchPoint& first,
-                                     const PatchPoint& last, double tolerance) {
+Handle(Geom_BSplineCurve)
+    tracePiece(const geometry::Patch& patch, const CrossingLines& lines, const geometry::PatchPoint& first,
+               const geometry::PatchPoint& last, double tolerance) {
   const CurveSampler sample = [&](double t, const CurveSample& before, const CurveSample& after) {
     const double share = after.t == before.t ? 0.0 : (t - before.t) / (after.t - before.t);
     const gp_XY guess = before.where.XY() + share * (after.where.XY() - before.where.XY());
-    PatchPoint point{t, guess.X(), guess.Y(), {}};
+    geometry::PatchPoint point{t, guess.X(), guess.Y(), {}};
     gp_Vec tangent;
     if (!meetLineAt(patch, lines, t, point, tangent)) return std::optional<CurveSample>();
     return std::optional<CurveSample>(CurveSample{t, point.point, tangent, gp_Pnt2d(point.u, point.v)});
   };
-  const auto sampleOf = [](const PatchPoint& point) {
+  const auto sampleOf = [](const geometry::PatchPoint& point) {
     return CurveSample{point.t, point.point, gp_Vec(), gp_Pnt2d(point.u, point.v)};
   };
   return fittedCurve(sample, sampleOf(first), sampleOf(last), tolerance);
@@ -176,7 +180,7 @@ Handle(Geom_BSplineCurve) tracePiece(const Patch& patch, const CrossingLines& li
 /// The crossing's curve in a patch's parameters: where f(u, v) = n · (S(u, v) - origin) is 0.
 class LevelCurve {
  public:
-  LevelCurve(const Patch& patch, const CrossingLines& lines) : patch_(patch), lines_(lines) {
+  LevelCurve(const geometry::Patch& patch, const CrossingLines& lines) : patch_(patch), lines_(lines) {
     normal_ = lines.planeNormal();
   }
 
@@ -224,14 +228,15 @@ class LevelCurve {
 
  private:
   static constexpr double kOutside = 1e-9;
-  const Patch& patch_;
+  const geometry::Patch& patch_;
   const CrossingLines& lines_;
   gp_Vec normal_;
 };
 
 /// The sense in which the curve runs from `first` towards `last`: into the patch where
 /// `first` lies on its boundary and only one sense enters it, else towards `last`.
-std::optional<double> senseFrom(const LevelCurve& curve, const PatchPoint& first, const PatchPoint& last) {
+std::optional<double> senseFrom(const LevelCurve& curve, const geometry::PatchPoint& first,
+                                const geometry::PatchPoint& last) {
   const double length = first.point.Distance(last.point);
   std::optional<double> entering;
   int entered = 0;
@@ -258,19 +263,20 @@ std::optional<double> senseFrom(const LevelCurve& curve, const PatchPoint& first
 /// where the direction turns fast; the points then joined by the cubic through them and
 /// their directions, parametrised by the length between them, with points added until the
 /// crossing halfway between any two is within the tolerance.
-Handle(Geom_BSplineCurve) traceAlongCurve(const Patch& patch, const CrossingLines& lines, const PatchPoint& first,
-                                          const PatchPoint& last, double tolerance) {
+Handle(Geom_BSplineCurve)
+    traceAlongCurve(const geometry::Patch& patch, const CrossingLines& lines, const geometry::PatchPoint& first,
+                    const geometry::PatchPoint& last, double tolerance) {
   const LevelCurve curve(patch, lines);
   const std::optional<double> sense = senseFrom(curve, first, last);
   if (!sense) return nullptr;
   const double length = first.point.Distance(last.point);
-  std::vector<PatchPoint> points{first};
+  std::vector<geometry::PatchPoint> points{first};
   std::vector<gp_Vec> tangents(1);
   gp_Vec2d rate;
   if (!curve.direction(first.u, first.v, *sense, tangents[0], rate)) return nullptr;
   double step = length / 16.0;
   for (int steps = 0; steps < 4000; ++steps) {
-    const PatchPoint& here = points.back();
+    const geometry::PatchPoint& here = points.back();
     if (here.point.Distance(last.point) <= 1.5 * step && gp_Vec(here.point, last.point).Dot(tangents.back()) > 0.0) {
       gp_Vec tangent;
       if (!curve.direction(last.u, last.v, *sense, tangent, rate)) return nullptr;
@@ -304,7 +310,7 @@ Handle(Geom_BSplineCurve) traceAlongCurve(const Patch& patch, const CrossingLine
     }
     Handle(Geom_BSplineCurve) fitted = cubicThrough(nodes, true);
     if (fitted.IsNull()) return nullptr;
-    std::vector<PatchPoint> refinedPoints{points.front()};
+    std::vector<geometry::PatchPoint> refinedPoints{points.front()};
     std::vector<gp_Vec> refinedTangents{tangents.front()};
     bool strayed = false;
     for (std::size_t i = 1; i < points.size(); ++i) {
@@ -335,10 +341,11 @@ Handle(Geom_BSplineCurve) traceAlongCurve(const Patch& patch, const CrossingLine
 
 /// The point of the patch on the line at t, starting from the patch parameters that the line
 /// has between two known crossings.
-std::optional<PatchPoint> pointBetween(const Patch& patch, const CrossingLines& lines, const PatchPoint& a,
-                                       const PatchPoint& b, double t) {
+std::optional<geometry::PatchPoint> pointBetween(const geometry::Patch& patch, const CrossingLines& lines,
+                                                 const geometry::PatchPoint& a, const geometry::PatchPoint& b,
+                                                 double t) {
   const double share = (t - a.t) / (b.t - a.t);
-  PatchPoint point{t, a.u + share * (b.u - a.u), a.v + share * (b.v - a.v), {}};
+  geometry::PatchPoint point{t, a.u + share * (b.u - a.u), a.v + share * (b.v - a.v), {}};
   gp_Vec tangent;
   if (!meetLineAt(patch, lines, t, point, tangent)) return std::nullopt;
   return point;
@@ -346,8 +353,8 @@ std::optional<PatchPoint> pointBetween(const Patch& patch, const CrossingLines& 
 
 /// The boundary of the patch a point on it lies on, when that boundary is a straight line
 /// (within the tolerance at three points between its corners): its corners.
-std::optional<SkinCrossing::StraightEdge> straightBoundaryAt(const Patch& patch, const PatchPoint& point,
-                                                             double tolerance) {
+std::optional<SkinCrossing::StraightEdge> straightBoundaryAt(const geometry::Patch& patch,
+                                                             const geometry::PatchPoint& point, double tolerance) {
   const double uSlack = 1e-9 * (patch.u1 - patch.u0), vSlack = 1e-9 * (patch.v1 - patch.v0);
   std::function<gp_Pnt(double)> along;
   if (std::abs(point.u - patch.u0) <= uSlack || std::abs(point.u - patch.u1) <= uSlack) {
@@ -371,8 +378,8 @@ std::optional<SkinCrossing::StraightEdge> straightBoundaryAt(const Patch& patch,
 
 /// A patch the plane crosses, from one boundary crossing to the other.
 struct CrossedPatch {
-  Patch patch;
-  PatchPoint entry, exit;
+  geometry::Patch patch;
+  geometry::PatchPoint entry, exit;
 };
 
 /// The t at which a trace ends on the crossed patches (sorted, meeting end to end): its
@@ -391,8 +398,8 @@ std::optional<double> endOn(const std::vector<CrossedPatch>& crossed, const Cros
   const double near = lines.lineThrough(end.through);
   for (const CrossedPatch& patch : crossed) {
     if (near < patch.entry.t || near > patch.exit.t) continue;
-    std::optional<PatchPoint> point = pointBetween(patch.patch, lines, patch.entry, patch.exit, near);
-    if (!point || !meetLine(patch.patch, end.through, end.direction, *point)) return std::nullopt;
+    std::optional<geometry::PatchPoint> point = pointBetween(patch.patch, lines, patch.entry, patch.exit, near);
+    if (!point || !geometry::meetLine(patch.patch, end.through, end.direction, *point)) return std::nullopt;
     return lines.lineThrough(point->point);
   }
   return std::nullopt;
@@ -432,10 +439,10 @@ std::optional<std::vector<CrossedPatch>> crossedPatches(const TopoDS_Shape& skin
   std::vector<CrossedPatch> crossed;
   std::vector<std::pair<double, double>> unclear;  // the t ranges of faces crossed other than once
   for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
-    const std::optional<Patch> patch = patchOf(TopoDS::Face(explorer.Current()));
+    const std::optional<geometry::Patch> patch = geometry::patchOf(TopoDS::Face(explorer.Current()));
     if (!patch) return std::nullopt;
     if (!poleHullCrossesPlane(*patch, lines, normal, window)) continue;
-    const std::vector<PatchPoint> crossings = boundaryCrossings(*patch, lines, normal);
+    const std::vector<geometry::PatchPoint> crossings = boundaryCrossings(*patch, lines, normal);
     if (crossings.empty()) continue;
     if (crossings.size() != 2 || crossings[1].t - crossings[0].t <= 0.0)
       unclear.emplace_back(crossings.front().t, crossings.back().t);
@@ -491,7 +498,7 @@ std::optional<SkinCrossing> traceSkinCrossing(const TopoDS_Shape& skin, const Cr
     const auto end =
         patch.exit.t - b <= slack ? patch.exit : pointBetween(patch.patch, lines, patch.entry, patch.exit, b);
     if (!start || !end) return std::nullopt;
-    PatchPoint startPoint = *start;
+    geometry::PatchPoint startPoint = *start;
     if (!crossing.pieces.empty()) startPoint.point = crossing.pieces.back()->EndPoint();
     Handle(Geom_BSplineCurve) piece = tracePiece(patch.patch, lines, startPoint, *end, tolerance);
     if (piece.IsNull()) piece = traceAlongCurve(patch.patch, lines, startPoint, *end, tolerance);

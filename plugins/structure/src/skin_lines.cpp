@@ -19,11 +19,11 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/ruled_crossing.h"
 #include "compounds.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "position_rays.h"
-#include "ruled_crossing.h"
 #include "skin_section.h"
 
 namespace airshape::structure {
@@ -90,7 +90,7 @@ NamedShape linesOf(const std::vector<SkinEdge>& pieces) {
 }  // namespace
 
 std::optional<std::vector<SkinEdge>> raysOnSkin(const FuselageFrame& fuselage, const std::vector<RaySpan>& spans) {
-  const auto patches = skinPatches(compoundOf(fuselage.skinFaces()));
+  const auto patches = geometry::skinPatches(compoundOf(fuselage.skinFaces()));
   if (!patches) return std::nullopt;
   const double tolerance = kTraceTolerance * fuselage.reach();
   std::vector<SkinEdge> edges;
@@ -99,13 +99,13 @@ std::optional<std::vector<SkinEdge>> raysOnSkin(const FuselageFrame& fuselage, c
     for (std::size_t k = 0; k < spans.size(); ++k) {
       const auto& [a, b] = spans[k];
       const gp_Pnt from = fuselage.toGlobal(a.origin), to = fuselage.toGlobal(b.origin);
-      const RuledLines lines{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
-                             gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
-      const auto pieces = ruledCrossing(patches->patches, lines, tolerance);
-      if (!pieces || !coversAllLines(*pieces)) return std::nullopt;
+      const geometry::RuledLines lines{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
+                                       gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
+      const auto pieces = geometry::ruledCrossing(patches->patches, lines, tolerance);
+      if (!pieces || !geometry::coversAllLines(*pieces)) return std::nullopt;
       for (std::size_t p = 0; p < pieces->size(); ++p) {
-        const CrossingPiece& piece = (*pieces)[p];
-        const Patch& patch = patches->patches[piece.patch];
+        const geometry::CrossingPiece& piece = (*pieces)[p];
+        const geometry::Patch& patch = patches->patches[piece.patch];
         auto pointAt = [&](double t) {
           const gp_Pnt2d uv = piece.curve->Value(t);
           return patch.surface->Value(uv.X(), uv.Y());
@@ -128,7 +128,7 @@ std::optional<std::vector<SkinEdge>> raysOnSkin(const FuselageFrame& fuselage, c
         previous = last;
       }
     }
-  } catch (const FoldedSkin&) {
+  } catch (const geometry::FoldedSkin&) {
     return std::nullopt;
   } catch (const Standard_Failure&) {
     return std::nullopt;

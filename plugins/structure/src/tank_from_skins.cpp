@@ -11,9 +11,9 @@
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/skin_split.h"
 #include "ruled_section.h"
 #include "skin_section.h"
-#include "skin_split.h"
 #include "structure_frame.h"
 
 namespace airshape::structure {
@@ -79,7 +79,7 @@ std::optional<Corner> meet(const TankWall& a, const TankWall& b, double toleranc
 
 /// The loop around the tank and, for each of its sides, the wall it lies in.
 struct Loop {
-  RuledLoop lines;
+  geometry::RuledLoop lines;
   std::vector<std::size_t> sideWalls;
 };
 
@@ -167,8 +167,8 @@ std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::
   auto loop = loopAround(all, 1e-9 * reach);
   if (!loop) return std::nullopt;
   const TopoDS_Shape upperSkin = frame.skin(true), lowerSkin = frame.skin(false);
-  const auto upper = skinPiecesWhere(upperSkin, loop->lines, inside, tolerance);
-  const auto lower = skinPiecesWhere(lowerSkin, loop->lines, inside, tolerance);
+  const auto upper = geometry::skinPiecesWhere(upperSkin, loop->lines, inside, tolerance);
+  const auto lower = geometry::skinPiecesWhere(lowerSkin, loop->lines, inside, tolerance);
   if (!upper || !lower || upper->empty() || lower->empty()) return std::nullopt;
 
   std::vector<TopoDS_Face> faces;
@@ -179,8 +179,8 @@ std::optional<NamedShape> tankFromSkins(const StructureFrame& frame, const std::
   const std::size_t n = loop->lines.points.size();
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t next = (k + 1) % n;
-    const RuledLines side{loop->lines.points[k], loop->lines.points[next], loop->lines.directions[k],
-                          loop->lines.directions[next]};
+    const geometry::RuledLines side{loop->lines.points[k], loop->lines.points[next], loop->lines.directions[k],
+                                    loop->lines.directions[next]};
     const auto face = ruledSectionBetweenSkins(upperSkin, lowerSkin, side, tolerance);
     if (!face) return std::nullopt;
     faces.push_back(*face);

@@ -3,47 +3,48 @@
 // skin folds back over itself and the crossing is left to the Boolean operation.
 #include <gtest/gtest.h>
 
-#include "bspline_patch.h"
-#include "ruled_crossing.h"
+#include "airshape/geometry/bspline_patch.h"
+#include "airshape/geometry/ruled_crossing.h"
 #include "test_wing_skins.h"
 
 namespace airshape::structure {
 namespace {
 
 /// The small wing's upper skin and a copy of it lifted by `lift` along z, as one skin.
-std::vector<Patch> skinWithCopyAbove(double lift) {
-  return skinPatches(test::upperSkinWithCopy(gp_Vec(0, 0, lift)))->patches;
+std::vector<geometry::Patch> skinWithCopyAbove(double lift) {
+  return geometry::skinPatches(test::upperSkinWithCopy(gp_Vec(0, 0, lift)))->patches;
 }
 
 // Lines up along z from the chord plane at x = 0.5, from y = 0.2 to 0.8.
-const RuledLines kUpFromChord{gp_Pnt(0.5, 0.2, 0.0), gp_Pnt(0.5, 0.8, 0.0), gp_Vec(0, 0, 1), gp_Vec(0, 0, 1)};
+const geometry::RuledLines kUpFromChord{gp_Pnt(0.5, 0.2, 0.0), gp_Pnt(0.5, 0.8, 0.0), gp_Vec(0, 0, 1), gp_Vec(0, 0, 1)};
 
 TEST(RuledCrossing, TakesTheNearSkinWhereTheLinesMeetAnotherFarOff) {
-  const auto pieces = ruledCrossing(skinWithCopyAbove(3.0), kUpFromChord, 1e-9);
+  const auto pieces = geometry::ruledCrossing(skinWithCopyAbove(3.0), kUpFromChord, 1e-9);
   ASSERT_TRUE(pieces.has_value());
   ASSERT_EQ(pieces->size(), 1u);
   EXPECT_EQ(pieces->front().patch, 0u);  // the skin as it is, not the lifted copy
-  for (const PatchPoint& point : pieces->front().points) EXPECT_LT(point.point.Z(), 0.1);
+  for (const geometry::PatchPoint& point : pieces->front().points) EXPECT_LT(point.point.Z(), 0.1);
   EXPECT_NEAR(pieces->front().points.front().point.Y(), 0.2, 1e-9);
   EXPECT_NEAR(pieces->front().points.back().point.Y(), 0.8, 1e-9);
 }
 
 TEST(RuledCrossing, RefusesASkinThatFoldsBackCloseBy) {
-  EXPECT_THROW(ruledCrossing(skinWithCopyAbove(0.2), kUpFromChord, 1e-9), FoldedSkin);
+  EXPECT_THROW(geometry::ruledCrossing(skinWithCopyAbove(0.2), kUpFromChord, 1e-9), geometry::FoldedSkin);
 }
 
 TEST(RuledCrossing, FollowsTheSkinToWhereALineTouchesItsLeadingEdge) {
   // Lines up along z from x = 0.3 to x = 0 at mid span: the last touches the skin at its leading
   // edge, where the skin stands upright, so the crossing goes there like a square root of t.
-  const RuledLines toTheNose{gp_Pnt(0.3, 0.5, -1.0), gp_Pnt(0.0, 0.5, -1.0), gp_Vec(0, 0, 1), gp_Vec(0, 0, 1)};
-  const std::vector<Patch> patches = skinPatches(test::upperSkin())->patches;
-  const auto pieces = ruledCrossing(patches, toTheNose, 1e-9);
+  const geometry::RuledLines toTheNose{gp_Pnt(0.3, 0.5, -1.0), gp_Pnt(0.0, 0.5, -1.0), gp_Vec(0, 0, 1),
+                                       gp_Vec(0, 0, 1)};
+  const std::vector<geometry::Patch> patches = geometry::skinPatches(test::upperSkin())->patches;
+  const auto pieces = geometry::ruledCrossing(patches, toTheNose, 1e-9);
   ASSERT_TRUE(pieces.has_value());
   ASSERT_EQ(pieces->size(), 1u);
-  const CrossingPiece& piece = pieces->front();
+  const geometry::CrossingPiece& piece = pieces->front();
   EXPECT_NEAR(piece.points.back().point.Distance(gp_Pnt(0.0, 0.5, 0.0)), 0.0, 1e-9);
   // The curve follows the crossing between its points, close to the nose too.
-  const Patch& patch = patches.front();
+  const geometry::Patch& patch = patches.front();
   for (double t : {0.5, 0.9, 0.99, 0.999, 0.99999}) {
     const gp_Pnt2d uv = piece.curve->Value(t);
     const gp_Pnt onCurve = patch.surface->Value(uv.X(), uv.Y());

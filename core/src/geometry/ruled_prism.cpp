@@ -1,9 +1,9 @@
-#include "ruled_prism.h"
+#include "airshape/geometry/ruled_prism.h"
 
 #include <array>
 #include <cmath>
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 namespace {
 
@@ -93,4 +93,4 @@ std::optional<bool> RuledPrism::contains(const gp_Pnt& point) const {
   return total % 2 == 1;
 }
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

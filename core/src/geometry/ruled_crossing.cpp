@@ -1,4 +1,4 @@
-#include "ruled_crossing.h"
+#include "airshape/geometry/ruled_crossing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 /// Moves a point lying within the tolerance of a patch's bound onto it, so that a curve ending
 /// there ends on the face's edge.
@@ -304,4 +304,4 @@ std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>
   return pieces;
 }
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

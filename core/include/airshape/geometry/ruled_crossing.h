@@ -8,9 +8,9 @@
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
-#include "bspline_patch.h"
+#include "airshape/geometry/bspline_patch.h"
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 /// The lines of a ruled surface: the line at t in [0, 1] runs through from + t (to − from)
 /// along fromDirection + t (toDirection − fromDirection), so that its points at s are
@@ -57,4 +57,4 @@ Handle(Geom2d_BSplineCurve)
 /// curve ending there ends on the face's edge.
 PatchPoint ontoBound(const Patch& patch, PatchPoint point, double tolerance);
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

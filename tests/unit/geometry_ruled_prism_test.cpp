@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "ruled_prism.h"
+#include "airshape/geometry/ruled_prism.h"
 
-namespace airshape::structure {
+namespace airshape::geometry {
 namespace {
 
 /// Whether (x, y) lies inside the closed polygon, by the parity of edges crossed to the right.
@@ -109,4 +109,4 @@ TEST(RuledPrism, APointOnASideIsLeftToTheGeneralClassification) {
 }
 
 }  // namespace
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

@@ -6,7 +6,7 @@
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 /// The solid that lines through the corners of a closed polygon sweep, each line along its own
 /// direction and as far as `reach` either way of its corner: a cell's prism. Each side is the
@@ -35,4 +35,4 @@ class RuledPrism {
   gp_Vec ray_, across1_, across2_;  // the ray's direction and two directions square to it and each other
 };
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

@@ -1,4 +1,4 @@
-#include "bspline_patch.h"
+#include "airshape/geometry/bspline_patch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <TopoDS.hxx>
 #include <gp_Mat.hxx>
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 std::optional<Patch> patchOf(const TopoDS_Face& face) {
   Patch patch;
@@ -75,4 +75,4 @@ std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin) {
   return result;
 }
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

@@ -9,7 +9,7 @@
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 /// A closed loop of ruled sides across a skin (global frame): side k joins the line through
 /// `points[k]` along `directions[k]` to the line through the next point along the next
@@ -39,4 +39,4 @@ std::optional<std::vector<TopoDS_Face>> skinPiecesWhere(const TopoDS_Shape& skin
                                                         const std::function<bool(const gp_Pnt&)>& keep,
                                                         double tolerance);
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

@@ -9,7 +9,7 @@
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 /// A skin face as the direct constructions from the skins use it: an untrimmed B-spline patch,
 /// the face being its whole surface.
@@ -42,4 +42,4 @@ std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin);
 /// and v). False where the line meets the patch tangentially or not within its bounds.
 bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point);
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry

@@ -1,4 +1,4 @@
-#include "skin_split.h"
+#include "airshape/geometry/skin_split.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,10 +24,10 @@
 #include <gp_Pnt2d.hxx>
 
 #include "airshape/geometry/brep_building.h"
-#include "bspline_patch.h"
-#include "ruled_crossing.h"
+#include "airshape/geometry/bspline_patch.h"
+#include "airshape/geometry/ruled_crossing.h"
 
-namespace airshape::structure {
+namespace airshape::geometry {
 
 namespace {
 
@@ -249,4 +249,4 @@ std::optional<std::vector<TopoDS_Face>> skinPiecesWhere(const TopoDS_Shape& skin
   }
 }
 
-}  // namespace airshape::structure
+}  // namespace airshape::geometry
