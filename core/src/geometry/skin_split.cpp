@@ -170,7 +170,7 @@ std::optional<std::vector<TopoDS_Face>> splitFaces(const std::vector<TopoDS_Face
     if (!edge.IsDone()) return std::nullopt;
     TopoDS_Edge made = edge.Edge();
     BRep_Builder().UpdateEdge(made, crossing.curve, face, 10.0 * tolerance);
-    if (!BRepLib::BuildCurve3d(made)) return std::nullopt;
+    if (!BRepLib::BuildCurve3d(made, tolerance)) return std::nullopt;
     inside[crossing.patch].push_back(made);
   }
   std::vector<TopoDS_Face> result;

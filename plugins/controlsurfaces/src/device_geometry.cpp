@@ -6,9 +6,11 @@
 
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepLib.hxx>
+#include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <gp_Lin.hxx>
 
 #include "airshape/configuration.h"
@@ -16,6 +18,7 @@
 #include "airshape/geometry/ruled_sections.h"
 #include "airshape/model/placement.h"
 #include "airshape/model/primary_model.h"
+#include "device_from_skins.h"
 #include "hinge_motion.h"
 #include "line_crossings.h"
 
@@ -200,12 +203,21 @@ NamedShape DeviceGeometry::cutter() const {
                                                     [&] { return std::make_shared<const NamedShape>(ruledCutter()); });
 }
 
+DeviceGeometry::Outlines DeviceGeometry::outlines() const {
+  return *configuration_.cache().obtain<Outlines>("device-outlines:" + device_.uid, [&] {
+    const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
+    const double size = innerPlane.chord + outerPlane.chord + innerPlane.origin.Distance(outerPlane.origin);
+    return std::make_shared<const Outlines>(Outlines{borderWireOf(device_.innerBorder, innerPlane),
+                                                     borderWireOf(device_.outerBorder, outerPlane),
+                                                     intermediateWires(innerPlane, outerPlane), size});
+  });
+}
+
 NamedShape DeviceGeometry::ruledCutter() const {
-  const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
-  const std::vector<TopoDS_Wire> between = intermediateWires(innerPlane, outerPlane);
-  std::vector<TopoDS_Wire> wires{borderWireOf(device_.outerBorder, outerPlane)};
-  wires.insert(wires.end(), between.rbegin(), between.rend());
-  wires.push_back(borderWireOf(device_.innerBorder, innerPlane));
+  const Outlines outline = outlines();
+  std::vector<TopoDS_Wire> wires{outline.outer};
+  wires.insert(wires.end(), outline.between.rbegin(), outline.between.rend());
+  wires.push_back(outline.inner);
   const geometry::RuledSections loft = geometry::ruledThroughSections(wires);
   if (loft.solid.IsNull())
     throw Error(ErrorCode::InvalidModel, "no solid joins the device's inner and outer border", {},
@@ -220,7 +232,43 @@ NamedShape DeviceGeometry::ruledCutter() const {
   return cutter;
 }
 
+std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
+  const BorderDefinition::Nose nose = device_.innerBorder.nose;
+  if (device_.outerBorder.nose != nose) return std::nullopt;
+  StraightOutline outline = StraightOutline::Panel;
+  if (nose == BorderDefinition::Nose::Straight) {
+    // A cut at the wing's own leading edge only touches the skins there.
+    if (device_.innerBorder.xsiLE <= 0.0 || device_.outerBorder.xsiLE <= 0.0) return std::nullopt;
+    outline = StraightOutline::CutAft;
+  } else if (nose == BorderDefinition::Nose::StraightBack) {
+    outline = StraightOutline::CutAhead;
+  } else if (nose != BorderDefinition::Nose::Panel) {
+    return std::nullopt;
+  }
+  const std::string& cs = device_.componentSegmentUid;
+  WingSkins skins{wing_.componentSegmentSkin(configuration_, cs, Surface::Upper),
+                  wing_.componentSegmentSkin(configuration_, cs, Surface::Lower),
+                  {}};
+  if (skins.upper.IsSame(skins.lower)) return std::nullopt;  // one face for both: not split along lines
+  if (outline == StraightOutline::CutAft) {
+    TopoDS_Compound trailingEdge;
+    BRep_Builder builder;
+    builder.MakeCompound(trailingEdge);
+    bool any = false;
+    for (const auto& [name, face] : configuration_.shapes().namedShapeOf(configuration_, device_.wingUid).faces)
+      if (name.size() > 13 && name.compare(name.size() - 13, 13, "/trailingEdge") == 0) {
+        builder.Add(trailingEdge, face);
+        any = true;
+      }
+    if (any) skins.trailingEdge = trailingEdge;
+  }
+  const Outlines borders = outlines();
+  return deviceFromSkins(skins, outline, borders.inner, borders.outer, {device_.uid + "/", cutterFaceName(device_)},
+                         1e-8 * borders.size);
+}
+
 NamedShape DeviceGeometry::atRest() const {
+  if (std::optional<NamedShape> direct = fromWingSkins()) return std::move(*direct);
   const NamedShape cut = cutter();
   if (device_.innerBorder.nose == BorderDefinition::Nose::Airfoil) return cut;
   const NamedShape& wing = configuration_.shapes().namedShapeOf(configuration_, device_.wingUid);

@@ -4,6 +4,7 @@
 #include <gp_Pnt.hxx>
 #include <gp_Trsf.hxx>
 
+#include <optional>
 #include <vector>
 
 #include "airshape/named_shape.h"
@@ -57,8 +58,20 @@ class DeviceGeometry {
   const Device& device() const { return device_; }
 
  private:
+  /// The outlines the cutter is ruled through: its borders' and, between them, its
+  /// intermediate airfoils' (from the inner border outwards), found once per configuration;
+  /// `size` is a length the size of the device (its borders' chords and their distance).
+  struct Outlines {
+    TopoDS_Wire inner, outer;
+    std::vector<TopoDS_Wire> between;
+    double size = 0.0;
+  };
+  Outlines outlines() const;
   /// The cutter, built.
   NamedShape ruledCutter() const;
+  /// The device at rest made from the wing's skins without a Boolean operation
+  /// (device_from_skins.h), where its borders are straight outlines; nothing elsewhere.
+  std::optional<NamedShape> fromWingSkins() const;
   /// A border point on the component segment's chord surface.
   gp_Pnt chordPoint(const RelativeCoordinate& eta, double xsi, const std::string& xpath) const;
   /// The component-segment eta of an eta given relative to a reference (at `xpath`).
