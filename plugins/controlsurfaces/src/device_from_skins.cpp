@@ -2,11 +2,15 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
+#include <memory>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -34,21 +38,41 @@ namespace airshape::controlsurfaces {
 
 namespace {
 
-using Corners = std::array<gp_Pnt, 4>;
+/// The corners of a border's outline in the order its wire runs.
+using Corners = std::vector<gp_Pnt>;
 
-/// The corners of a border's outline in the order its wire runs; nothing unless it is four
-/// straight edges.
+/// The corners of a border's outline; nothing unless it is four straight edges (a straight cut
+/// or a panel) or six of which only the first is curved (a rounded nose or a hollow back).
 std::optional<Corners> cornersOf(const TopoDS_Wire& wire) {
   Corners corners;
-  std::size_t count = 0;
-  for (BRepTools_WireExplorer edge(wire); edge.More(); edge.Next(), ++count) {
+  std::size_t curved = 0;
+  for (BRepTools_WireExplorer edge(wire); edge.More(); edge.Next()) {
     double first = 0.0, last = 0.0;
     const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge.Current(), first, last);
-    if (count == 4 || curve.IsNull() || curve->DynamicType() != STANDARD_TYPE(Geom_Line)) return std::nullopt;
-    corners[count] = BRep_Tool::Pnt(edge.CurrentVertex());
+    if (curve.IsNull()) return std::nullopt;
+    if (curve->DynamicType() != STANDARD_TYPE(Geom_Line)) {
+      if (!corners.empty()) return std::nullopt;
+      ++curved;
+    }
+    corners.push_back(BRep_Tool::Pnt(edge.CurrentVertex()));
   }
-  if (count != 4) return std::nullopt;
+  if (!((corners.size() == 4 && curved == 0) || (corners.size() == 6 && curved == 1))) return std::nullopt;
   return corners;
+}
+
+/// Which sides of the ruled solid (by the outline's edge each starts from) cross what: for a
+/// straight outline the cut (or a panel's front) crosses both skins, for a shaped one the
+/// straight edges leaving the skins from the shaped edge's ends; the far side is the solid's
+/// end beyond the wing. A blunt trailing edge is crossed by lines along the chord through a
+/// corner above and one below the wing.
+struct Layout {
+  std::size_t upperSide, lowerSide, farSide;
+  std::size_t above, below, chordEnd;
+};
+
+Layout layoutOf(const Corners& corners) {
+  if (corners.size() == 4) return {0, 0, 2, 1, 0, 3};
+  return {1, 5, 3, 2, 5, 4};
 }
 
 /// One side of the ruled solid between the borders: the bilinear surface whose lines run from
@@ -61,7 +85,7 @@ struct Side {
 };
 
 Side sideOf(const Corners& inner, const Corners& outer, std::size_t k) {
-  const std::size_t next = (k + 1) % 4;
+  const std::size_t next = (k + 1) % inner.size();
   Side side{{inner[k], outer[k], gp_Vec(inner[k], inner[next]), gp_Vec(outer[k], outer[next])}, nullptr};
   side.surface = geometry::ruledSurface(geometry::straightLine(inner[k], outer[k]),
                                         geometry::straightLine(inner[next], outer[next]));
@@ -148,78 +172,167 @@ struct SideBound {
 };
 
 /// The part of a side between two bounds along its lines, from t = 0 to 1, as a face of its
-/// bilinear surface; null where a bound cannot be drawn.
-TopoDS_Face sidePart(const Side& side, const SideBound& low, const SideBound& high, double tolerance) {
+/// bilinear surface. Where the bounds meet at an end (within the tolerance) the face narrows to
+/// a corner there: a sliver between a shaped edge's ruled end, inside the wing, and the skin.
+/// A null face where the bounds lie together all along; nothing where a bound cannot be drawn
+/// or the bounds cross.
+std::optional<TopoDS_Face> sidePart(const Side& side, const SideBound& low, const SideBound& high, double tolerance) {
   auto boundCurve = [&](const SideBound& bound) -> Handle(Geom2d_Curve) {
     if (bound.kind == SideBound::Kind::Skin) return crossingOnSide(*bound.skin, side, tolerance);
     const double s = bound.kind == SideBound::Kind::Start ? 0.0 : 1.0;
     return Handle(Geom2d_Curve)(GCE2d_MakeSegment(gp_Pnt2d(0.0, s), gp_Pnt2d(1.0, s)).Value());
   };
   const Handle(Geom2d_Curve) bottom = boundCurve(low), top = boundCurve(high);
-  if (bottom.IsNull() || top.IsNull()) return {};
-  // Corners counterclockwise in (t, s): the part lies on the left of its boundary.
-  const gp_Pnt2d corners2d[4] = {bottom->Value(bottom->FirstParameter()), bottom->Value(bottom->LastParameter()),
-                                 top->Value(top->LastParameter()), top->Value(top->FirstParameter())};
-  for (int end = 0; end < 2; ++end)
-    if (corners2d[3 - end].Y() - corners2d[end].Y() <= 1e-9) return {};  // the bounds touch or cross
+  if (bottom.IsNull() || top.IsNull()) return std::nullopt;
+  const auto at = [](const Handle(Geom2d_Curve) & curve, double t) {
+    return curve->Value(curve->FirstParameter() + t * (curve->LastParameter() - curve->FirstParameter()));
+  };
+  // How far apart the bounds lie along the lines, sampled (a length).
+  const auto gap = [&](double t) { return (at(top, t).Y() - at(bottom, t).Y()) * side.lines.direction(t).Magnitude(); };
+  double widest = 0.0;
+  for (int k = 0; k <= 64; ++k) {
+    const double width = gap(k / 64.0);
+    if (width < -tolerance) return std::nullopt;
+    widest = std::max(widest, width);
+  }
+  if (widest <= tolerance) return TopoDS_Face();
+  // Corners counterclockwise in (t, s): the part lies on the left of its boundary. An end where
+  // the bounds meet has one vertex.
+  const gp_Pnt2d corners2d[4] = {at(bottom, 0.0), at(bottom, 1.0), at(top, 1.0), at(top, 0.0)};
+  const bool open[2] = {gap(0.0) > tolerance, gap(1.0) > tolerance};
   TopoDS_Vertex vertices[4];
-  for (int k = 0; k < 4; ++k)
-    vertices[k] = geometry::vertexWithin(side.surface->Value(corners2d[k].X(), corners2d[k].Y()), tolerance);
-  auto edgeOn = [&](const Handle(Geom2d_Curve) & curve, int from, int to, double first, double last) {
-    BRepBuilderAPI_MakeEdge edge(curve, side.surface, vertices[from], vertices[to], first, last);
+  for (int k = 0; k < 4; ++k) {
+    const bool meets = (k == 2 && !open[1]) || (k == 3 && !open[0]);
+    vertices[k] =
+        meets ? vertices[3 - k]
+              : geometry::vertexWithin(side.surface->Value(corners2d[k].X(), corners2d[k].Y()), 2.0 * tolerance);
+  }
+  auto edgeOn = [&](const Handle(Geom2d_Curve) & curve, int from, int to) {
+    BRepBuilderAPI_MakeEdge edge(curve, side.surface, vertices[from], vertices[to], curve->FirstParameter(),
+                                 curve->LastParameter());
     return edge.IsDone() ? edge.Edge() : TopoDS_Edge();
   };
-  const TopoDS_Edge edges[4] = {
-      edgeOn(bottom, 0, 1, bottom->FirstParameter(), bottom->LastParameter()),
-      edgeOn(GCE2d_MakeSegment(corners2d[1], corners2d[2]).Value(), 1, 2, 0.0, corners2d[1].Distance(corners2d[2])),
-      edgeOn(top, 3, 2, top->FirstParameter(), top->LastParameter()),
-      edgeOn(GCE2d_MakeSegment(corners2d[3], corners2d[0]).Value(), 3, 0, 0.0, corners2d[3].Distance(corners2d[0]))};
+  auto across = [&](int from, int to) {
+    return edgeOn(GCE2d_MakeSegment(corners2d[from], corners2d[to]).Value(), from, to);
+  };
   BRepBuilderAPI_MakeWire wire;
-  for (int k = 0; k < 4; ++k) {
-    if (edges[k].IsNull()) return {};
-    wire.Add(k == 2 ? TopoDS::Edge(edges[k].Reversed()) : edges[k]);
-  }
-  if (!wire.IsDone()) return {};
+  const TopoDS_Edge bottomEdge = edgeOn(bottom, 0, 1), topEdge = edgeOn(top, 3, 2);
+  if (bottomEdge.IsNull() || topEdge.IsNull()) return std::nullopt;
+  wire.Add(bottomEdge);
+  if (open[1]) wire.Add(across(1, 2));
+  wire.Add(TopoDS::Edge(topEdge.Reversed()));
+  if (open[0]) wire.Add(across(3, 0));
+  if (!wire.IsDone()) return std::nullopt;
   BRepBuilderAPI_MakeFace face(side.surface, wire.Wire(), true);
-  if (!face.IsDone()) return {};
+  if (!face.IsDone()) return std::nullopt;
   TopoDS_Face made = face.Face();
   BRepLib::BuildCurves3d(made, tolerance);
   return made;
 }
 
-/// The loop of the solid's sides around the device as seen across a skin: the lines through
-/// corners 0 and 3 of each outline towards corners 1 and 2, which cross the upper and the
-/// lower skin (a cut from below the wing to above it, far ends beyond the wing, a panel's front
-/// and back), joined by the border planes and the solid's sides between them.
-geometry::RuledLoop acrossSkins(const Corners& inner, const Corners& outer) {
-  return {
-      {inner[0], outer[0], outer[3], inner[3]},
-      {gp_Vec(inner[0], inner[1]), gp_Vec(outer[0], outer[1]), gp_Vec(outer[3], outer[2]), gp_Vec(inner[3], inner[2])},
-      false};
+/// The loop of the solid's sides around the device as seen across a skin: the lines of the
+/// side that crosses the skin (at each border, towards the side's next corner) and of the far
+/// side, joined by the border planes and by the solid's side beyond the wing. Where the far side
+/// lies off the wing (`farOffWing`), its lines are taken through its corners along the near
+/// side's: the lines swept between them in the border planes then leave the skin across its
+/// edge instead of grazing a rounded leading edge, as lines turning towards the far side's
+/// direction would.
+geometry::RuledLoop acrossSkin(const Corners& inner, const Corners& outer, std::size_t crossing, std::size_t far,
+                               bool farOffWing) {
+  const Side near = sideOf(inner, outer, crossing), beyond = sideOf(inner, outer, far);
+  gp_Vec farInner = beyond.lines.fromDirection, farOuter = beyond.lines.toDirection;
+  if (farOffWing) {
+    farInner = near.lines.fromDirection;
+    farOuter = near.lines.toDirection;
+  } else if (near.lines.fromDirection.Dot(farInner) < 0.0) {
+    // Turned the way the near lines run (the same lines), so that the prism's lines have a
+    // mean direction.
+    farInner.Reverse();
+    farOuter.Reverse();
+  }
+  return {{inner[crossing], outer[crossing], outer[far], inner[far]},
+          {near.lines.fromDirection, near.lines.toDirection, farOuter, farInner},
+          false};
 }
 
 /// The loop around a trailing-edge device's part of the blunt trailing edge: lines along each
-/// border's chord above and below the wing (corners 1 and 0 of the cut: above, below), which
-/// sweep the border planes across the trailing edge.
-geometry::RuledLoop acrossTrailingEdge(const Corners& inner, const Corners& outer) {
-  const gp_Vec innerChord(inner[0], inner[3]), outerChord(outer[0], outer[3]);
-  return {{inner[1], outer[1], outer[0], inner[0]}, {innerChord, outerChord, outerChord, innerChord}, false};
+/// border's chord through a corner above and one below the wing, which sweep the border planes
+/// across the trailing edge.
+geometry::RuledLoop acrossTrailingEdge(const Corners& inner, const Corners& outer, const Layout& layout) {
+  const gp_Vec innerChord(inner[layout.below], inner[layout.chordEnd]),
+      outerChord(outer[layout.below], outer[layout.chordEnd]);
+  return {{inner[layout.above], outer[layout.above], outer[layout.below], inner[layout.below]},
+          {innerChord, outerChord, outerChord, innerChord},
+          false};
 }
 
-/// The pieces of a skin inside a loop's prism; nothing where the split does not apply or a
-/// piece cannot be placed.
+/// Where a point lies of a region: inside or not, or nothing where that cannot be told.
+using InsideTest = std::function<std::optional<bool>(const gp_Pnt&)>;
+
+/// The pieces of a skin split along a loop that lie inside a region; nothing where the split
+/// does not apply or a piece cannot be placed.
 std::optional<std::vector<TopoDS_Face>> piecesInside(const TopoDS_Shape& skin, const geometry::RuledLoop& loop,
-                                                     double tolerance) {
-  const geometry::RuledPrism prism(loop.points, loop.directions, 10.0);
+                                                     const InsideTest& inside, double tolerance) {
   bool undecided = false;
   const auto keep = [&](const gp_Pnt& point) {
-    const std::optional<bool> inside = prism.contains(point);
-    undecided = undecided || !inside;
-    return inside.value_or(false);
+    const std::optional<bool> answer = inside(point);
+    undecided = undecided || !answer;
+    return answer.value_or(false);
   };
   auto pieces = geometry::skinPiecesWhere(skin, loop, keep, tolerance);
   if (undecided) return std::nullopt;
   return pieces;
+}
+
+/// Inside the prism that a loop's lines sweep (closed form).
+InsideTest insidePrism(const geometry::RuledLoop& loop) {
+  return [prism = geometry::RuledPrism(loop.points, loop.directions, 10.0)](const gp_Pnt& point) {
+    return prism.contains(point);
+  };
+}
+
+/// Inside a solid (OCCT's classification).
+InsideTest insideSolid(const TopoDS_Shape& solid, double tolerance) {
+  auto classifier = std::make_shared<BRepClass3d_SolidClassifier>(solid);
+  return [classifier, tolerance](const gp_Pnt& point) -> std::optional<bool> {
+    classifier->Perform(point, tolerance);
+    if (classifier->State() == TopAbs_ON || classifier->State() == TopAbs_UNKNOWN) return std::nullopt;
+    return classifier->State() == TopAbs_IN;
+  };
+}
+
+/// A fan of rays in each border plane, from a point inside the wing on the lines of the side
+/// that crosses a skin: first along that side's lines (towards the skin, `towards` +1 or -1 of
+/// the side's direction), turning round the wing's leading edge until they point at a far
+/// corner beyond the other skin. Rays from inside the wing meet its convex nose once each, where
+/// lines swept across it would graze it. `centre` places the rays' start on the side's lines
+/// (its s, the same at both borders so that the rays lie on the side's surface).
+struct Fan {
+  std::size_t side;
+  double centre, towards;
+  std::size_t farCorner;
+};
+
+geometry::RuledLoop fanAcrossSkin(const Corners& inner, const Corners& outer, const Fan& fan) {
+  const Side near = sideOf(inner, outer, fan.side);
+  const gp_Pnt innerStart = near.lines.from.Translated(fan.centre * near.lines.fromDirection);
+  const gp_Pnt outerStart = near.lines.to.Translated(fan.centre * near.lines.toDirection);
+  return {{innerStart, outerStart, outerStart, innerStart},
+          {fan.towards * near.lines.fromDirection, fan.towards * near.lines.toDirection,
+           gp_Vec(outerStart, outer[fan.farCorner]), gp_Vec(innerStart, inner[fan.farCorner])},
+          true};
+}
+
+/// The fans of a device ahead of its outlines across the upper and the lower skin: from the
+/// middle of a straight cut, or from inside the wing on the straight sides leaving the shaped
+/// edge's ends, half as deep as the wing is thick there.
+std::pair<Fan, Fan> fansAhead(const Corners& inner, const Corners& outer) {
+  if (inner.size() == 4) return {{0, 0.5, 1.0, 3}, {0, 0.5, -1.0, 2}};
+  const auto share = [&](std::size_t from, std::size_t to) {
+    return 0.5 * std::min(inner[0].Distance(inner[1]) / inner[from].Distance(inner[to]),
+                          outer[0].Distance(outer[1]) / outer[from].Distance(outer[to]));
+  };
+  return {{1, -share(1, 2), 1.0, 4}, {5, 1.0 + share(5, 0), -1.0, 3}};
 }
 
 /// The plane faces that close the sewn faces' open loops (one in each border plane), named by
@@ -244,33 +357,100 @@ std::optional<std::vector<std::pair<std::string, TopoDS_Face>>> bordersClosing(c
   return caps;
 }
 
-std::optional<NamedShape> fromSkins(const WingSkins& skins, StraightOutline outline, const Corners& inner,
-                                    const Corners& outer, const DeviceFaceNames& names, double tolerance) {
+/// The point at a share of the way along a wire's first edge, in the wire's direction.
+gp_Pnt alongFirstEdge(const TopoDS_Wire& wire, double share) {
+  const BRepTools_WireExplorer first(wire);
+  const BRepAdaptor_Curve curve(first.Current());
+  const double from = curve.FirstParameter(), to = curve.LastParameter();
+  return curve.Value(first.Current().Orientation() == TopAbs_REVERSED ? to - share * (to - from)
+                                                                      : from + share * (to - from));
+}
+
+/// Whether the shaped side (ruled between the outlines' first edges) lies between the skins:
+/// along lines up the border planes through its rulings, the upper skin lies above it and the
+/// lower skin below, within the tolerance. Between the borders a ruled side may leave the wing
+/// where the skins' shape differs from the outlines' (shaped edges reaching the skins far apart
+/// at the two borders); the device is then cut by a Boolean operation.
+bool shapedSideInside(const WingSkins& skins, const TopoDS_Wire& innerWire, const TopoDS_Wire& outerWire,
+                      const Corners& inner, const Corners& outer, double tolerance) {
+  const auto upperPatches = geometry::skinPatches(skins.upper), lowerPatches = geometry::skinPatches(skins.lower);
+  if (!upperPatches || !lowerPatches) return false;
+  const gp_Vec innerUp(inner[4], inner[3]), outerUp(outer[4], outer[3]);  // from below the wing to above it
+  for (int k = 1; k < 8; ++k) {
+    const geometry::RuledLines lines{alongFirstEdge(innerWire, k / 8.0), alongFirstEdge(outerWire, k / 8.0), innerUp,
+                                     outerUp};
+    for (const bool upper : {true, false}) {
+      std::optional<std::vector<geometry::CrossingPiece>> pieces;
+      try {
+        pieces = geometry::ruledCrossing((upper ? upperPatches : lowerPatches)->patches, lines, tolerance);
+      } catch (const geometry::FoldedSkin&) {
+        return false;
+      }
+      if (!pieces || !geometry::coversAllLines(*pieces)) return false;
+      for (const geometry::CrossingPiece& piece : *pieces)
+        for (const geometry::PatchPoint& point : piece.points) {
+          const double height = gp_Vec(lines.base(point.t), point.point).Dot(lines.direction(point.t).Normalized());
+          if (upper ? height < -tolerance : height > tolerance) return false;
+        }
+    }
+  }
+  return true;
+}
+
+std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, const TopoDS_Wire& innerWire,
+                                    const TopoDS_Wire& outerWire, const Corners& inner, const Corners& outer,
+                                    const TopoDS_Shape& cutter, const TopoDS_Face& shapedSide,
+                                    const DeviceFaceNames& names, double tolerance) {
+  const Layout layout = layoutOf(inner);
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
-  auto addPieces = [&](const TopoDS_Shape& skin, const geometry::RuledLoop& loop, const std::string& part) {
-    const auto pieces = piecesInside(skin, loop, tolerance);
+  auto addPieces = [&](const TopoDS_Shape& skin, const geometry::RuledLoop& loop, const InsideTest& inside,
+                       const std::string& part) {
+    const auto pieces = piecesInside(skin, loop, inside, tolerance);
     if (!pieces || pieces->empty()) return false;
     for (const TopoDS_Face& piece : *pieces) faces.emplace_back(names.prefix + part, piece);
     return true;
   };
-  auto addSide = [&](std::size_t k, const SideBound& low, const SideBound& high) {
-    const TopoDS_Face part = sidePart(sideOf(inner, outer, k), low, high, tolerance);
-    if (!part.IsNull()) faces.emplace_back(names.prefix + names.cutterFaces, part);
-    return !part.IsNull();
+  // Each skin split along the sides that cross it: for a device ahead of its outlines by fans
+  // round the leading edge, its pieces kept by the cutter; else by the prism of the loop.
+  auto addSkin = [&](const TopoDS_Shape& skin, bool upper, const std::string& part) {
+    if (kind == OutlineKind::Ahead) {
+      const auto [upperFan, lowerFan] = fansAhead(inner, outer);
+      return !cutter.IsNull() && addPieces(skin, fanAcrossSkin(inner, outer, upper ? upperFan : lowerFan),
+                                           insideSolid(cutter, tolerance), part);
+    }
+    const geometry::RuledLoop loop = acrossSkin(inner, outer, upper ? layout.upperSide : layout.lowerSide,
+                                                layout.farSide, kind != OutlineKind::Panel);
+    return addPieces(skin, loop, insidePrism(loop), part);
   };
-  using Kind = SideBound::Kind;
-  const geometry::RuledLoop around = acrossSkins(inner, outer);
-  if (!addPieces(skins.upper, around, "upper")) return std::nullopt;
-  if (outline == StraightOutline::Panel) {
+  auto addSide = [&](std::size_t k, const SideBound& low, const SideBound& high) {
+    const std::optional<TopoDS_Face> part = sidePart(sideOf(inner, outer, k), low, high, tolerance);
+    if (part && !part->IsNull()) faces.emplace_back(names.prefix + names.cutterFaces, *part);
+    return part.has_value();
+  };
+  using Bound = SideBound::Kind;
+  if (!addSkin(skins.upper, true, "upper")) return std::nullopt;
+  if (kind == OutlineKind::Panel) {
     // Front, back and underside of the panel: the underside lies inside the wing.
-    if (!addSide(0, {Kind::Start}, {Kind::Skin, &skins.upper}) ||
-        !addSide(2, {Kind::Skin, &skins.upper}, {Kind::End}) || !addSide(3, {Kind::Start}, {Kind::End}))
+    if (inner.size() != 4 || !addSide(0, {Bound::Start}, {Bound::Skin, &skins.upper}) ||
+        !addSide(2, {Bound::Skin, &skins.upper}, {Bound::End}) || !addSide(3, {Bound::Start}, {Bound::End}))
       return std::nullopt;
   } else {
-    if (!addPieces(skins.lower, around, "lower")) return std::nullopt;
-    if (!addSide(0, {Kind::Skin, &skins.lower}, {Kind::Skin, &skins.upper})) return std::nullopt;
-    if (outline == StraightOutline::CutAft && !skins.trailingEdge.IsNull() &&
-        !addPieces(skins.trailingEdge, acrossTrailingEdge(inner, outer), "trailing edge"))
+    if (!addSkin(skins.lower, false, "lower")) return std::nullopt;
+    if (inner.size() == 4) {
+      if (!addSide(0, {Bound::Skin, &skins.lower}, {Bound::Skin, &skins.upper})) return std::nullopt;
+    } else {
+      // The shaped side lies inside the wing, its ends on the skins at the borders; between
+      // them its ruled ends may pass a little inside the skins, which the straight sides from
+      // them close.
+      if (shapedSide.IsNull() || !shapedSideInside(skins, innerWire, outerWire, inner, outer, tolerance) ||
+          !addSide(1, {Bound::Start}, {Bound::Skin, &skins.upper}) ||
+          !addSide(5, {Bound::Skin, &skins.lower}, {Bound::End}))
+        return std::nullopt;
+      faces.emplace_back(names.prefix + names.cutterFaces, shapedSide);
+    }
+    const geometry::RuledLoop aft = acrossTrailingEdge(inner, outer, layout);
+    if (kind == OutlineKind::Aft && !skins.trailingEdge.IsNull() &&
+        !addPieces(skins.trailingEdge, aft, insidePrism(aft), "trailing edge"))
       return std::nullopt;
   }
 
@@ -293,12 +473,14 @@ std::optional<NamedShape> fromSkins(const WingSkins& skins, StraightOutline outl
 
 }  // namespace
 
-std::optional<NamedShape> deviceFromSkins(const WingSkins& skins, StraightOutline outline, const TopoDS_Wire& inner,
-                                          const TopoDS_Wire& outer, const DeviceFaceNames& names, double tolerance) {
+std::optional<NamedShape> deviceFromSkins(const WingSkins& skins, OutlineKind kind, const TopoDS_Wire& inner,
+                                          const TopoDS_Wire& outer, const TopoDS_Shape& cutter,
+                                          const TopoDS_Face& shapedSide, const DeviceFaceNames& names,
+                                          double tolerance) {
   const std::optional<Corners> innerCorners = cornersOf(inner), outerCorners = cornersOf(outer);
-  if (!innerCorners || !outerCorners) return std::nullopt;
+  if (!innerCorners || !outerCorners || innerCorners->size() != outerCorners->size()) return std::nullopt;
   try {
-    return fromSkins(skins, outline, *innerCorners, *outerCorners, names, tolerance);
+    return fromSkins(skins, kind, inner, outer, *innerCorners, *outerCorners, cutter, shapedSide, names, tolerance);
   } catch (const Standard_Failure&) {
     return std::nullopt;
   } catch (const Error&) {  // the faces do not close into a solid

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 
@@ -17,10 +18,10 @@ struct WingSkins {
   TopoDS_Shape upper, lower, trailingEdge;
 };
 
-/// How the straight outline of a border lies across the wing: a straight cut from below the
-/// wing to above it with the device aft of it (trailing-edge devices) or ahead of it
-/// (leading-edge devices), or a spoiler's panel: the upper skin above a line inside the wing.
-enum class StraightOutline { CutAft, CutAhead, Panel };
+/// Where a device lies of its borders' outlines, which run across the wing: aft of them
+/// (trailing-edge devices), ahead of them (leading-edge devices), or, for a spoiler's panel,
+/// above the line inside the wing between the panel's front and back.
+enum class OutlineKind { Aft, Ahead, Panel };
 
 /// What the device's faces are called: "<uID>/" and the face's part.
 struct DeviceFaceNames {
@@ -29,15 +30,20 @@ struct DeviceFaceNames {
 };
 
 /// The device at rest (the wing in common with the ruled solid between its inner and outer
-/// border) made from the wing's faces without a Boolean operation, where both borders are
-/// straight outlines of the same kind with four corners each (borderWire's straight cut or
-/// panel, their corners in the same order): the skins split along the solid's sides
-/// (geometry::skinPiecesWhere), the solid's sides inside the wing trimmed where their lines
-/// meet the skins, each border's side the plane face the other faces leave open there, all
-/// sewn into a solid. `tolerance` is how closely the cut curves follow the true crossings (a
-/// length). Nothing where this does not apply; the caller then cuts the device by a Boolean
-/// operation.
-std::optional<NamedShape> deviceFromSkins(const WingSkins& skins, StraightOutline outline, const TopoDS_Wire& inner,
-                                          const TopoDS_Wire& outer, const DeviceFaceNames& names, double tolerance);
+/// border) made from the wing's faces without a Boolean operation. Both borders' outlines
+/// (borderWire) are of one kind with corners in the same order: four straight edges (a straight
+/// cut across the wing, a panel) or a shaped edge between the skins followed by five straight
+/// ones (a rounded nose, a hollow back), whose ruled face between the borders is `shapedSide`
+/// (the cutter's). `cutter` is the ruled solid itself, which tells which pieces of the skins
+/// a device ahead of its outlines keeps (the lines across its rounded nose fan out from inside
+/// the wing). The skins are split along the solid's sides (geometry::skinPiecesWhere), the
+/// sides inside the wing trimmed where their lines meet the skins, each border's side made the
+/// plane face the other faces leave open there, and all sewn into a solid. `tolerance` is how
+/// closely the cut curves follow the true crossings (a length). Nothing where this does not
+/// apply; the caller then cuts the device by a Boolean operation.
+std::optional<NamedShape> deviceFromSkins(const WingSkins& skins, OutlineKind kind, const TopoDS_Wire& inner,
+                                          const TopoDS_Wire& outer, const TopoDS_Shape& cutter,
+                                          const TopoDS_Face& shapedSide, const DeviceFaceNames& names,
+                                          double tolerance);
 
 }  // namespace airshape::controlsurfaces

@@ -7,7 +7,11 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_Line.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
@@ -232,25 +236,56 @@ NamedShape DeviceGeometry::ruledCutter() const {
   return cutter;
 }
 
+namespace {
+
+/// The face of a ruled cutter ruled between its borders' curved edges (a rounded nose, a
+/// hollow back): the face beside the curved edge of its inner side; null where there is none.
+TopoDS_Face shapedSideOf(const NamedShape& cutter, const std::string& innerSideName) {
+  TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges;
+  TopExp::MapShapesAndAncestors(cutter.shape, TopAbs_EDGE, TopAbs_FACE, facesOfEdges);
+  for (const auto& [name, face] : cutter.faces) {
+    if (name != innerSideName) continue;
+    for (TopExp_Explorer edge(face, TopAbs_EDGE); edge.More(); edge.Next()) {
+      double first = 0.0, last = 0.0;
+      const Handle(Geom_Curve) curve = BRep_Tool::Curve(TopoDS::Edge(edge.Current()), first, last);
+      if (curve.IsNull() || curve->DynamicType() == STANDARD_TYPE(Geom_Line)) continue;
+      for (const TopoDS_Shape& beside : facesOfEdges.FindFromKey(edge.Current()))
+        if (!beside.IsSame(face)) return TopoDS::Face(beside);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
-  const BorderDefinition::Nose nose = device_.innerBorder.nose;
+  using Nose = BorderDefinition::Nose;
+  const Nose nose = device_.innerBorder.nose;
   if (device_.outerBorder.nose != nose) return std::nullopt;
-  StraightOutline outline = StraightOutline::Panel;
-  if (nose == BorderDefinition::Nose::Straight) {
+  OutlineKind kind = OutlineKind::Panel;
+  if (nose == Nose::Straight) {
     // A cut at the wing's own leading edge only touches the skins there.
     if (device_.innerBorder.xsiLE <= 0.0 || device_.outerBorder.xsiLE <= 0.0) return std::nullopt;
-    outline = StraightOutline::CutAft;
-  } else if (nose == BorderDefinition::Nose::StraightBack) {
-    outline = StraightOutline::CutAhead;
-  } else if (nose != BorderDefinition::Nose::Panel) {
+    kind = OutlineKind::Aft;
+  } else if (nose == Nose::LeadingEdgeShape) {
+    kind = OutlineKind::Aft;
+  } else if (nose == Nose::StraightBack || nose == Nose::InnerShape) {
+    kind = OutlineKind::Ahead;
+  } else if (nose != Nose::Panel) {
     return std::nullopt;
   }
+  // The ruled cutter itself is needed for a shaped side and for the pieces of the skins round
+  // a leading edge; straight outlines aft of the leading edge do without it.
+  const bool shaped = nose == Nose::LeadingEdgeShape || nose == Nose::InnerShape;
+  const NamedShape ruled = shaped || kind == OutlineKind::Ahead ? cutter() : NamedShape();
+  const TopoDS_Face shapedSide = shaped ? shapedSideOf(ruled, device_.uid + "/inner side") : TopoDS_Face();
+  if (shaped && shapedSide.IsNull()) return std::nullopt;
   const std::string& cs = device_.componentSegmentUid;
   WingSkins skins{wing_.componentSegmentSkin(configuration_, cs, Surface::Upper),
                   wing_.componentSegmentSkin(configuration_, cs, Surface::Lower),
                   {}};
   if (skins.upper.IsSame(skins.lower)) return std::nullopt;  // one face for both: not split along lines
-  if (outline == StraightOutline::CutAft) {
+  if (kind == OutlineKind::Aft) {
     TopoDS_Compound trailingEdge;
     BRep_Builder builder;
     builder.MakeCompound(trailingEdge);
@@ -263,8 +298,8 @@ std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
     if (any) skins.trailingEdge = trailingEdge;
   }
   const Outlines borders = outlines();
-  return deviceFromSkins(skins, outline, borders.inner, borders.outer, {device_.uid + "/", cutterFaceName(device_)},
-                         1e-8 * borders.size);
+  return deviceFromSkins(skins, kind, borders.inner, borders.outer, ruled.shape, shapedSide,
+                         {device_.uid + "/", cutterFaceName(device_)}, 1e-8 * borders.size);
 }
 
 NamedShape DeviceGeometry::atRest() const {
