@@ -5,6 +5,7 @@
 
 #include <Bnd_Box.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
+#include <Standard_ConstructionError.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
@@ -40,10 +41,14 @@ Handle(Geom2d_BSplineCurve)
     held->SetValue(i, points[static_cast<std::size_t>(i - 1)]);
     at->SetValue(i, parameters[static_cast<std::size_t>(i - 1)]);
   }
-  Geom2dAPI_Interpolate interpolation(held, at, false, 1e-15);
-  interpolation.Perform();
-  if (!interpolation.IsDone()) return nullptr;
-  return interpolation.Curve();
+  try {
+    Geom2dAPI_Interpolate interpolation(held, at, false, 1e-15);
+    interpolation.Perform();
+    if (!interpolation.IsDone()) return nullptr;
+    return interpolation.Curve();
+  } catch (const Standard_ConstructionError&) {  // two points at one place
+    return nullptr;
+  }
 }
 
 bool coversAllLines(const std::vector<CrossingPiece>& pieces) {
@@ -244,14 +249,28 @@ std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
 }
 
 /// The curve through a piece's points in its patch's parameters, by the side's parameter.
+/// Where the crossing stays at one place over a few lines (lines passing through the skin's
+/// edge meet it at the edge's point, held there), the place is taken once, at its first line
+/// (at the piece's last line where the piece ends there, so that the curve spans the piece).
 Handle(Geom2d_BSplineCurve) curveThrough(const Piece& piece) {
   std::vector<gp_Pnt2d> points;
   std::vector<double> parameters;
   for (const PatchPoint& point : piece.points) {
-    points.emplace_back(point.u, point.v);
+    const gp_Pnt2d place(point.u, point.v);
+    if (!points.empty() && points.back().IsEqual(place, 0.0)) {
+      if (&point == &piece.points.back()) parameters.back() = point.t;
+      continue;
+    }
+    points.push_back(place);
     parameters.push_back(point.t);
   }
+  if (points.size() < 2) return nullptr;
   return curveThroughPoints(points, parameters);
+}
+
+/// Whether a point lies on one of its patch's bounds.
+bool onBound(const Patch& patch, const PatchPoint& point) {
+  return point.u == patch.u0 || point.u == patch.u1 || point.v == patch.v0 || point.v == patch.v1;
 }
 
 /// Adds points halfway between two where the curve strays from the crossing by more than the
@@ -264,6 +283,12 @@ bool followsCrossing(const Side& side, Piece& piece, const Handle(Geom2d_BSpline
   for (std::size_t i = 1; i < piece.points.size(); ++i) {
     const double middle = 0.5 * (piece.points[i - 1].t + piece.points[i].t);
     const auto hit = side.on(piece.patch, middle, piece.points[i - 1]);
+    if (!hit && (onBound(patch, piece.points[i - 1]) || onBound(patch, piece.points[i]))) {
+      // An end put onto the patch's bound from a line that passes just beyond it: the lines
+      // between pass beyond it too; the crossing runs on the bound there.
+      denser.push_back(piece.points[i]);
+      continue;
+    }
     if (!hit) {
       failed = true;
       return false;
