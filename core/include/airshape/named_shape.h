@@ -8,6 +8,8 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include "airshape/geometry/brep_building.h"
+
 class BRepAlgoAPI_BuilderAlgo;
 class gp_Trsf;
 
@@ -21,9 +23,11 @@ struct NamedShape {
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
 };
 
-/// Sews named faces (null faces are left out) into one solid whose faces keep their names.
-/// Throws Error when they do not close.
-NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>& namedFaces);
+/// Sews named faces (null faces are left out) into one solid whose faces keep their names,
+/// turned outwards as `orienting` says (geometry::sewnSolid). Throws Error when they do not
+/// close.
+NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>& namedFaces,
+                          geometry::Orienting orienting = geometry::Orienting::ByVolume);
 
 /// The result of a Boolean operation (fuse, cut, common) on named shapes, each of its faces
 /// named as the input face it came from: a face kept as it was keeps its name, the pieces of

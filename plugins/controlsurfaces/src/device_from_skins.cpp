@@ -468,7 +468,9 @@ std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, co
   for (const auto& [name, face] : faces)
     closed.emplace_back(name, sewing.IsModified(face) ? TopoDS::Face(sewing.Modified(face)) : face);
   closed.insert(closed.end(), caps->begin(), caps->end());
-  return sewnNamedSolid(closed);
+  // Turned outwards by classifying the point at infinity: integrating the volume of trimmed
+  // faces of many-knotted skins would cost more than all the rest.
+  return sewnNamedSolid(closed, geometry::Orienting::ByClassification);
 }
 
 }  // namespace
