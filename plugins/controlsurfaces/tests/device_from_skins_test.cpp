@@ -7,14 +7,18 @@
 #include <string>
 #include <vector>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
@@ -107,6 +111,44 @@ TEST(DeviceFromSkins, ASpoilerIsTheUpperSkinAboveItsPanel) {
   EXPECT_NEAR(geometry::enclosedVolume(spoiler->shape), (kOuterY - kInnerY) * kUpperCrest * underParabola(0.4, 0.6),
               1e-10);
   EXPECT_TRUE(hasFaceNamed(*spoiler, "D/upper") && hasFaceNamed(*spoiler, "D/lower"));
+}
+
+/// A rounded nose at x in the border plane y: a parabola from the lower skin forward through
+/// (x - depth, 0) to the upper skin, then straight edges up, far aft, down and forward back to
+/// the lower skin, as borderWire draws a flap's leading-edge shape.
+TopoDS_Wire roundedNoseAt(double y, double x, double depth) {
+  const double upper = 4.0 * kUpperCrest * x * (1.0 - x), lower = -4.0 * kLowerCrest * x * (1.0 - x);
+  TColgp_Array1OfPnt poles(1, 3);
+  poles.SetValue(1, gp_Pnt(x, y, lower));
+  poles.SetValue(2, gp_Pnt(x - depth, y, 0.0));
+  poles.SetValue(3, gp_Pnt(x, y, upper));
+  TColStd_Array1OfReal knots(1, 2);
+  knots.SetValue(1, 0.0);
+  knots.SetValue(2, 1.0);
+  TColStd_Array1OfInteger multiplicities(1, 2);
+  multiplicities.Init(3);
+  BRepBuilderAPI_MakeWire wire(BRepBuilderAPI_MakeEdge(new Geom_BSplineCurve(poles, knots, multiplicities, 2)).Edge());
+  BRepBuilderAPI_MakePolygon rest;
+  for (const auto& [px, pz] : std::vector<std::pair<double, double>>{
+           {x, upper}, {x, 0.5}, {x + 5.0, 0.5}, {x + 5.0, -0.5}, {x, -0.5}, {x, lower}})
+    rest.Add(gp_Pnt(px, y, pz));
+  wire.Add(rest.Wire());
+  return wire.Wire();
+}
+
+TEST(DeviceFromSkins, AFlapWithARoundedNoseHoldsTheNose) {
+  const TopoDS_Wire inner = roundedNoseAt(kInnerY, 0.7, 0.05), outer = roundedNoseAt(kOuterY, 0.7, 0.05);
+  const TopoDS_Shape cutter = geometry::ruledThroughSections({outer, inner}).solid;
+  const TopoDS_Face nose = geometry::ruledFaceBetween(TopoDS::Edge(TopExp_Explorer(inner, TopAbs_EDGE).Current()),
+                                                      TopoDS::Edge(TopExp_Explorer(outer, TopAbs_EDGE).Current()));
+  const auto flap =
+      deviceFromSkins(wingSkins(), OutlineKind::Aft, inner, outer, cutter, nose, names("leading edge"), kTolerance);
+  ASSERT_TRUE(flap.has_value());
+  EXPECT_TRUE(BRepCheck_Analyzer(flap->shape).IsValid());
+  // The parabola's bulge ahead of the cut holds two thirds of its triangle: height times depth / 3.
+  const double height = 4.0 * (kUpperCrest + kLowerCrest) * 0.7 * 0.3;
+  const double section = (kUpperCrest + kLowerCrest) * underParabola(0.7, 1.0) + height * 0.05 / 3.0;
+  EXPECT_NEAR(geometry::enclosedVolume(flap->shape), (kOuterY - kInnerY) * section, 1e-10);
 }
 
 TEST(DeviceFromSkins, ACutThatMissesTheWingIsLeftToTheBooleanOperation) {
