@@ -1,22 +1,15 @@
 #include "device_from_skins.h"
 
 #include <array>
-#include <cmath>
 #include <functional>
 #include <memory>
 
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepLib.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
-#include <GCE2d_MakeSegment.hxx>
-#include <Geom2d_TrimmedCurve.hxx>
-#include <Geom_BSplineSurface.hxx>
 #include <Geom_Line.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <Standard_Failure.hxx>
@@ -24,7 +17,6 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_HSequenceOfShape.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Vertex.hxx>
 #include <gp_Pln.hxx>
 
 #include "airshape/error.h"
@@ -32,6 +24,7 @@
 #include "airshape/geometry/bspline_patch.h"
 #include "airshape/geometry/ruled_crossing.h"
 #include "airshape/geometry/ruled_prism.h"
+#include "airshape/geometry/ruled_side.h"
 #include "airshape/geometry/skin_split.h"
 
 namespace airshape::controlsurfaces {
@@ -79,155 +72,9 @@ Layout layoutOf(const Corners& corners) {
 /// the inner outline's corner k towards its corner k + 1 at t = 0 and from the outer one's at
 /// t = 1, s along them (0 at corner k, 1 at corner k + 1), as the ruled loft between the
 /// outlines makes it.
-struct Side {
-  geometry::RuledLines lines;
-  Handle(Geom_BSplineSurface) surface;
-};
-
-Side sideOf(const Corners& inner, const Corners& outer, std::size_t k) {
+geometry::RuledSide sideOf(const Corners& inner, const Corners& outer, std::size_t k) {
   const std::size_t next = (k + 1) % inner.size();
-  Side side{{inner[k], outer[k], gp_Vec(inner[k], inner[next]), gp_Vec(outer[k], outer[next])}, nullptr};
-  side.surface = geometry::ruledSurface(geometry::straightLine(inner[k], outer[k]),
-                                        geometry::straightLine(inner[next], outer[next]));
-  return side;
-}
-
-/// The line parameter s of a point on the side's line at t.
-double alongLine(const Side& side, double t, const gp_Pnt& point) {
-  const gp_Vec direction = side.lines.direction(t);
-  return gp_Vec(side.lines.base(t), point).Dot(direction) / direction.SquareMagnitude();
-}
-
-/// The curve (t, s) through the crossing's points, piece after piece (a piece starts where the
-/// one before ends).
-Handle(Geom2d_BSplineCurve) curveOverT(const Side& side, const std::vector<geometry::CrossingPiece>& pieces) {
-  std::vector<gp_Pnt2d> points;
-  std::vector<double> parameters;
-  for (const geometry::CrossingPiece& piece : pieces)
-    for (const geometry::PatchPoint& point : piece.points) {
-      if (!parameters.empty() && point.t <= parameters.back() + 1e-12) continue;
-      points.emplace_back(point.t, alongLine(side, point.t, point.point));
-      parameters.push_back(point.t);
-    }
-  if (points.size() < 2) return nullptr;
-  return geometry::curveThroughPoints(points, parameters);
-}
-
-/// Adds the crossing's points halfway between two where the curve over t strays from it by
-/// more than the tolerance (the points were placed for the curves in the skin's parameters);
-/// true when it strays nowhere, nothing where a line cannot be met.
-std::optional<bool> followsCrossing(const Side& side, const geometry::SkinPatches& skin,
-                                    std::vector<geometry::CrossingPiece>& pieces,
-                                    const Handle(Geom2d_BSplineCurve) & curve, double tolerance) {
-  bool follows = true;
-  for (geometry::CrossingPiece& piece : pieces) {
-    std::vector<geometry::PatchPoint> refined{piece.points.front()};
-    for (std::size_t i = 1; i < piece.points.size(); ++i) {
-      const geometry::PatchPoint &a = piece.points[i - 1], &b = piece.points[i];
-      geometry::PatchPoint middle{0.5 * (a.t + b.t), 0.5 * (a.u + b.u), 0.5 * (a.v + b.v), {}};
-      if (!geometry::meetLine(skin.patches[piece.patch], side.lines.base(middle.t), side.lines.direction(middle.t),
-                              middle))
-        return std::nullopt;
-      const double stray = std::abs(curve->Value(middle.t).Y() - alongLine(side, middle.t, middle.point)) *
-                           side.lines.direction(middle.t).Magnitude();
-      if (stray > tolerance) {
-        refined.push_back(middle);
-        follows = false;
-      }
-      refined.push_back(b);
-    }
-    piece.points = std::move(refined);
-  }
-  return follows;
-}
-
-/// Where a side's lines meet a skin, as the curve (t, s(t)) of the side's parameters over
-/// t in [0, 1], within the tolerance of the true crossing; nothing unless every line meets
-/// the skin once.
-Handle(Geom2d_BSplineCurve) crossingOnSide(const TopoDS_Shape& skin, const Side& side, double tolerance) {
-  const auto patches = geometry::skinPatches(skin);
-  if (!patches) return nullptr;
-  std::optional<std::vector<geometry::CrossingPiece>> pieces;
-  try {
-    pieces = geometry::ruledCrossing(patches->patches, side.lines, tolerance);
-  } catch (const geometry::FoldedSkin&) {
-    return nullptr;
-  }
-  if (!pieces || !geometry::coversAllLines(*pieces)) return nullptr;
-  for (int round = 0; round < 32; ++round) {
-    const Handle(Geom2d_BSplineCurve) curve = curveOverT(side, *pieces);
-    if (curve.IsNull()) return nullptr;
-    const std::optional<bool> follows = followsCrossing(side, *patches, *pieces, curve, tolerance);
-    if (!follows) return nullptr;
-    if (*follows) return curve;
-  }
-  return nullptr;
-}
-
-/// What bounds a side's part inside the wing along its lines: one end of the lines (s = 0 or
-/// 1) or where they meet a skin.
-struct SideBound {
-  enum class Kind { Start, End, Skin } kind;
-  const TopoDS_Shape* skin = nullptr;
-};
-
-/// The part of a side between two bounds along its lines, from t = 0 to 1, as a face of its
-/// bilinear surface. Where the bounds meet at an end (within the tolerance) the face narrows to
-/// a corner there: a sliver between a shaped edge's ruled end, inside the wing, and the skin.
-/// A null face where the bounds lie together all along; nothing where a bound cannot be drawn
-/// or the bounds cross.
-std::optional<TopoDS_Face> sidePart(const Side& side, const SideBound& low, const SideBound& high, double tolerance) {
-  auto boundCurve = [&](const SideBound& bound) -> Handle(Geom2d_Curve) {
-    if (bound.kind == SideBound::Kind::Skin) return crossingOnSide(*bound.skin, side, tolerance);
-    const double s = bound.kind == SideBound::Kind::Start ? 0.0 : 1.0;
-    return Handle(Geom2d_Curve)(GCE2d_MakeSegment(gp_Pnt2d(0.0, s), gp_Pnt2d(1.0, s)).Value());
-  };
-  const Handle(Geom2d_Curve) bottom = boundCurve(low), top = boundCurve(high);
-  if (bottom.IsNull() || top.IsNull()) return std::nullopt;
-  const auto at = [](const Handle(Geom2d_Curve) & curve, double t) {
-    return curve->Value(curve->FirstParameter() + t * (curve->LastParameter() - curve->FirstParameter()));
-  };
-  // How far apart the bounds lie along the lines, sampled (a length).
-  const auto gap = [&](double t) { return (at(top, t).Y() - at(bottom, t).Y()) * side.lines.direction(t).Magnitude(); };
-  double widest = 0.0;
-  for (int k = 0; k <= 64; ++k) {
-    const double width = gap(k / 64.0);
-    if (width < -tolerance) return std::nullopt;
-    widest = std::max(widest, width);
-  }
-  if (widest <= tolerance) return TopoDS_Face();
-  // Corners counterclockwise in (t, s): the part lies on the left of its boundary. An end where
-  // the bounds meet has one vertex.
-  const gp_Pnt2d corners2d[4] = {at(bottom, 0.0), at(bottom, 1.0), at(top, 1.0), at(top, 0.0)};
-  const bool open[2] = {gap(0.0) > tolerance, gap(1.0) > tolerance};
-  TopoDS_Vertex vertices[4];
-  for (int k = 0; k < 4; ++k) {
-    const bool meets = (k == 2 && !open[1]) || (k == 3 && !open[0]);
-    vertices[k] =
-        meets ? vertices[3 - k]
-              : geometry::vertexWithin(side.surface->Value(corners2d[k].X(), corners2d[k].Y()), 2.0 * tolerance);
-  }
-  auto edgeOn = [&](const Handle(Geom2d_Curve) & curve, int from, int to) {
-    BRepBuilderAPI_MakeEdge edge(curve, side.surface, vertices[from], vertices[to], curve->FirstParameter(),
-                                 curve->LastParameter());
-    return edge.IsDone() ? edge.Edge() : TopoDS_Edge();
-  };
-  auto across = [&](int from, int to) {
-    return edgeOn(GCE2d_MakeSegment(corners2d[from], corners2d[to]).Value(), from, to);
-  };
-  BRepBuilderAPI_MakeWire wire;
-  const TopoDS_Edge bottomEdge = edgeOn(bottom, 0, 1), topEdge = edgeOn(top, 3, 2);
-  if (bottomEdge.IsNull() || topEdge.IsNull()) return std::nullopt;
-  wire.Add(bottomEdge);
-  if (open[1]) wire.Add(across(1, 2));
-  wire.Add(TopoDS::Edge(topEdge.Reversed()));
-  if (open[0]) wire.Add(across(3, 0));
-  if (!wire.IsDone()) return std::nullopt;
-  BRepBuilderAPI_MakeFace face(side.surface, wire.Wire(), true);
-  if (!face.IsDone()) return std::nullopt;
-  TopoDS_Face made = face.Face();
-  BRepLib::BuildCurves3d(made, tolerance);
-  return made;
+  return geometry::ruledSide(inner[k], inner[next], outer[k], outer[next]);
 }
 
 /// The loop of the solid's sides around the device as seen across a skin: the lines of the
@@ -239,7 +86,7 @@ std::optional<TopoDS_Face> sidePart(const Side& side, const SideBound& low, cons
 /// direction would.
 geometry::RuledLoop acrossSkin(const Corners& inner, const Corners& outer, std::size_t crossing, std::size_t far,
                                bool farOffWing) {
-  const Side near = sideOf(inner, outer, crossing), beyond = sideOf(inner, outer, far);
+  const geometry::RuledSide near = sideOf(inner, outer, crossing), beyond = sideOf(inner, outer, far);
   gp_Vec farInner = beyond.lines.fromDirection, farOuter = beyond.lines.toDirection;
   if (farOffWing) {
     farInner = near.lines.fromDirection;
@@ -314,7 +161,7 @@ struct Fan {
 };
 
 geometry::RuledLoop fanAcrossSkin(const Corners& inner, const Corners& outer, const Fan& fan) {
-  const Side near = sideOf(inner, outer, fan.side);
+  const geometry::RuledSide near = sideOf(inner, outer, fan.side);
   const gp_Pnt innerStart = near.lines.from.Translated(fan.centre * near.lines.fromDirection);
   const gp_Pnt outerStart = near.lines.to.Translated(fan.centre * near.lines.toDirection);
   return {{innerStart, outerStart, outerStart, innerStart},
@@ -422,12 +269,12 @@ std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, co
                                                 layout.farSide, kind != OutlineKind::Panel);
     return addPieces(skin, loop, insidePrism(loop), part);
   };
-  auto addSide = [&](std::size_t k, const SideBound& low, const SideBound& high) {
-    const std::optional<TopoDS_Face> part = sidePart(sideOf(inner, outer, k), low, high, tolerance);
+  auto addSide = [&](std::size_t k, const geometry::SideBound& low, const geometry::SideBound& high) {
+    const std::optional<TopoDS_Face> part = geometry::sidePart(sideOf(inner, outer, k), low, high, tolerance);
     if (part && !part->IsNull()) faces.emplace_back(names.prefix + names.cutterFaces, *part);
     return part.has_value();
   };
-  using Bound = SideBound::Kind;
+  using Bound = geometry::SideBound::Kind;
   if (!addSkin(skins.upper, true, "upper")) return std::nullopt;
   if (kind == OutlineKind::Panel) {
     // Front, back and underside of the panel: the underside lies inside the wing.
