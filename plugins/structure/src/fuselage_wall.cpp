@@ -10,8 +10,10 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <Geom_Plane.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
@@ -21,6 +23,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/ruled_side.h"
 #include "compounds.h"
 #include "faces_inside.h"
 #include "fuselage_frame.h"
@@ -132,11 +135,21 @@ TopoDS_Face quad(const gp_Pnt& lower, const gp_Pnt& lowerNext, const gp_Pnt& upp
   return geometry::ruledFace(geometry::straightLine(lower, upper), geometry::straightLine(lowerNext, upperNext));
 }
 
-/// A wall before trimming: its base points, its strips and the faces that cut walls it bounds
-/// (its strips, the first and the last stretched along the wall beyond its ends).
+/// A strip of a wall by its corners: its lines run from `lower` to `upper` at one base point and
+/// from `lowerNext` to `upperNext` at the next; the base points lie on them at the share
+/// `baseShare` of the way up (0, or a half for a wall extruded both ways).
+struct StripCorners {
+  gp_Pnt lower, lowerNext, upper, upperNext;
+  double baseShare = 0.0;
+};
+
+/// A wall before trimming: its base points, its strips (as faces and by their corners) and the
+/// faces that cut walls it bounds (its strips, the first and the last stretched along the wall
+/// beyond its ends).
 struct WallLayout {
   std::vector<gp_Pnt> basePoints;
   std::vector<TopoDS_Face> strips, cutters;
+  std::vector<StripCorners> corners;
 };
 
 WallLayout layoutOf(const Configuration& configuration, const FuselageElement<schema::WallSegmentType>& wall) {
@@ -174,12 +187,36 @@ WallLayout layoutOf(const Configuration& configuration, const FuselageElement<sc
   const std::size_t last = bases.size() - 1;
   for (std::size_t k = 0; k < last; ++k) {
     layout.strips.push_back(quad(lower[k], lower[k + 1], upper[k], upper[k + 1]));
+    layout.corners.push_back({lower[k], lower[k + 1], upper[k], upper[k + 1], below < 0.0 ? 0.5 : 0.0});
     const gp_Vec stretch = gp_Vec(bases[k].point, bases[k + 1].point).Normalized() * reach;
     const gp_Vec before = k == 0 ? -stretch : gp_Vec(0, 0, 0), after = k + 1 == last ? stretch : gp_Vec(0, 0, 0);
     layout.cutters.push_back(quad(lower[k].Translated(before), lower[k + 1].Translated(after),
                                   upper[k].Translated(before), upper[k + 1].Translated(after)));
   }
   return layout;
+}
+
+/// A strip's part inside the fuselage made from where its lines meet the skin, without a Boolean
+/// operation: rays from the base points' line up to the skin (and down, for a wall extruded both
+/// ways), each meeting it once. A plane strip's part is a face of its plane. Nothing where rays
+/// miss the skin (leaving through an end cap) or meet it more than once; the caller then takes the
+/// Boolean common.
+std::optional<std::vector<TopoDS_Face>> stripInside(const StripCorners& strip, const TopoDS_Shape& skin,
+                                                    double tolerance) {
+  const geometry::RuledSide side = geometry::ruledSide(strip.lower, strip.upper, strip.lowerNext, strip.upperNext);
+  using Bound = geometry::SideBound;
+  const Bound up{Bound::Kind::Skin, &skin, strip.baseShare, +1};
+  const Bound down =
+      strip.baseShare > 0.0 ? Bound{Bound::Kind::Skin, &skin, strip.baseShare, -1} : Bound{Bound::Kind::Start};
+  const std::optional<TopoDS_Face> part = geometry::sidePart(side, down, up, tolerance);
+  if (!part || part->IsNull()) return std::nullopt;
+  BRepBuilderAPI_MakePolygon corners(strip.lower, strip.lowerNext, strip.upperNext, strip.upper, true);
+  BRepBuilderAPI_MakeFace plane(corners.Wire(), true);
+  if (!plane.IsDone()) return std::vector<TopoDS_Face>{*part};  // a strip a flush connection turns
+  const Handle(Geom_Plane) surface = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(plane.Face()));
+  BRepBuilderAPI_MakeFace onPlane(surface->Pln(), BRepTools::OuterWire(*part), true);
+  if (!onPlane.IsDone()) return std::nullopt;
+  return std::vector<TopoDS_Face>{onPlane.Face()};
 }
 
 bool touches(const TopoDS_Face& face, const gp_Pnt& point) {
@@ -246,9 +283,14 @@ NamedShape fuselageWall(const Configuration& configuration, const tank::TankServ
   const WallLayout layout = layoutOf(configuration, wall);
   const FuselageFrame fuselage =
       FuselageFrame::ofHost(configuration, wall.hostUid, wall.fuselage, wall.vesselPlacement);
+  const TopoDS_Compound skin = compoundOf(fuselage.skinFaces());
+  const double tolerance = 1e-7 * fuselage.reach();
   std::vector<TopoDS_Face> faces;
   try {
-    faces = facesInside(compoundOf(layout.strips), fuselage.solid());
+    const auto solid = [&]() -> const TopoDS_Shape& { return fuselage.solid(); };
+    const auto direct = [&](std::size_t k) { return stripInside(layout.corners[k], skin, tolerance); };
+    for (const std::vector<TopoDS_Face>& parts : facesInsideEach(layout.strips, solid, direct))
+      faces.insert(faces.end(), parts.begin(), parts.end());
   } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the wall cannot be cut at the fuselage's skin", {}, wall.node->xpath);
   }
