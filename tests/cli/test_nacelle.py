@@ -8,7 +8,7 @@ import json
 import math
 import os
 
-from conftest import airshape, conformance_passed, query_answers as ask
+from conftest import airshape, conformance_passed, query_answers as ask, shared_path
 
 
 
@@ -78,9 +78,9 @@ def test_sections_lofted_around_the_engine():
     assert math.isclose(box["max"][2], revolved_box["max"][2], abs_tol=1e-5)
     # ... symmetric about the x-z plane (the sections at 120° and 240° mirror each other) ...
     assert math.isclose(box["max"][1] - 20, 20 - box["min"][1], rel_tol=1e-6)
-    # ... and between its guides it follows the sections' interpolation around the engine,
-    # which falls inside the circle: less volume than the body of revolution.
-    assert lofted < revolved * 0.95
+    # ... and between its guides (circles here) it follows the sections' interpolation around
+    # the engine, which falls a little inside the circle: 97.7 % of the body of revolution.
+    assert revolved * 0.95 < lofted < revolved
     # A guide curve profile with rY = −0.1 at rX = 0.5 pulls the leading edge forward by
     # 0.1 chord (0.2 m) half way between the first two sections (placed at x = 25 + 1).
     assert math.isclose(pulled["min"][0], 26 - 0.2, abs_tol=5e-3)
@@ -106,6 +106,18 @@ def test_configuration_length_leaves_nacelles_and_empty_pylons_out():
 def test_nacelle_conformance_does_not_regress():
     passed, output = conformance_passed("cases-nacelle.json")
     assert passed >= 35, output[-3000:]
+
+
+def test_a_lofted_nacelle_does_not_depend_on_what_was_built_before():
+    # A cowl of three sections is a Gordon surface around the engine; making its parts compatible
+    # once inserted a knot twice and OCCT read poles it had not written, so that the nacelle came
+    # out different after other work in the same process (here an intersection first).
+    path = shared_path("data", "cpacs", "simpletest-pylon-nacelle.cpacs.xml")
+    area = {"op": "component_surface_area", "uid": "SimpleEnginePositioning"}
+    box = {"op": "bounding_box", "uid": "SimpleEnginePositioning"}
+    alone = ask(path, area, box)
+    after = ask(path, {"op": "intersection_count", "uid1": "Wing", "uid2": "SimpleFuselage"}, area, box)[1:]
+    assert alone == after
 
 
 def cst_side(x, n1, n2, coefficients):

@@ -96,6 +96,34 @@ TEST(Gordon, ReproducesACylinderAndATorus) {
   EXPECT_LT(deviation(patch.surface, torus), 1e-6);
 }
 
+TEST(Gordon, ThreeSectionsAroundAnAxisFollowEveryGuide) {
+  // A cowl-like network: three open sections at 0°, 120° and 240° about the x axis, skinned
+  // quadratically around, and closed guides around it (many knots each). The skinned sections
+  // start their period at 1/6, the guides' at 0; made compatible, the surface must still run
+  // along every guide (a knot inserted twice at the period's two ends once left it 0.1 off).
+  auto body = [](double s, double turn) {
+    const double a = 2 * M_PI * turn, r = (0.5 + 0.2 * s * (1 - s)) * (1 + 0.1 * std::cos(3 * a));
+    return gp_Pnt(2.0 * s, r * std::cos(a), r * std::sin(a));
+  };
+  Curves sections, guides;
+  for (double turn : {0.0, 1.0 / 3, 2.0 / 3}) sections.push_back(sampledCurve([&](double s) { return body(s, turn); }));
+  for (double s : {0.0, 0.25, 0.5, 0.75, 1.0})
+    guides.push_back(sampledCurve([&](double turn) { return body(s, turn); }, true));
+  const GordonSurface gordon = buildGordonSurface(sections, guides, {1e-6, 1e-8}, nullptr, 2);
+  GeomAPI_ProjectPointOnSurf projector;
+  double u1 = 0, u2 = 0, v1 = 0, v2 = 0;
+  gordon.surface->Bounds(u1, u2, v1, v2);
+  projector.Init(gordon.surface, u1, u2, v1, v2);
+  double worst = 0.0;
+  for (const auto& guide : guides)
+    for (int i = 0; i <= 60; ++i) {
+      projector.Perform(
+          guide->Value(guide->FirstParameter() + i / 60.0 * (guide->LastParameter() - guide->FirstParameter())));
+      worst = std::max(worst, projector.LowerDistance());
+    }
+  EXPECT_LT(worst, 1e-6);
+}
+
 TEST(Gordon, DegenerateNetworksAreErrors) {
   auto line = [](gp_Pnt a, gp_Pnt b) {
     return sampledCurve([=](double t) { return gp_Pnt(a.XYZ() + t * (b.XYZ() - a.XYZ())); }, false, 4);

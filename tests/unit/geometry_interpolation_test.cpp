@@ -214,7 +214,13 @@ TEST(Compatibility, PeriodicSurfacesWhosePeriodsStartApartShareOneRange) {
                                                        Handle(Geom_BSplineSurface)::DownCast(many->Copy())};
   makeCompatible(surfaces);
   ASSERT_EQ(surfaces[0]->NbVKnots(), surfaces[1]->NbVKnots());
-  for (int i = 1; i <= surfaces[0]->NbVKnots(); ++i) EXPECT_NEAR(surfaces[0]->VKnot(i), surfaces[1]->VKnot(i), 1e-12);
+  for (int i = 1; i <= surfaces[0]->NbVKnots(); ++i) {
+    EXPECT_NEAR(surfaces[0]->VKnot(i), surfaces[1]->VKnot(i), 1e-12);
+    EXPECT_EQ(surfaces[0]->VMultiplicity(i), surfaces[1]->VMultiplicity(i)) << "knot " << i;
+  }
+  // The knot that starts the period also ends it: raised once to the degree-raised few's 2.
+  EXPECT_EQ(surfaces[1]->VMultiplicity(1), 2);
+  EXPECT_EQ(surfaces[0]->NbVPoles(), surfaces[1]->NbVPoles());
   for (int i = 0; i <= 10; ++i)
     for (int j = 0; j <= 40; ++j) {
       const double u = i / 10.0, v = j / 40.0;

@@ -45,8 +45,15 @@ void requireSameRange(double first, double last, double otherFirst, double other
 /// Inserts into one direction of a surface every knot of `all` it lacks (or has too few
 /// times), in one call: one pass over the poles rather than one per knot.
 void insertMissing(Geom_BSplineSurface& surface, const KnotUnion& all, bool uDirection) {
+  // In a periodic direction the knot ending the period is the one starting it: inserting it
+  // there too would insert the same knot twice (OCCT then reads beyond the poles).
+  const bool periodic = uDirection ? surface.IsUPeriodic() : surface.IsVPeriodic();
+  double u0, u1, v0, v1;
+  surface.Bounds(u0, u1, v0, v1);
+  const double periodEnd = uDirection ? u1 : v1;
   std::vector<std::pair<double, int>> missing;
   for (const auto& [value, multiplicity] : all.knots()) {
+    if (periodic && std::abs(value - periodEnd) <= kKnotTolerance) continue;
     const int present = uDirection ? multiplicityAt(surface.UKnots(), surface.UMultiplicities(), value)
                                    : multiplicityAt(surface.VKnots(), surface.VMultiplicities(), value);
     if (present < multiplicity) missing.emplace_back(value, multiplicity - present);
