@@ -58,7 +58,13 @@ std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const Topo
                                            const std::string& names) {
   BRepAlgoAPI_Section section(first, second, false);
   section.Approximation(true);
-  section.SetRunParallel(true);  // the face pairs on every core: 2.4 times as fast on two
+  // With the curves on both faces OCCT checks the tolerance the section curves reached along
+  // those curves; without them it projects points onto the (many-knotted) surfaces, which was
+  // 60 % of a wing-fuselage section's instructions.
+  section.ComputePCurveOn1(true);
+  section.ComputePCurveOn2(true);
+  section.SetRunParallel(true);     // the face pairs on every core: 2.4 times as fast on two
+  section.SetNonDestructive(true);  // the components' shapes are shared, cached geometry
   section.Build();
   if (!section.IsDone() || section.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the intersection of " + names + " could not be computed");
