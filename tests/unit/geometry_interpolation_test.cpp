@@ -188,6 +188,32 @@ TEST(Compatibility, PeriodicAndClampedCurvesMix) {
   }
 }
 
+TEST(Compatibility, PeriodicCurvesWithADoubleStartKnotShareOnePeriod) {
+  // Two closed cubics, one with the knot that starts (and ends) its period doubled. Made
+  // compatible, the other's start knot is doubled too (once: the period's end is the same knot),
+  // both keep their shape and run over one knot vector.
+  const auto closedPoints = wavyPoints(11, true);
+  const auto doubled = interpolateCurve(closedPoints, chordParameters(closedPoints), 3, true);
+  doubled->InsertKnot(doubled->FirstParameter(), 2, 1e-12, false);
+  const auto single = interpolateCurve(closedPoints, chordParameters(closedPoints, 0.5), 3, true);
+  ASSERT_EQ(doubled->Multiplicity(1), 2);
+  std::vector<Handle(Geom_BSplineCurve)> curves = {Handle(Geom_BSplineCurve)::DownCast(doubled->Copy()),
+                                                   Handle(Geom_BSplineCurve)::DownCast(single->Copy())};
+  makeCompatible(curves);
+  ASSERT_TRUE(curves[0]->IsPeriodic() && curves[1]->IsPeriodic());
+  ASSERT_EQ(curves[0]->NbKnots(), curves[1]->NbKnots());
+  for (int i = 1; i <= curves[0]->NbKnots(); ++i) {
+    EXPECT_NEAR(curves[0]->Knot(i), curves[1]->Knot(i), 1e-12);
+    EXPECT_EQ(curves[0]->Multiplicity(i), curves[1]->Multiplicity(i)) << "knot " << i;
+  }
+  EXPECT_EQ(curves[0]->NbPoles(), curves[1]->NbPoles());
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i / 100.0;
+    EXPECT_LT(curves[0]->Value(t).Distance(doubled->Value(t)), 1e-12);
+    EXPECT_LT(curves[1]->Value(t).Distance(single->Value(t)), 1e-12);
+  }
+}
+
 /// A closed band about the z axis through rings at the given heights, sampled at `around`
 /// angles, periodic around with the given degree.
 Handle(Geom_BSplineSurface) band(int around, int degreeAround) {

@@ -137,8 +137,6 @@ void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
   }
   for (auto& curve : curves) {
     for (const auto& [value, multiplicity] : all.knots()) {
-      // A periodic curve's period ends at the knot that starts it (see insertMissing).
-      if (curve->IsPeriodic() && std::abs(value - curve->LastParameter()) <= kKnotTolerance) continue;
       const int present = multiplicityAt(curve->Knots(), curve->Multiplicities(), value);
       if (present < multiplicity) curve->InsertKnot(value, multiplicity - present, kKnotTolerance, true);
     }
