@@ -196,25 +196,29 @@ WallLayout layoutOf(const Configuration& configuration, const FuselageElement<sc
   return layout;
 }
 
+/// How closely a strip's part follows the fuselage's skin, as a share of the fuselage's size:
+/// looser than the wings' traces (structure's kTraceTolerance), because the cut-back at bounding
+/// walls (OCCT's splitter) slows with the poles of the curves it meets.
+constexpr double kStripTolerance = 1e-7;
+
 /// A strip's part inside the fuselage made from where its lines meet the skin, without a Boolean
 /// operation: rays from the base points' line up to the skin (and down, for a wall extruded both
-/// ways), each meeting it once. A plane strip's part is a face of its plane. Nothing where rays
-/// miss the skin (leaving through an end cap) or meet it more than once; the caller then takes the
-/// Boolean common.
-std::optional<std::vector<TopoDS_Face>> stripInside(const StripCorners& strip, const TopoDS_Shape& skin,
-                                                    double tolerance) {
-  const geometry::RuledSide side = geometry::ruledSide(strip.lower, strip.upper, strip.lowerNext, strip.upperNext);
+/// ways), each meeting it once. The part of a plane strip (`strip` is its face) is a face of its
+/// plane. Nothing where rays miss the skin (leaving through an end cap) or meet it more than
+/// once; the caller then takes the Boolean common.
+std::optional<std::vector<TopoDS_Face>> stripInside(const TopoDS_Face& strip, const StripCorners& corners,
+                                                    const TopoDS_Shape& skin, double tolerance) {
+  const geometry::RuledSide side =
+      geometry::ruledSide(corners.lower, corners.upper, corners.lowerNext, corners.upperNext);
   using Bound = geometry::SideBound;
-  const Bound up{Bound::Kind::Skin, &skin, strip.baseShare, +1};
+  const Bound up{Bound::Kind::Skin, &skin, corners.baseShare, +1};
   const Bound down =
-      strip.baseShare > 0.0 ? Bound{Bound::Kind::Skin, &skin, strip.baseShare, -1} : Bound{Bound::Kind::Start};
+      corners.baseShare > 0.0 ? Bound{Bound::Kind::Skin, &skin, corners.baseShare, -1} : Bound{Bound::Kind::Start};
   const std::optional<TopoDS_Face> part = geometry::sidePart(side, down, up, tolerance);
   if (!part || part->IsNull()) return std::nullopt;
-  BRepBuilderAPI_MakePolygon corners(strip.lower, strip.lowerNext, strip.upperNext, strip.upper, true);
-  BRepBuilderAPI_MakeFace plane(corners.Wire(), true);
-  if (!plane.IsDone()) return std::vector<TopoDS_Face>{*part};  // a strip a flush connection turns
-  const Handle(Geom_Plane) surface = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(plane.Face()));
-  BRepBuilderAPI_MakeFace onPlane(surface->Pln(), BRepTools::OuterWire(*part), true);
+  const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(strip));
+  if (plane.IsNull()) return std::vector<TopoDS_Face>{*part};  // a strip a flush connection turns
+  BRepBuilderAPI_MakeFace onPlane(plane->Pln(), BRepTools::OuterWire(*part), true);
   if (!onPlane.IsDone()) return std::nullopt;
   return std::vector<TopoDS_Face>{onPlane.Face()};
 }
@@ -284,11 +288,13 @@ NamedShape fuselageWall(const Configuration& configuration, const tank::TankServ
   const FuselageFrame fuselage =
       FuselageFrame::ofHost(configuration, wall.hostUid, wall.fuselage, wall.vesselPlacement);
   const TopoDS_Compound skin = compoundOf(fuselage.skinFaces());
-  const double tolerance = 1e-7 * fuselage.reach();
+  const double tolerance = kStripTolerance * fuselage.reach();
   std::vector<TopoDS_Face> faces;
   try {
     const auto solid = [&]() -> const TopoDS_Shape& { return fuselage.solid(); };
-    const auto direct = [&](std::size_t k) { return stripInside(layout.corners[k], skin, tolerance); };
+    const auto direct = [&](std::size_t k) {
+      return stripInside(layout.strips[k], layout.corners[k], skin, tolerance);
+    };
     for (const std::vector<TopoDS_Face>& parts : facesInsideEach(layout.strips, solid, direct))
       faces.insert(faces.end(), parts.begin(), parts.end());
   } catch (const Error&) {
