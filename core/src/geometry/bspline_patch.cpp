@@ -1,4 +1,5 @@
 #include "airshape/geometry/bspline_patch.h"
+#include <TColgp_Array2OfPnt.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +28,15 @@ std::optional<Patch> patchOf(const TopoDS_Face& face) {
       std::abs(patch.v0 - sv0) > slack * (sv1 - sv0) || std::abs(patch.v1 - sv1) > slack * (sv1 - sv0))
     return std::nullopt;
   return patch;
+}
+
+Bnd_Box poleBox(const Patch& patch) {
+  Bnd_Box box;
+  const TColgp_Array2OfPnt& poles = patch.surface->Poles();
+  for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+    for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) box.Add(poles(i, j));
+  box.Enlarge(1e-6 * std::sqrt(box.SquareExtent()));
+  return box;
 }
 
 bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Bnd_Box.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
@@ -67,11 +68,32 @@ struct Hit {
   PatchPoint at;
 };
 
+/// Which points of a line count: all of it, or the half from its base (rays from inside a
+/// fuselage); s is the point's place along the line's direction from its base.
+bool counts(const RuledLines& lines, double s) { return !lines.rays || s >= 0.0; }
+/// Only the ruling between its two curves counts (a little beyond them, for rounding).
+bool counts(const RulingSegments&, double s) {
+  return s >= -RulingSegments::kEndSlack && s <= 1.0 + RulingSegments::kEndSlack;
+}
+
+/// How far off a second crossing of a line may lie and be left out, as a multiple of the
+/// nearest one's distance from the line's base: whole lines may meet the other side of a
+/// box wing far off; a ruling is a piece of its surface, where every crossing counts.
+double ignoredBeyond(const RuledLines&) { return 10.0; }
+double ignoredBeyond(const RulingSegments&) { return std::numeric_limits<double>::infinity(); }
+
+/// Whether every sampled line is searched for a second crossing while the crossing is being
+/// followed: a ruled face may meet a skin in several separate lines (a bump through a wing),
+/// which following one would miss.
+bool searchedEveryLine(const RuledLines&) { return false; }
+bool searchedEveryLine(const RulingSegments&) { return true; }
+
 /// The lines of a ruled surface and where they meet the skin's patches.
+template <class Lines>
 class Side {
  public:
-  Side(const std::vector<Patch>& patches, const RuledLines& lines) : patches_(patches), lines_(lines) {
-    for (const Patch& patch : patches) boxes_.push_back(hullBox(patch));
+  Side(const std::vector<Patch>& patches, const Lines& lines) : patches_(patches), lines_(lines) {
+    for (const Patch& patch : patches) boxes_.push_back(poleBox(patch));
   }
 
   /// Where the line at `lambda` meets the patch, from the guess `near`; nothing where it meets
@@ -81,27 +103,33 @@ class Side {
     const gp_Pnt base = lines_.base(lambda);
     const gp_Vec direction = lines_.direction(lambda);
     if (!meetLine(patches_[patch], base, direction, point)) return std::nullopt;
-    if (lines_.rays && gp_Vec(base, point.point).Dot(direction) < 0.0) return std::nullopt;
+    if (!counts(lines_, gp_Vec(base, point.point).Dot(direction) / direction.SquareMagnitude())) return std::nullopt;
     point.t = lambda;
     return Hit{patch, point};
   }
 
-  /// Every patch the line at `lambda` meets, each found from a grid of starting guesses.
-  std::vector<Hit> search(double lambda) const {
+  /// Every patch the line at `lambda` meets, each found from a grid of starting guesses: the
+  /// first point on each, or every point apart by more than `apart` where each line is searched
+  /// whole (searchedEveryLine: a ruling may pass through a one-face skin twice).
+  std::vector<Hit> search(double lambda, double apart) const {
     constexpr int kGuesses = 6;
+    const bool every = searchedEveryLine();
     std::vector<Hit> hits;
     const gp_Lin line(lines_.base(lambda), gp_Dir(lines_.direction(lambda)));
     for (std::size_t k = 0; k < patches_.size(); ++k) {
       const Patch& patch = patches_[k];
       if (boxes_[k].IsOut(line)) continue;
+      const std::size_t before = hits.size();
       for (int i = 0; i < kGuesses * kGuesses; ++i) {
         PatchPoint guess;
         guess.u = patch.u0 + (patch.u1 - patch.u0) * (0.5 + i / kGuesses) / kGuesses;
         guess.v = patch.v0 + (patch.v1 - patch.v0) * (0.5 + i % kGuesses) / kGuesses;
-        if (const auto hit = on(k, lambda, guess)) {
-          hits.push_back(*hit);
-          break;
-        }
+        const auto hit = on(k, lambda, guess);
+        if (!hit) continue;
+        const bool known = std::any_of(hits.begin() + static_cast<std::ptrdiff_t>(before), hits.end(),
+                                       [&](const Hit& h) { return h.at.point.Distance(hit->at.point) <= apart; });
+        if (!known) hits.push_back(*hit);
+        if (!every) break;
       }
     }
     return hits;
@@ -109,21 +137,12 @@ class Side {
 
   const Patch& patch(std::size_t k) const { return patches_[k]; }
   gp_Pnt base(double lambda) const { return lines_.base(lambda); }
+  double ignoredBeyond() const { return airshape::geometry::ignoredBeyond(lines_); }
+  bool searchedEveryLine() const { return airshape::geometry::searchedEveryLine(lines_); }
 
  private:
-  /// A box round the patch's poles, which hold the whole surface (convex hull property): a line
-  /// that misses it misses the patch, which spares the grid of Newton searches on it.
-  static Bnd_Box hullBox(const Patch& patch) {
-    Bnd_Box box;
-    const TColgp_Array2OfPnt& poles = patch.surface->Poles();
-    for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
-      for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) box.Add(poles(i, j));
-    box.Enlarge(1e-6 * std::sqrt(box.SquareExtent()));
-    return box;
-  }
-
   const std::vector<Patch>& patches_;
-  const RuledLines& lines_;
+  const Lines& lines_;
   std::vector<Bnd_Box> boxes_;
 };
 
@@ -134,8 +153,9 @@ using Piece = CrossingPiece;
 /// off (a box wing's other wing): the point nearest the line's base counts where every other
 /// lies at least ten times as far from the base. Throws FoldedSkin where the line meets the
 /// skin at two points otherwise.
-std::optional<Hit> entry(const Side& side, double lambda, double ahead, double tolerance) {
-  std::vector<Hit> hits = side.search(lambda);
+template <class Lines>
+std::optional<Hit> entry(const Side<Lines>& side, double lambda, double ahead, double tolerance) {
+  std::vector<Hit> hits = side.search(lambda, tolerance);
   if (hits.empty()) return std::nullopt;
   const gp_Pnt base = side.base(lambda);
   std::sort(hits.begin(), hits.end(),
@@ -146,7 +166,7 @@ std::optional<Hit> entry(const Side& side, double lambda, double ahead, double t
   for (const Hit& hit : hits)
     if (hit.at.point.Distance(nearest) <= tolerance)
       atNearest.push_back(hit);
-    else if (base.Distance(hit.at.point) < 10.0 * reach + tolerance)
+    else if (base.Distance(hit.at.point) < side.ignoredBeyond() * reach + tolerance)
       throw FoldedSkin();
   hits = atNearest;
   for (const Hit& hit : hits)
@@ -156,7 +176,8 @@ std::optional<Hit> entry(const Side& side, double lambda, double ahead, double t
 
 /// The last point of the crossing on the piece's patch before the line at `beyond` (which
 /// meets it outside the patch), by bisection, and the line's parameter just past it.
-std::pair<PatchPoint, double> exitFrom(const Side& side, const Piece& piece, double beyond, double tolerance) {
+template <class Lines>
+std::pair<PatchPoint, double> exitFrom(const Side<Lines>& side, const Piece& piece, double beyond, double tolerance) {
   PatchPoint last = piece.points.back();
   for (int halving = 0; halving < 50; ++halving) {
     const double middle = 0.5 * (last.t + beyond);
@@ -170,7 +191,8 @@ std::pair<PatchPoint, double> exitFrom(const Side& side, const Piece& piece, dou
 
 /// The first point of the crossing on the skin after the line at `outside` (which misses it),
 /// by bisection towards `inside`, a hit of a later line.
-Hit reentry(const Side& side, double outside, Hit inside, double tolerance) {
+template <class Lines>
+Hit reentry(const Side<Lines>& side, double outside, Hit inside, double tolerance) {
   for (int halving = 0; halving < 50; ++halving) {
     const double middle = 0.5 * (outside + inside.at.t);
     if (const auto hit = side.on(inside.patch, middle, inside.at))
@@ -185,7 +207,8 @@ Hit reentry(const Side& side, double outside, Hit inside, double tolerance) {
 /// The side's crossing of the skin, piece by patch: sampled evenly, each change of patch found
 /// by bisection. Where the side runs beyond the skin's edge (past its leading or trailing edge,
 /// its root or tip), the region follows that edge, which the skin has already: no piece there.
-std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
+template <class Lines>
+std::optional<std::vector<Piece>> piecesOf(const Side<Lines>& side, double tolerance) {
   constexpr int kSamples = 16;
   const double step = 1.0 / kSamples;
   std::vector<Piece> pieces;
@@ -215,6 +238,7 @@ std::optional<std::vector<Piece>> piecesOf(const Side& side, double tolerance) {
     }
     Piece& piece = pieces.back();
     if (const auto hit = side.on(piece.patch, lambda, piece.points.back())) {
+      if (side.searchedEveryLine()) entry(side, lambda, lambda, tolerance);  // throws where it meets twice
       add(piece, hit->at);
       continue;
     }
@@ -275,7 +299,8 @@ bool onBound(const Patch& patch, const PatchPoint& point) {
 
 /// Adds points halfway between two where the curve strays from the crossing by more than the
 /// tolerance; true when it strays nowhere.
-bool followsCrossing(const Side& side, Piece& piece, const Handle(Geom2d_BSplineCurve) & curve, double tolerance,
+template <class Lines>
+bool followsCrossing(const Side<Lines>& side, Piece& piece, const Handle(Geom2d_BSplineCurve) & curve, double tolerance,
                      bool& failed) {
   const Patch& patch = side.patch(piece.patch);
   std::vector<PatchPoint> denser{piece.points.front()};
@@ -304,11 +329,10 @@ bool followsCrossing(const Side& side, Piece& piece, const Handle(Geom2d_BSpline
   return close;
 }
 
-}  // namespace
-
-std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const RuledLines& lines,
-                                                        double tolerance) {
-  const Side side(patches, lines);
+template <class Lines>
+std::optional<std::vector<CrossingPiece>> crossingOfLines(const std::vector<Patch>& patches, const Lines& lines,
+                                                          double tolerance) {
+  const Side<Lines> side(patches, lines);
   auto pieces = piecesOf(side, tolerance);
   if (!pieces) return std::nullopt;
   // Where a line meets the skin tangentially at a piece's end (a cell's corner on the leading
@@ -327,6 +351,18 @@ std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>
     if (!piece.curve) return std::nullopt;
   }
   return pieces;
+}
+
+}  // namespace
+
+std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const RuledLines& lines,
+                                                        double tolerance) {
+  return crossingOfLines(patches, lines, tolerance);
+}
+
+std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches,
+                                                        const RulingSegments& rulings, double tolerance) {
+  return crossingOfLines(patches, rulings, tolerance);
 }
 
 }  // namespace airshape::geometry

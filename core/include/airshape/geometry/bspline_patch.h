@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include <Bnd_Box.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
@@ -27,6 +28,10 @@ struct PatchPoint {
 /// The face as a patch; nothing when it is not a B-spline surface bounded by its own four
 /// boundary curves.
 std::optional<Patch> patchOf(const TopoDS_Face& face);
+
+/// A box round the patch's poles, which hold the whole surface (convex hull property): a line
+/// or a shape that misses it misses the patch.
+Bnd_Box poleBox(const Patch& patch);
 
 /// A skin's faces and their patches, in the order the skin holds them.
 struct SkinPatches {

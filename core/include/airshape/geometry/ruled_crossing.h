@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <Geom2d_BSplineCurve.hxx>
+#include <Geom_Curve.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
@@ -26,6 +27,19 @@ struct RuledLines {
   gp_Vec direction(double t) const { return fromDirection + t * (toDirection - fromDirection); }
 };
 
+/// The rulings of a ruled surface between two curves: the one at t in [0, 1] runs from
+/// from(u) to to(u), u = u0 + t (u1 − u0), and only its points between the curves count
+/// (s in [0, 1] along direction(t) = to(u) − from(u)): a ruled face's own lines.
+struct RulingSegments {
+  /// How far beyond its curves a ruling's crossing still counts, as a share of its length.
+  static constexpr double kEndSlack = 1e-9;
+  Handle(Geom_Curve) from, to;
+  double u0 = 0, u1 = 1;
+
+  gp_Pnt base(double t) const { return from->Value(u0 + t * (u1 - u0)); }
+  gp_Vec direction(double t) const { return gp_Vec(base(t), to->Value(u0 + t * (u1 - u0))); }
+};
+
 /// A part of where the lines meet a skin, on one of its patches: the points (`t` the lines'
 /// parameter, in order) and the curve through them in the patch's parameters by t, which
 /// follows the true crossing within the tolerance.
@@ -44,6 +58,11 @@ struct FoldedSkin {};
 /// when a curve cannot be made to follow the crossing; throws FoldedSkin.
 std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const RuledLines& lines,
                                                         double tolerance);
+
+/// The same for the rulings of a ruled face: throws FoldedSkin where a ruling meets the skin
+/// at two points.
+std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches,
+                                                        const RulingSegments& rulings, double tolerance);
 
 /// Whether crossing pieces run without a gap from the line at t = 0 to the line at t = 1.
 bool coversAllLines(const std::vector<CrossingPiece>& pieces);
