@@ -1,11 +1,11 @@
 #include "airshape/geometry/bspline_patch.h"
-#include <TColgp_Array2OfPnt.hxx>
 
 #include <algorithm>
 #include <cmath>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Mat.hxx>

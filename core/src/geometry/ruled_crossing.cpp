@@ -8,7 +8,6 @@
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Standard_ConstructionError.hxx>
 #include <TColStd_HArray1OfReal.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Lin.hxx>

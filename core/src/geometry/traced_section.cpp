@@ -5,7 +5,6 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepLib.hxx>
-#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GeomAPI_IntSS.hxx>
@@ -15,7 +14,6 @@
 #include <Precision.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "airshape/geometry/bspline_patch.h"
 #include "airshape/geometry/ruled_crossing.h"
@@ -97,8 +95,7 @@ std::optional<std::vector<TopoDS_Edge>> tracedSection(const TopoDS_Shape& ruled,
                                                       double tolerance) {
   // The skin's curved faces must be patches; its planes (a fuselage's end caps) and the ruled
   // shape's planes (a wing's root and tip) are checked to be met nowhere.
-  std::vector<Patch> patches;
-  std::vector<Patch> ruledPatches;
+  std::vector<Patch> patches, ruledPatches;
   std::vector<TopoDS_Face> skinPlanes, ruledPlanes;
   for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
     const TopoDS_Face& face = TopoDS::Face(explorer.Current());
