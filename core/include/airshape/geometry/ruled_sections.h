@@ -12,7 +12,9 @@ namespace airshape::geometry {
 /// The solid of OCCT's ruled loft through closed wires (BRepOffsetAPI_ThruSections, ruled):
 /// between each two consecutive wires ruled faces (edges matched by OCCT, also where the wires
 /// have different numbers of edges), the first and the last wire closed by caps, which it names.
-/// The wires need not be planar. A null solid when OCCT builds none.
+/// The wires need not be planar. Ruled faces that are flat (to a billionth of the loft's size)
+/// are made plane faces with the same edges, which OCCT's Booleans cut far faster. A null
+/// solid when OCCT builds none.
 struct RuledSections {
   TopoDS_Shape solid;
   TopoDS_Shape firstCap, lastCap;
