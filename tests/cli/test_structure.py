@@ -261,6 +261,10 @@ def test_the_structural_model_meshes_conformally(tmp_path):
     result = airshape("export", str(path), "--structure", "-o", str(model), "-o", str(faces))
     assert result.returncode == 0, result.stderr
     assert "RectCS structure" in result.stdout
+    # Progress: each component built, then the join, which takes seconds on a large wing.
+    progress = [line for line in result.stderr.splitlines() if line.startswith("export: ")]
+    assert any(line.startswith("export: 1/4 built ") for line in progress), progress
+    assert any("4/4 joining the structure of RectCS (3 components)" in line for line in progress), progress
     joined = gmsh_mesh_conformity(model, 0.1)
     # Webs and ribs share their edges with the skins they meet: T-junctions, no doubled nodes.
     assert joined["duplicates"] == 0 and joined["junctions"] >= 10, joined

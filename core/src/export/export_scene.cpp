@@ -178,16 +178,27 @@ std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const st
   return solids;
 }
 
+/// The structural models (`export --structure`): their components built first, independent
+/// ones in parallel, with progress (a failure is said where the models leave it out).
+ExportScene structuralScene(const Configuration& configuration, const ExportOptions& options, Clock::time_point start) {
+  const std::vector<std::size_t> components = structuralModelComponents(configuration, options);
+  buildSelected(configuration, components, options, start);
+  ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}, {}};
+  const auto step = [&](const std::string& what) {
+    if (options.progress)
+      options.progress(
+          {components.size(), components.size(), std::chrono::duration<double>(Clock::now() - start).count(), what});
+  };
+  for (const SceneComponent& model : structuralModels(configuration, options, scene.leftOut, step))
+    scene.components.push_back(copied(model.name, model.shape));
+  return scene;
+}
+
 }  // namespace
 
 ExportScene buildScene(const Configuration& configuration, const ExportOptions& options) {
-  if (options.structure) {
-    ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}, {}};
-    for (const SceneComponent& model : structuralModels(configuration, options, scene.leftOut))
-      scene.components.push_back(copied(model.name, model.shape));
-    return scene;
-  }
   const Clock::time_point start = Clock::now();
+  if (options.structure) return structuralScene(configuration, options, start);
   const std::map<std::string, PosedComponent> posed = resolvePoses(configuration, options.poses);
   const std::vector<std::size_t> selected = selectedComponents(configuration, options, posed);
   ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}, {}};

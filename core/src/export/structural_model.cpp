@@ -70,8 +70,23 @@ NamedShape joined(const std::vector<const NamedShape*>& parts, const std::string
 
 }  // namespace
 
+std::vector<std::size_t> structuralModelComponents(const Configuration& configuration, const ExportOptions& options) {
+  const graph::ComponentGraph& graph = configuration.components();
+  std::vector<bool> taken(graph.components().size(), false);
+  for (const auto& [host, structure] : structureByHost(configuration)) {
+    if (!wanted(configuration, host, options)) continue;
+    taken[static_cast<std::size_t>(graph.find(host))] = true;
+    for (const std::string& uid : structure) taken[static_cast<std::size_t>(graph.find(uid))] = true;
+  }
+  std::vector<std::size_t> components;
+  for (std::size_t index : graph.buildOrder())
+    if (taken[index]) components.push_back(index);
+  return components;
+}
+
 std::vector<SceneComponent> structuralModels(const Configuration& configuration, const ExportOptions& options,
-                                             std::vector<std::string>& leftOut) {
+                                             std::vector<std::string>& leftOut,
+                                             const std::function<void(const std::string&)>& step) {
   std::vector<SceneComponent> models;
   for (const auto& [host, structure] : structureByHost(configuration)) {
     if (!wanted(configuration, host, options)) continue;
@@ -85,7 +100,10 @@ std::vector<SceneComponent> structuralModels(const Configuration& configuration,
         leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
       }
     }
-    if (parts.size() > 1) models.push_back({host + " structure", joined(parts, host), ""});
+    if (parts.size() < 2) continue;
+    step("joining the structure of " + host + " (" + std::to_string(parts.size() - 1) +
+         (parts.size() == 2 ? " component)" : " components)"));
+    models.push_back({host + " structure", joined(parts, host), ""});
   }
   return models;
 }
