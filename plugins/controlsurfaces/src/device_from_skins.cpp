@@ -244,6 +244,16 @@ bool shapedSideInside(const WingSkins& skins, const TopoDS_Wire& innerWire, cons
   return true;
 }
 
+/// A straight outline's cut (its first side, corners 0 and 1) moved ahead by a tenth of its
+/// distance to the far side, which runs aft: a cut at the wing's own leading edge then misses
+/// the skins, whose pieces run to their own leading edge instead of grazing it.
+Corners cutAheadOfWing(Corners corners) {
+  const gp_Vec ahead = 0.1 * gp_Vec(corners[2], corners[1]);
+  corners[0].Translate(ahead);
+  corners[1].Translate(ahead);
+  return corners;
+}
+
 std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, const TopoDS_Wire& innerWire,
                                     const TopoDS_Wire& outerWire, const Corners& inner, const Corners& outer,
                                     const TopoDS_Shape& cutter, const TopoDS_Face& shapedSide,
@@ -283,7 +293,9 @@ std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, co
       return std::nullopt;
   } else {
     if (!addSkin(skins.lower, false, "lower")) return std::nullopt;
-    if (inner.size() == 4) {
+    if (kind == OutlineKind::WholeChord) {
+      // No front: the upper and the lower skin meet at the leading edge.
+    } else if (inner.size() == 4) {
       if (!addSide(0, {Bound::Skin, &skins.lower}, {Bound::Skin, &skins.upper})) return std::nullopt;
     } else {
       // The shaped side lies inside the wing, its ends on the skins at the borders; between
@@ -296,7 +308,7 @@ std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, co
       faces.emplace_back(names.prefix + names.cutterFaces, shapedSide);
     }
     const geometry::RuledLoop aft = acrossTrailingEdge(inner, outer, layout);
-    if (kind == OutlineKind::Aft && !skins.trailingEdge.IsNull() &&
+    if (kind != OutlineKind::Ahead && !skins.trailingEdge.IsNull() &&
         !addPieces(skins.trailingEdge, aft, insidePrism(aft), "trailing edge"))
       return std::nullopt;
   }
@@ -328,7 +340,11 @@ std::optional<NamedShape> deviceFromSkins(const WingSkins& skins, OutlineKind ki
                                           double tolerance) {
   const std::optional<Corners> innerCorners = cornersOf(inner), outerCorners = cornersOf(outer);
   if (!innerCorners || !outerCorners || innerCorners->size() != outerCorners->size()) return std::nullopt;
+  if (kind == OutlineKind::WholeChord && innerCorners->size() != 4) return std::nullopt;
   try {
+    if (kind == OutlineKind::WholeChord)
+      return fromSkins(skins, kind, inner, outer, cutAheadOfWing(*innerCorners), cutAheadOfWing(*outerCorners), cutter,
+                       shapedSide, names, tolerance);
     return fromSkins(skins, kind, inner, outer, *innerCorners, *outerCorners, cutter, shapedSide, names, tolerance);
   } catch (const Standard_Failure&) {
     return std::nullopt;

@@ -20,8 +20,10 @@ struct WingSkins {
 
 /// Where a device lies of its borders' outlines, which run across the wing: aft of them
 /// (trailing-edge devices), ahead of them (leading-edge devices), or, for a spoiler's panel,
-/// above the line inside the wing between the panel's front and back.
-enum class OutlineKind { Aft, Ahead, Panel };
+/// above the line inside the wing between the panel's front and back; or the whole chord
+/// between the borders, for a trailing-edge device cut at the wing's own leading edge (an
+/// all-moving surface), whose straight outlines only touch the skins there.
+enum class OutlineKind { Aft, Ahead, Panel, WholeChord };
 
 /// What the device's faces are called: "<uID>/" and the face's part.
 struct DeviceFaceNames {

@@ -264,9 +264,10 @@ std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
   if (device_.outerBorder.nose != nose) return std::nullopt;
   OutlineKind kind = OutlineKind::Panel;
   if (nose == Nose::Straight) {
-    // A cut at the wing's own leading edge only touches the skins there.
-    if (device_.innerBorder.xsiLE <= 0.0 || device_.outerBorder.xsiLE <= 0.0) return std::nullopt;
-    kind = OutlineKind::Aft;
+    // A cut at the wing's own leading edge only touches the skins there: the whole chord.
+    const bool atLeadingEdge = device_.innerBorder.xsiLE <= 0.0, outerAtLeadingEdge = device_.outerBorder.xsiLE <= 0.0;
+    if (atLeadingEdge != outerAtLeadingEdge) return std::nullopt;
+    kind = atLeadingEdge ? OutlineKind::WholeChord : OutlineKind::Aft;
   } else if (nose == Nose::LeadingEdgeShape) {
     kind = OutlineKind::Aft;
   } else if (nose == Nose::StraightBack || nose == Nose::InnerShape) {
@@ -285,7 +286,7 @@ std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
                   wing_.componentSegmentSkin(configuration_, cs, Surface::Lower),
                   {}};
   if (skins.upper.IsSame(skins.lower)) return std::nullopt;  // one face for both: not split along lines
-  if (kind == OutlineKind::Aft) {
+  if (kind == OutlineKind::Aft || kind == OutlineKind::WholeChord) {
     TopoDS_Compound trailingEdge;
     BRep_Builder builder;
     builder.MakeCompound(trailingEdge);

@@ -90,6 +90,19 @@ TEST(DeviceFromSkins, AFlapAftOfAStraightCutIsTheWingAftOfIt) {
     EXPECT_TRUE(hasFaceNamed(*flap, std::string("D/") + part)) << part;
 }
 
+TEST(DeviceFromSkins, ACutAtTheLeadingEdgeTakesTheWholeChord) {
+  // An all-moving surface: the cut touches the skins only where they meet, at x = 0.
+  const auto whole = deviceFromSkins(wingSkins(), OutlineKind::WholeChord, cutAt(kInnerY, 0.0, 5.0),
+                                     cutAt(kOuterY, 0.0, 5.0), {}, {}, names("leading edge"), kTolerance);
+  ASSERT_TRUE(whole.has_value()) << "made directly, not left to the Boolean operation";
+  EXPECT_TRUE(BRepCheck_Analyzer(whole->shape).IsValid());
+  const double section = (kUpperCrest + kLowerCrest) * underParabola(0.0, 1.0);
+  EXPECT_NEAR(geometry::enclosedVolume(whole->shape), (kOuterY - kInnerY) * section, 1e-10);
+  EXPECT_FALSE(hasFaceNamed(*whole, "D/leading edge")) << "no front: the skins meet there";
+  for (const char* part : {"upper", "lower", "inner side", "outer side"})
+    EXPECT_TRUE(hasFaceNamed(*whole, std::string("D/") + part)) << part;
+}
+
 TEST(DeviceFromSkins, ASlatAheadOfAStraightCutIsTheNose) {
   const TopoDS_Wire inner = cutAt(kInnerY, 0.15, -5.0), outer = cutAt(kOuterY, 0.15, -5.0);
   const TopoDS_Shape cutter = geometry::ruledThroughSections({outer, inner}).solid;
