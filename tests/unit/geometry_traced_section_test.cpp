@@ -1,5 +1,6 @@
-// Where a ruled shape meets a skin, traced along its rulings: a wing-like body of two ruled
-// faces (parabolic arcs along x, rulings along y) and two planar ends, its root inside a tube
+// Where a ruled shape meets a skin, traced along its rulings (or, where its faces are not
+// ruled, along their curves in one direction): a wing-like body of two ruled faces (parabolic
+// arcs along x, rulings along y) and two planar ends, its root inside a tube
 // of radius 1 about the x axis (an exact rational B-spline cylinder). The crossing is the
 // closed line (x, sqrt(1 - z(x)^2), z(x)) over both arcs, whose length is integrated here; a
 // body whose rulings pass through the tube and one whose root the tube passes through are left
@@ -62,9 +63,18 @@ TopoDS_Face endBetween(const Handle(Geom_BSplineSurface) & upper, const Handle(G
   return BRepBuilderAPI_MakeFace(wire.Wire(), true).Face();
 }
 
+/// The same surface of degree 2 along y: no longer ruled as a B-spline (three rows of poles),
+/// it is traced along its curves in y instead, as a guided wing's faces are.
+Handle(Geom_BSplineSurface) curvedArc(double height, double root, double tip) {
+  Handle(Geom_BSplineSurface) surface = ruledArc(height, root, tip);
+  surface->IncreaseDegree(2, 2);
+  return surface;
+}
+
 /// A wing-like body: arcs of height ±0.2 between y = root and y = tip, and its planar ends.
-TopoDS_Shape wingBody(double root, double tip) {
-  const Handle(Geom_BSplineSurface) upper = ruledArc(0.2, root, tip), lower = ruledArc(-0.2, root, tip);
+TopoDS_Shape wingBody(double root, double tip, bool curved = false) {
+  const auto arc = curved ? curvedArc : ruledArc;
+  const Handle(Geom_BSplineSurface) upper = arc(0.2, root, tip), lower = arc(-0.2, root, tip);
   TopoDS_Compound body;
   BRep_Builder builder;
   builder.MakeCompound(body);
@@ -100,6 +110,14 @@ TEST(TracedSection, AWingFromInsideATubeMeetsItInOneClosedLineOfTheIntegratedLen
   ASSERT_TRUE(edges.has_value());
   EXPECT_GE(edges->size(), 2u);
   EXPECT_NEAR(totalLength(*edges), crossingLength(), 1e-7);
+}
+
+TEST(TracedSection, AWingOfCurvedFacesIsTracedAlongItsCurves) {
+  const auto edges = tracedSection(wingBody(0.0, 3.0, true), tube(1.0), 1e-9);
+  ASSERT_TRUE(edges.has_value());
+  EXPECT_NEAR(totalLength(*edges), crossingLength(), 1e-7);
+  // Curves that pass through the tube meet it twice: left to the Boolean section.
+  EXPECT_FALSE(tracedSection(wingBody(-3.0, 3.0, true), tube(1.0), 1e-9).has_value());
 }
 
 TEST(TracedSection, AWingThatMissesTheTubeMeetsItNowhere) {

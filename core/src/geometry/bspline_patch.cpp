@@ -74,6 +74,43 @@ bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, P
   return false;
 }
 
+bool meetCurve(const Patch& patch, const Patch& curves, double u, PatchPoint& point) {
+  double a = point.u, b = point.v, s = std::clamp(point.s, curves.v0, curves.v1);
+  const double aSpan = patch.u1 - patch.u0, bSpan = patch.v1 - patch.v0, sSpan = curves.v1 - curves.v0;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    gp_Pnt surfacePoint, curvePoint;
+    gp_Vec da, db, alongU, ds;
+    patch.surface->D1(a, b, surfacePoint, da, db);
+    curves.surface->D1(u, s, curvePoint, alongU, ds);
+    const gp_Mat jacobian(da.XYZ(), db.XYZ(), ds.Reversed().XYZ());
+    const double determinant = jacobian.Determinant();
+    if (std::abs(determinant) < 1e-12 * da.Magnitude() * db.Magnitude() * ds.Magnitude()) return false;
+    gp_XYZ step = curvePoint.XYZ() - surfacePoint.XYZ();
+    step.Multiply(jacobian.Inverted());
+    // Held within both bounds; the moves taken tell convergence, as for a line.
+    const double nextA = std::clamp(a + step.X(), patch.u0, patch.u1);
+    const double nextB = std::clamp(b + step.Y(), patch.v0, patch.v1);
+    const double nextS = std::clamp(s + step.Z(), curves.v0, curves.v1);
+    const bool settled = std::abs(nextA - a) <= 1e-13 * aSpan && std::abs(nextB - b) <= 1e-13 * bSpan &&
+                         std::abs(nextS - s) <= 1e-13 * sSpan;
+    a = nextA;
+    b = nextB;
+    s = nextS;
+    if (settled) {
+      surfacePoint = patch.surface->Value(a, b);
+      curvePoint = curves.surface->Value(u, s);
+      if (surfacePoint.Distance(curvePoint) > 1e-9 * (1.0 + gp_Vec(curvePoint.XYZ()).Magnitude()))
+        return false;  // held at a bound: the curve misses the patch
+      point.u = a;
+      point.v = b;
+      point.s = s;
+      point.point = surfacePoint;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin) {
   SkinPatches result;
   for (TopExp_Explorer face(skin, TopAbs_FACE); face.More(); face.Next()) {

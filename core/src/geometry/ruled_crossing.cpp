@@ -6,6 +6,7 @@
 
 #include <Bnd_Box.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Standard_ConstructionError.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
@@ -75,17 +76,54 @@ bool counts(const RulingSegments&, double s) {
   return s >= -RulingSegments::kEndSlack && s <= 1.0 + RulingSegments::kEndSlack;
 }
 
+/// Where the line or curve at t meets a patch, from the guess in `point`.
+template <class Lines>
+bool meets(const Patch& patch, const Lines& lines, double t, PatchPoint& point) {
+  const gp_Pnt base = lines.base(t);
+  const gp_Vec direction = lines.direction(t);
+  if (!meetLine(patch, base, direction, point)) return false;
+  point.s = gp_Vec(base, point.point).Dot(direction) / direction.SquareMagnitude();
+  return counts(lines, point.s);
+}
+bool meets(const Patch& patch, const PatchCurves& curves, double t, PatchPoint& point) {
+  return meetCurve(patch, curves.patch, curves.u(t), point);
+}
+
+/// Whether the line or curve at t surely misses a box.
+template <class Lines>
+bool passesBy(const Bnd_Box& box, const Lines& lines, double t) {
+  return box.IsOut(gp_Lin(lines.base(t), gp_Dir(lines.direction(t))));
+}
+bool passesBy(const Bnd_Box& box, const PatchCurves& curves, double t) {
+  const Handle(Geom_Curve) curve = curves.patch.surface->UIso(curves.u(t));
+  const auto spline = Handle(Geom_BSplineCurve)::DownCast(curve);
+  if (spline.IsNull()) return false;
+  Bnd_Box poles;
+  for (int i = 1; i <= spline->NbPoles(); ++i) poles.Add(spline->Pole(i));
+  return box.IsOut(poles);
+}
+
+/// Where along a line or curve a search starts: the line's own projection decides; a curve
+/// is tried from three places over its range.
+double startAlong(const RuledLines&, int) { return 0.0; }
+double startAlong(const RulingSegments&, int) { return 0.0; }
+double startAlong(const PatchCurves& curves, int guess) {
+  return curves.patch.v0 + (curves.patch.v1 - curves.patch.v0) * (0.5 + guess % 3) / 3.0;
+}
+
 /// How far off a second crossing of a line may lie and be left out, as a multiple of the
 /// nearest one's distance from the line's base: whole lines may meet the other side of a
 /// box wing far off; a ruling is a piece of its surface, where every crossing counts.
 double ignoredBeyond(const RuledLines&) { return 10.0; }
 double ignoredBeyond(const RulingSegments&) { return std::numeric_limits<double>::infinity(); }
+double ignoredBeyond(const PatchCurves&) { return std::numeric_limits<double>::infinity(); }
 
 /// Whether every sampled line is searched for a second crossing while the crossing is being
 /// followed: a ruled face may meet a skin in several separate lines (a bump through a wing),
 /// which following one would miss.
 bool searchedEveryLine(const RuledLines&) { return false; }
 bool searchedEveryLine(const RulingSegments&) { return true; }
+bool searchedEveryLine(const PatchCurves&) { return true; }
 
 /// The lines of a ruled surface and where they meet the skin's patches.
 template <class Lines>
@@ -99,10 +137,7 @@ class Side {
   /// it outside the patch's bounds.
   std::optional<Hit> on(std::size_t patch, double lambda, const PatchPoint& near) const {
     PatchPoint point = near;
-    const gp_Pnt base = lines_.base(lambda);
-    const gp_Vec direction = lines_.direction(lambda);
-    if (!meetLine(patches_[patch], base, direction, point)) return std::nullopt;
-    if (!counts(lines_, gp_Vec(base, point.point).Dot(direction) / direction.SquareMagnitude())) return std::nullopt;
+    if (!meets(patches_[patch], lines_, lambda, point)) return std::nullopt;
     point.t = lambda;
     return Hit{patch, point};
   }
@@ -114,15 +149,15 @@ class Side {
     constexpr int kGuesses = 6;
     const bool every = searchedEveryLine();
     std::vector<Hit> hits;
-    const gp_Lin line(lines_.base(lambda), gp_Dir(lines_.direction(lambda)));
     for (std::size_t k = 0; k < patches_.size(); ++k) {
       const Patch& patch = patches_[k];
-      if (boxes_[k].IsOut(line)) continue;
+      if (passesBy(boxes_[k], lines_, lambda)) continue;
       const std::size_t before = hits.size();
       for (int i = 0; i < kGuesses * kGuesses; ++i) {
         PatchPoint guess;
         guess.u = patch.u0 + (patch.u1 - patch.u0) * (0.5 + i / kGuesses) / kGuesses;
         guess.v = patch.v0 + (patch.v1 - patch.v0) * (0.5 + i % kGuesses) / kGuesses;
+        guess.s = startAlong(lines_, i);
         const auto hit = on(k, lambda, guess);
         if (!hit) continue;
         const bool known = std::any_of(hits.begin() + static_cast<std::ptrdiff_t>(before), hits.end(),
@@ -362,6 +397,11 @@ std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>
 std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches,
                                                         const RulingSegments& rulings, double tolerance) {
   return crossingOfLines(patches, rulings, tolerance);
+}
+
+std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const PatchCurves& curves,
+                                                        double tolerance) {
+  return crossingOfLines(patches, curves, tolerance);
 }
 
 }  // namespace airshape::geometry

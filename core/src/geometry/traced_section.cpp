@@ -117,15 +117,18 @@ std::optional<std::vector<TopoDS_Edge>> tracedSection(const TopoDS_Shape& ruled,
       continue;
     }
     const std::optional<Patch> patch = patchOf(face);
-    const std::optional<RulingSegments> rulings = patch ? rulingsOf(*patch) : std::nullopt;
-    if (!rulings) return std::nullopt;
+    if (!patch) return std::nullopt;
     ruledPatches.push_back(*patch);
     Bnd_Box faceBox;
     BRepBndLib::Add(face, faceBox, false);
     if (faceBox.IsOut(skinBox)) continue;
+    // A ruled face along its rulings, another along its v-curves (a guided wing's faces run
+    // along the span in v): each must meet the skin at most once.
     std::optional<std::vector<CrossingPiece>> pieces;
     try {
-      pieces = ruledCrossing(patches, *rulings, tolerance);
+      const std::optional<RulingSegments> rulings = rulingsOf(*patch);
+      pieces = rulings ? ruledCrossing(patches, *rulings, tolerance)
+                       : ruledCrossing(patches, PatchCurves{*patch}, tolerance);
     } catch (const FoldedSkin&) {
       return std::nullopt;
     }

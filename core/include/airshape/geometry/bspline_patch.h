@@ -19,10 +19,12 @@ struct Patch {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
 };
 
-/// A point of a patch on a line: the line's parameter, the patch parameters and the point.
+/// A point of a patch on a line: the line's parameter, the patch parameters and the point;
+/// `s`, where a curve rather than a line meets the patch, the curve's own parameter there.
 struct PatchPoint {
   double t = 0, u = 0, v = 0;
   gp_Pnt point;
+  double s = 0;
 };
 
 /// The face as a patch; nothing when it is not a B-spline surface bounded by its own four
@@ -46,5 +48,10 @@ std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin);
 /// method on (u, v, s) with S(u, v) = base + s * direction, from the guess in `point` (its u
 /// and v). False where the line meets the patch tangentially or not within its bounds.
 bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point);
+
+/// The point where the curve of `curves` at u = `u` (its v-curve) meets the patch, by Newton's
+/// method on (u, v, s) with S(u, v) = C(u, s), from the guess in `point` (its u, v and s). False
+/// where it meets the patch tangentially or not within their bounds.
+bool meetCurve(const Patch& patch, const Patch& curves, double u, PatchPoint& point);
 
 }  // namespace airshape::geometry

@@ -40,6 +40,15 @@ struct RulingSegments {
   gp_Vec direction(double t) const { return gp_Vec(base(t), to->Value(u0 + t * (u1 - u0))); }
 };
 
+/// A patch's v-curves: the one at t in [0, 1] is its curve at u = u0 + t (u1 − u0), all of it
+/// counting (a guided wing's face, whose curves along its span meet a fuselage once each).
+struct PatchCurves {
+  Patch patch;
+
+  double u(double t) const { return patch.u0 + t * (patch.u1 - patch.u0); }
+  gp_Pnt base(double t) const { return patch.surface->Value(u(t), patch.v0); }
+};
+
 /// A part of where the lines meet a skin, on one of its patches: the points (`t` the lines'
 /// parameter, in order) and the curve through them in the patch's parameters by t, which
 /// follows the true crossing within the tolerance.
@@ -63,6 +72,11 @@ std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>
 /// at two points.
 std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches,
                                                         const RulingSegments& rulings, double tolerance);
+
+/// The same for a patch's curves: throws FoldedSkin where a curve meets the skin at two
+/// points.
+std::optional<std::vector<CrossingPiece>> ruledCrossing(const std::vector<Patch>& patches, const PatchCurves& curves,
+                                                        double tolerance);
 
 /// Whether crossing pieces run without a gap from the line at t = 0 to the line at t = 1.
 bool coversAllLines(const std::vector<CrossingPiece>& pieces);
