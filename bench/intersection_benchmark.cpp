@@ -1,5 +1,6 @@
 // Intersections of components as `intersection_length` computes them: the wing–fuselage line
-// of CPACS_30_D150.xml, both solids already built.
+// of CPACS_30_D150.xml (ruled wing) and of D150WithGuides.xml (guided wing), both solids
+// already built.
 // Run: build/bin/airshape_bench_intersection (needs ../shared/data/cpacs).
 #include <filesystem>
 #include <string>
@@ -29,6 +30,9 @@ void wingAndFuselage(benchmark::State& state, const std::string& name, const std
 
 BENCHMARK_CAPTURE(wingAndFuselage, D150, std::string("CPACS_30_D150.xml"), std::string("D150_VAMP_W1"),
                   std::string("D150_VAMP_FL1"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(wingAndFuselage, D150WithGuides, std::string("D150WithGuides.xml"), std::string("D150_wing_1ID"),
+                  std::string("D150Fuselage1ID"))
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
