@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRep_Builder.hxx>
 #include <GeomConvert.hxx>
@@ -24,6 +25,7 @@
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax3.hxx>
 
+#include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/traced_section.h"
 
@@ -118,6 +120,31 @@ TEST(TracedSection, AWingOfCurvedFacesIsTracedAlongItsCurves) {
   EXPECT_NEAR(totalLength(*edges), crossingLength(), 1e-7);
   // Curves that pass through the tube meet it twice: left to the Boolean section.
   EXPECT_FALSE(tracedSection(wingBody(-3.0, 3.0, true), tube(1.0), 1e-9).has_value());
+}
+
+/// The bilinear patch through four corners: u from the first to the second, v to the third.
+TopoDS_Face bilinear(const gp_Pnt& origin, const gp_Pnt& alongU, const gp_Pnt& alongV, const gp_Pnt& opposite) {
+  return ruledFace(straightLine(origin, alongU), straightLine(alongV, opposite));
+}
+
+TEST(TracedSection, FacesRuledAlongTheirCrossingAreTracedTheOtherWay) {
+  // A flat bar from x = 1 to 2, z = ±0.05, along y from 0 (inside the unit tube) to 3. Each
+  // face's rulings run across the bar, nearly along where it meets the tube: the curves along
+  // y find the crossing instead. It is two arcs of the unit circle over z = ±0.05 at x = 1 and
+  // 2, and two lines of length 1 along x.
+  const double h = 0.05;
+  BRep_Builder builder;
+  TopoDS_Compound bar;
+  builder.MakeCompound(bar);
+  for (const double x : {1.0, 2.0}) builder.Add(bar, bilinear({x, 0, -h}, {x, 3, -h}, {x, 0, h}, {x, 3, h}));
+  for (const double z : {-h, h}) builder.Add(bar, bilinear({1, 0, z}, {1, 3, z}, {2, 0, z}, {2, 3, z}));
+  for (const double y : {0.0, 3.0}) {
+    BRepBuilderAPI_MakePolygon end(gp_Pnt(1, y, -h), gp_Pnt(2, y, -h), gp_Pnt(2, y, h), gp_Pnt(1, y, h), true);
+    builder.Add(bar, BRepBuilderAPI_MakeFace(end.Wire(), true).Face());
+  }
+  const auto edges = tracedSection(bar, tube(1.0), 1e-9);
+  ASSERT_TRUE(edges.has_value());
+  EXPECT_NEAR(totalLength(*edges), 2.0 + 4.0 * std::asin(h), 1e-7);
 }
 
 TEST(TracedSection, AWingThatMissesTheTubeMeetsItNowhere) {

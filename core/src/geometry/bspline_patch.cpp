@@ -74,14 +74,20 @@ bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, P
   return false;
 }
 
-bool meetCurve(const Patch& patch, const Patch& curves, double u, PatchPoint& point) {
-  double a = point.u, b = point.v, s = std::clamp(point.s, curves.v0, curves.v1);
-  const double aSpan = patch.u1 - patch.u0, bSpan = patch.v1 - patch.v0, sSpan = curves.v1 - curves.v0;
+bool meetCurve(const Patch& patch, const Patch& curves, double fixed, bool alongU, PatchPoint& point) {
+  const double sLow = alongU ? curves.u0 : curves.v0, sHigh = alongU ? curves.u1 : curves.v1;
+  double a = point.u, b = point.v, s = std::clamp(point.s, sLow, sHigh);
+  const double aSpan = patch.u1 - patch.u0, bSpan = patch.v1 - patch.v0, sSpan = sHigh - sLow;
+  const auto curveAt = [&](double at, gp_Pnt& value, gp_Vec& along) {
+    gp_Vec du, dv;
+    curves.surface->D1(alongU ? at : fixed, alongU ? fixed : at, value, du, dv);
+    along = alongU ? du : dv;
+  };
   for (int iteration = 0; iteration < 40; ++iteration) {
     gp_Pnt surfacePoint, curvePoint;
-    gp_Vec da, db, alongU, ds;
+    gp_Vec da, db, ds;
     patch.surface->D1(a, b, surfacePoint, da, db);
-    curves.surface->D1(u, s, curvePoint, alongU, ds);
+    curveAt(s, curvePoint, ds);
     const gp_Mat jacobian(da.XYZ(), db.XYZ(), ds.Reversed().XYZ());
     const double determinant = jacobian.Determinant();
     if (std::abs(determinant) < 1e-12 * da.Magnitude() * db.Magnitude() * ds.Magnitude()) return false;
@@ -90,7 +96,7 @@ bool meetCurve(const Patch& patch, const Patch& curves, double u, PatchPoint& po
     // Held within both bounds; the moves taken tell convergence, as for a line.
     const double nextA = std::clamp(a + step.X(), patch.u0, patch.u1);
     const double nextB = std::clamp(b + step.Y(), patch.v0, patch.v1);
-    const double nextS = std::clamp(s + step.Z(), curves.v0, curves.v1);
+    const double nextS = std::clamp(s + step.Z(), sLow, sHigh);
     const bool settled = std::abs(nextA - a) <= 1e-13 * aSpan && std::abs(nextB - b) <= 1e-13 * bSpan &&
                          std::abs(nextS - s) <= 1e-13 * sSpan;
     a = nextA;
@@ -98,7 +104,7 @@ bool meetCurve(const Patch& patch, const Patch& curves, double u, PatchPoint& po
     s = nextS;
     if (settled) {
       surfacePoint = patch.surface->Value(a, b);
-      curvePoint = curves.surface->Value(u, s);
+      curveAt(s, curvePoint, ds);
       if (surfacePoint.Distance(curvePoint) > 1e-9 * (1.0 + gp_Vec(curvePoint.XYZ()).Magnitude()))
         return false;  // held at a bound: the curve misses the patch
       point.u = a;

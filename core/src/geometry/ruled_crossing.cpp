@@ -86,7 +86,7 @@ bool meets(const Patch& patch, const Lines& lines, double t, PatchPoint& point) 
   return counts(lines, point.s);
 }
 bool meets(const Patch& patch, const PatchCurves& curves, double t, PatchPoint& point) {
-  return meetCurve(patch, curves.patch, curves.u(t), point);
+  return meetCurve(patch, curves.patch, curves.fixed(t), curves.alongU, point);
 }
 
 /// Whether the line or curve at t surely misses a box.
@@ -95,7 +95,8 @@ bool passesBy(const Bnd_Box& box, const Lines& lines, double t) {
   return box.IsOut(gp_Lin(lines.base(t), gp_Dir(lines.direction(t))));
 }
 bool passesBy(const Bnd_Box& box, const PatchCurves& curves, double t) {
-  const Handle(Geom_Curve) curve = curves.patch.surface->UIso(curves.u(t));
+  const Handle(Geom_Curve) curve =
+      curves.alongU ? curves.patch.surface->VIso(curves.fixed(t)) : curves.patch.surface->UIso(curves.fixed(t));
   const auto spline = Handle(Geom_BSplineCurve)::DownCast(curve);
   if (spline.IsNull()) return false;
   Bnd_Box poles;
@@ -108,7 +109,9 @@ bool passesBy(const Bnd_Box& box, const PatchCurves& curves, double t) {
 double startAlong(const RuledLines&, int) { return 0.0; }
 double startAlong(const RulingSegments&, int) { return 0.0; }
 double startAlong(const PatchCurves& curves, int guess) {
-  return curves.patch.v0 + (curves.patch.v1 - curves.patch.v0) * (0.5 + guess % 3) / 3.0;
+  const Patch& p = curves.patch;
+  const double low = curves.alongU ? p.u0 : p.v0, high = curves.alongU ? p.u1 : p.v1;
+  return low + (high - low) * (0.5 + guess % 3) / 3.0;
 }
 
 /// How far off a second crossing of a line may lie and be left out, as a multiple of the

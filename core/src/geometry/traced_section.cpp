@@ -123,12 +123,16 @@ std::optional<std::vector<TopoDS_Edge>> tracedSection(const TopoDS_Shape& ruled,
     BRepBndLib::Add(face, faceBox, false);
     if (faceBox.IsOut(skinBox)) continue;
     // A ruled face along its rulings, another along its v-curves (a guided wing's faces run
-    // along the span in v): each must meet the skin at most once.
+    // along the span in v): each must meet the skin at most once. Where those meet it nowhere
+    // although the face reaches it, its curves the other way may: a blunt trailing edge is ruled
+    // across its thickness, nearly along its crossing with a fuselage.
     std::optional<std::vector<CrossingPiece>> pieces;
     try {
       const std::optional<RulingSegments> rulings = rulingsOf(*patch);
       pieces = rulings ? ruledCrossing(patches, *rulings, tolerance)
                        : ruledCrossing(patches, PatchCurves{*patch}, tolerance);
+      const bool rulingsAlongV = !rulings || patch->surface->VDegree() == 1;  // as rulingsOf takes them
+      if (pieces && pieces->empty()) pieces = ruledCrossing(patches, PatchCurves{*patch, rulingsAlongV}, tolerance);
     } catch (const FoldedSkin&) {
       return std::nullopt;
     }

@@ -49,9 +49,10 @@ std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin);
 /// and v). False where the line meets the patch tangentially or not within its bounds.
 bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point);
 
-/// The point where the curve of `curves` at u = `u` (its v-curve) meets the patch, by Newton's
-/// method on (u, v, s) with S(u, v) = C(u, s), from the guess in `point` (its u, v and s). False
-/// where it meets the patch tangentially or not within their bounds.
-bool meetCurve(const Patch& patch, const Patch& curves, double u, PatchPoint& point);
+/// The point where a curve of `curves` meets the patch: its v-curve at u = `fixed`, or with
+/// `alongU` its u-curve at v = `fixed`, s being the curve's own parameter. By Newton's method on
+/// (u, v, s) with S(u, v) = C(s), from the guess in `point` (its u, v and s). False where it
+/// meets the patch tangentially or not within their bounds.
+bool meetCurve(const Patch& patch, const Patch& curves, double fixed, bool alongU, PatchPoint& point);
 
 }  // namespace airshape::geometry

@@ -41,12 +41,19 @@ struct RulingSegments {
 };
 
 /// A patch's v-curves: the one at t in [0, 1] is its curve at u = u0 + t (u1 − u0), all of it
-/// counting (a guided wing's face, whose curves along its span meet a fuselage once each).
+/// counting (a guided wing's face, whose curves along its span meet a fuselage once each); or
+/// with `alongU` its u-curves, at v = v0 + t (v1 − v0) (a blunt trailing edge, ruled across
+/// its thickness, whose curves along the span are the ones that cross a fuselage).
 struct PatchCurves {
   Patch patch;
+  bool alongU = false;
 
-  double u(double t) const { return patch.u0 + t * (patch.u1 - patch.u0); }
-  gp_Pnt base(double t) const { return patch.surface->Value(u(t), patch.v0); }
+  double fixed(double t) const {
+    return alongU ? patch.v0 + t * (patch.v1 - patch.v0) : patch.u0 + t * (patch.u1 - patch.u0);
+  }
+  gp_Pnt base(double t) const {
+    return alongU ? patch.surface->Value(patch.u0, fixed(t)) : patch.surface->Value(fixed(t), patch.v0);
+  }
 };
 
 /// A part of where the lines meet a skin, on one of its patches: the points (`t` the lines'
