@@ -65,25 +65,31 @@ std::optional<std::vector<Handle(Geom_BSplineCurve)>> splinesOf(const TopoDS_Wir
 /// The plane through every pole of the curves (their least-squares plane) when they all lie
 /// on it within kBrepTolerance; nothing otherwise.
 std::optional<gp_Pln> planeOfPoles(const std::vector<Handle(Geom_BSplineCurve)>& curves) {
-  std::vector<Eigen::Vector3d> poles;
+  std::vector<gp_Pnt> poles;
   for (const auto& curve : curves)
-    for (int i = 1; i <= curve->NbPoles(); ++i)
-      poles.emplace_back(curve->Pole(i).X(), curve->Pole(i).Y(), curve->Pole(i).Z());
-  if (poles.size() < 3) return std::nullopt;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& p : poles) centre += p;
-  centre /= static_cast<double>(poles.size());
-  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
-  for (const auto& p : poles) spread += (p - centre) * (p - centre).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(spread);
-  if (axes.info() != Eigen::Success || !(axes.eigenvalues()(1) > 0.0)) return std::nullopt;  // a line or a point
-  const Eigen::Vector3d normal = axes.eigenvectors().col(0);  // the direction of least spread
-  for (const auto& p : poles)
-    if (std::abs((p - centre).dot(normal)) > kBrepTolerance) return std::nullopt;
-  return gp_Pln(gp_Pnt(centre.x(), centre.y(), centre.z()), gp_Dir(normal.x(), normal.y(), normal.z()));
+    for (int i = 1; i <= curve->NbPoles(); ++i) poles.push_back(curve->Pole(i));
+  return planeThroughPoints(poles, kBrepTolerance);
 }
 
 }  // namespace
+
+std::optional<gp_Pln> planeThroughPoints(const std::vector<gp_Pnt>& points, double flatness) {
+  if (points.size() < 3) return std::nullopt;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const gp_Pnt& p : points) centre += Eigen::Vector3d(p.X(), p.Y(), p.Z());
+  centre /= static_cast<double>(points.size());
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const gp_Pnt& p : points) {
+    const Eigen::Vector3d offset = Eigen::Vector3d(p.X(), p.Y(), p.Z()) - centre;
+    spread += offset * offset.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(spread);
+  if (axes.info() != Eigen::Success || !(axes.eigenvalues()(1) > 0.0)) return std::nullopt;  // a line or a point
+  const Eigen::Vector3d normal = axes.eigenvectors().col(0);  // the direction of least spread
+  for (const gp_Pnt& p : points)
+    if (std::abs((Eigen::Vector3d(p.X(), p.Y(), p.Z()) - centre).dot(normal)) > flatness) return std::nullopt;
+  return gp_Pln(gp_Pnt(centre.x(), centre.y(), centre.z()), gp_Dir(normal.x(), normal.y(), normal.z()));
+}
 
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
   Handle(Geom_BSplineCurve) moved = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());

@@ -12,12 +12,12 @@
 #include <Bnd_Box.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Plane.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 
+#include "airshape/geometry/brep_building.h"
 #include "airshape/plugin/core_module.h"
 
 namespace airshape::geometry {
@@ -56,22 +56,13 @@ TopoDS_Face onPlane(const TopoDS_Face& face, gp_Pln plane) {
 }
 
 /// The plane of a B-spline surface whose poles all lie within `flatness` of one (then so does
-/// the surface, within their hull): through the poles' mean, normal to the diagonals of its
-/// corner poles. Empty when the surface is not so flat. (OCCT's GeomLib_IsPlanarSurface, tried
+/// the surface, within their hull); nothing otherwise. (OCCT's GeomLib_IsPlanarSurface, tried
 /// first, called a flat four-pole face of a unit-sized loft curved at this flatness.)
 std::optional<gp_Pln> planeOfPoles(const Geom_BSplineSurface& surface, double flatness) {
-  const TColgp_Array2OfPnt& poles = surface.Poles();
-  const int u0 = poles.LowerRow(), u1 = poles.UpperRow(), v0 = poles.LowerCol(), v1 = poles.UpperCol();
-  const gp_Vec normal = gp_Vec(poles(u0, v0), poles(u1, v1)).Crossed(gp_Vec(poles(u1, v0), poles(u0, v1)));
-  if (normal.Magnitude() <= flatness * flatness) return std::nullopt;
-  gp_XYZ mean(0, 0, 0);
-  for (int u = u0; u <= u1; ++u)
-    for (int v = v0; v <= v1; ++v) mean += poles(u, v).XYZ();
-  const gp_Pln plane(gp_Pnt(mean / poles.Size()), gp_Dir(normal));
-  for (int u = u0; u <= u1; ++u)
-    for (int v = v0; v <= v1; ++v)
-      if (plane.Distance(poles(u, v)) > flatness) return std::nullopt;
-  return plane;
+  std::vector<gp_Pnt> poles;
+  for (int u = 1; u <= surface.NbUPoles(); ++u)
+    for (int v = 1; v <= surface.NbVPoles(); ++v) poles.push_back(surface.Pole(u, v));
+  return planeThroughPoints(poles, flatness);
 }
 
 /// OCCT lofts even a flat ruled face as a B-spline surface; its Booleans intersect a plane with

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -10,6 +11,7 @@
 #include <TopoDS_Solid.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
+#include <gp_Pln.hxx>
 
 #include "airshape/error.h"
 
@@ -40,6 +42,11 @@ Handle(Geom_BSplineSurface)
 
 /// The ruled face joining the points of equal parameter of two curves over the same range.
 TopoDS_Face ruledFace(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second);
+
+/// The plane the points lie in within `flatness` (through their mean, normal to the direction
+/// they spread least in); nothing for fewer than three points, points on one line, or points
+/// off every plane.
+std::optional<gp_Pln> planeThroughPoints(const std::vector<gp_Pnt>& points, double flatness);
 
 /// The planar face bounded by curves that join end to end into a closed wire. Throws
 /// Error when they are not planar.
