@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -39,34 +40,46 @@ Bnd_Box poleBox(const Patch& patch) {
   return box;
 }
 
-bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point) {
+namespace {
+
+/// Where a curve C(s) (a line or a surface's curve) meets the patch, by Newton's method on
+/// (u, v, s) with S(u, v) = C(s), from (point.u, point.v, s); s is held within [sLow, sHigh].
+/// `curveAt(s, value, derivative)` evaluates the curve; `apartAllowed(curvePoint)` is how far
+/// apart the two points may end without the curve missing the patch. The point's u, v, s and
+/// point are set.
+template <class CurveAt, class ApartAllowed>
+bool meetOnPatch(const Patch& patch, double s, double sLow, double sHigh, const CurveAt& curveAt,
+                 const ApartAllowed& apartAllowed, PatchPoint& point) {
   double u = point.u, v = point.v;
-  double s = gp_Vec(base, patch.surface->Value(u, v)).Dot(direction) / direction.SquareMagnitude();
-  const double uSpan = patch.u1 - patch.u0, vSpan = patch.v1 - patch.v0;
+  const double uSpan = patch.u1 - patch.u0, vSpan = patch.v1 - patch.v0, sSpan = sHigh - sLow;
   for (int iteration = 0; iteration < 40; ++iteration) {
-    gp_Pnt surfacePoint;
-    gp_Vec du, dv;
+    gp_Pnt surfacePoint, curvePoint;
+    gp_Vec du, dv, ds;
     patch.surface->D1(u, v, surfacePoint, du, dv);
-    const gp_Mat jacobian(du.XYZ(), dv.XYZ(), direction.Reversed().XYZ());
+    curveAt(s, curvePoint, ds);
+    const gp_Mat jacobian(du.XYZ(), dv.XYZ(), ds.Reversed().XYZ());
     const double determinant = jacobian.Determinant();
-    if (std::abs(determinant) < 1e-12 * du.Magnitude() * dv.Magnitude() * direction.Magnitude()) return false;
-    gp_XYZ step = base.XYZ() + s * direction.XYZ() - surfacePoint.XYZ();
+    if (std::abs(determinant) < 1e-12 * du.Magnitude() * dv.Magnitude() * ds.Magnitude()) return false;
+    gp_XYZ step = curvePoint.XYZ() - surfacePoint.XYZ();
     step.Multiply(jacobian.Inverted());
-    // Held within the patch; the moves taken, not the steps asked for, tell convergence (at a
+    // Held within the bounds; the moves taken, not the steps asked for, tell convergence (at a
     // bound the step may keep asking to leave by a rounding error).
     const double nextU = std::clamp(u + step.X(), patch.u0, patch.u1);
     const double nextV = std::clamp(v + step.Y(), patch.v0, patch.v1);
-    const bool settled = std::abs(nextU - u) <= 1e-13 * uSpan && std::abs(nextV - v) <= 1e-13 * vSpan;
+    const double nextS = std::clamp(s + step.Z(), sLow, sHigh);
+    const bool settled = std::abs(nextU - u) <= 1e-13 * uSpan && std::abs(nextV - v) <= 1e-13 * vSpan &&
+                         std::abs(nextS - s) <= 1e-13 * sSpan;
     u = nextU;
     v = nextV;
-    s += step.Z();
+    s = nextS;
     if (settled) {
       surfacePoint = patch.surface->Value(u, v);
-      const gp_Pnt onLine = base.Translated(s * direction);
-      if (surfacePoint.Distance(onLine) > 1e-9 * (1.0 + gp_Vec(base.XYZ()).Magnitude() + direction.Magnitude()))
-        return false;  // held at a bound: the line misses the patch
+      curveAt(s, curvePoint, ds);
+      if (surfacePoint.Distance(curvePoint) > apartAllowed(curvePoint))
+        return false;  // held at a bound: it misses the patch
       point.u = u;
       point.v = v;
+      point.s = s;
       point.point = surfacePoint;
       return true;
     }
@@ -74,47 +87,30 @@ bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, P
   return false;
 }
 
+}  // namespace
+
+bool meetLine(const Patch& patch, const gp_Pnt& base, const gp_Vec& direction, PatchPoint& point) {
+  // A line runs on without bounds: its s is never held, and never keeps it from settling.
+  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  const double s = gp_Vec(base, patch.surface->Value(point.u, point.v)).Dot(direction) / direction.SquareMagnitude();
+  const auto lineAt = [&](double at, gp_Pnt& value, gp_Vec& along) {
+    value = base.Translated(at * direction);
+    along = direction;
+  };
+  const double apart = 1e-9 * (1.0 + gp_Vec(base.XYZ()).Magnitude() + direction.Magnitude());
+  return meetOnPatch(
+      patch, s, -kUnbounded, kUnbounded, lineAt, [apart](const gp_Pnt&) { return apart; }, point);
+}
+
 bool meetCurve(const Patch& patch, const Patch& curves, double fixed, bool alongU, PatchPoint& point) {
   const double sLow = alongU ? curves.u0 : curves.v0, sHigh = alongU ? curves.u1 : curves.v1;
-  double a = point.u, b = point.v, s = std::clamp(point.s, sLow, sHigh);
-  const double aSpan = patch.u1 - patch.u0, bSpan = patch.v1 - patch.v0, sSpan = sHigh - sLow;
   const auto curveAt = [&](double at, gp_Pnt& value, gp_Vec& along) {
-    gp_Vec du, dv;
-    curves.surface->D1(alongU ? at : fixed, alongU ? fixed : at, value, du, dv);
-    along = alongU ? du : dv;
+    gp_Vec alongCurveU, alongCurveV;
+    curves.surface->D1(alongU ? at : fixed, alongU ? fixed : at, value, alongCurveU, alongCurveV);
+    along = alongU ? alongCurveU : alongCurveV;
   };
-  for (int iteration = 0; iteration < 40; ++iteration) {
-    gp_Pnt surfacePoint, curvePoint;
-    gp_Vec da, db, ds;
-    patch.surface->D1(a, b, surfacePoint, da, db);
-    curveAt(s, curvePoint, ds);
-    const gp_Mat jacobian(da.XYZ(), db.XYZ(), ds.Reversed().XYZ());
-    const double determinant = jacobian.Determinant();
-    if (std::abs(determinant) < 1e-12 * da.Magnitude() * db.Magnitude() * ds.Magnitude()) return false;
-    gp_XYZ step = curvePoint.XYZ() - surfacePoint.XYZ();
-    step.Multiply(jacobian.Inverted());
-    // Held within both bounds; the moves taken tell convergence, as for a line.
-    const double nextA = std::clamp(a + step.X(), patch.u0, patch.u1);
-    const double nextB = std::clamp(b + step.Y(), patch.v0, patch.v1);
-    const double nextS = std::clamp(s + step.Z(), sLow, sHigh);
-    const bool settled = std::abs(nextA - a) <= 1e-13 * aSpan && std::abs(nextB - b) <= 1e-13 * bSpan &&
-                         std::abs(nextS - s) <= 1e-13 * sSpan;
-    a = nextA;
-    b = nextB;
-    s = nextS;
-    if (settled) {
-      surfacePoint = patch.surface->Value(a, b);
-      curveAt(s, curvePoint, ds);
-      if (surfacePoint.Distance(curvePoint) > 1e-9 * (1.0 + gp_Vec(curvePoint.XYZ()).Magnitude()))
-        return false;  // held at a bound: the curve misses the patch
-      point.u = a;
-      point.v = b;
-      point.s = s;
-      point.point = surfacePoint;
-      return true;
-    }
-  }
-  return false;
+  const auto apartAllowed = [](const gp_Pnt& onCurve) { return 1e-9 * (1.0 + gp_Vec(onCurve.XYZ()).Magnitude()); };
+  return meetOnPatch(patch, std::clamp(point.s, sLow, sHigh), sLow, sHigh, curveAt, apartAllowed, point);
 }
 
 std::optional<SkinPatches> skinPatches(const TopoDS_Shape& skin) {
