@@ -99,17 +99,25 @@ struct TiltedFrustum {
     const double apexHeight = std::abs(gp_Vec(top[0], apex).Dot(normal.Normalized()));
     return 4.0 * 2.0 / 3.0 - topArea * apexHeight / 3.0;
   }
+  /// The ruled loft from the bottom square to the top quadrilateral.
+  RuledSections lofted() const { return ruledThroughSections({closedPolygon(bottom), closedPolygon(top)}); }
 };
+
+/// A loft that closes into a valid solid whose faces all point outwards; its kinds of faces.
+FaceKinds validKindsOf(const RuledSections& loft) {
+  EXPECT_FALSE(loft.solid.IsNull());
+  if (loft.solid.IsNull()) return {};
+  EXPECT_TRUE(BRepCheck_Analyzer(loft.solid).IsValid());
+  EXPECT_TRUE(pointsOutwards(loft.solid));
+  return kindsOf(loft.solid);
+}
 
 TEST(RuledSections, FlatFacesBecomePlanes) {
   const TiltedFrustum frustum;
-  const RuledSections loft = ruledThroughSections({closedPolygon(frustum.bottom), closedPolygon(frustum.top)});
-  ASSERT_FALSE(loft.solid.IsNull());
-  const FaceKinds kinds = kindsOf(loft.solid);
+  const RuledSections loft = frustum.lofted();
+  const FaceKinds kinds = validKindsOf(loft);
   EXPECT_EQ(kinds.planes, 6);
   EXPECT_EQ(kinds.ruled, 0);
-  EXPECT_TRUE(BRepCheck_Analyzer(loft.solid).IsValid());
-  EXPECT_TRUE(pointsOutwards(loft.solid));
   EXPECT_NEAR(volumeOf(loft.solid), frustum.volume(), 1e-9);
   EXPECT_TRUE(holdsFace(loft.solid, loft.firstCap));
   EXPECT_TRUE(holdsFace(loft.solid, loft.lastCap));
@@ -122,13 +130,9 @@ TEST(RuledSections, TwistedFacesStayRuled) {
   gp_Pnt& moved = frustum.top[2];
   moved.SetX(moved.X() + 0.1);
   moved.SetZ(1.0 + 0.2 * moved.X());
-  const RuledSections loft = ruledThroughSections({closedPolygon(frustum.bottom), closedPolygon(frustum.top)});
-  ASSERT_FALSE(loft.solid.IsNull());
-  const FaceKinds kinds = kindsOf(loft.solid);
+  const FaceKinds kinds = validKindsOf(frustum.lofted());
   EXPECT_EQ(kinds.planes, 4);
   EXPECT_EQ(kinds.ruled, 2);
-  EXPECT_TRUE(BRepCheck_Analyzer(loft.solid).IsValid());
-  EXPECT_TRUE(pointsOutwards(loft.solid));
 }
 
 }  // namespace
