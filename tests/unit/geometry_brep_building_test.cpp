@@ -66,6 +66,16 @@ TEST(BrepBuilding, ARuledLoftIsAValidSolidWithSharedEdges) {
   EXPECT_EQ(inside.State(), TopAbs_IN);
 }
 
+TEST(BrepBuilding, ARuledLoftBetweenTwoProfilesInOnePlaneIsAFlatRingThatIsKept) {
+  // An ellipse and one of half its size around it in the plane z = 1: no volume, but a ring
+  // of three quarters of the outer ellipse's area, as a wing steps to a smaller airfoil.
+  const gp_Vec x(1, 0, 0), y(0, 1, 0);
+  const RuledLoft loft = ruledLoft({ellipse(gp_Pnt(0, 0, 1), x, y)}, {ellipse(gp_Pnt(0, 0, 1), 0.5 * x, 0.5 * y)});
+  const double outer = areaOf(loft.firstCap);
+  EXPECT_NEAR(volumeOf(loft.solid), 0.0, 1e-12);
+  EXPECT_NEAR(areaOf(loft.sides.front()), 0.75 * outer, 1e-9 * outer);
+}
+
 /// A lens of two arcs from (0, 0, 0) to (1, 0, 0) in the plane y = 0, turned by `angle`
 /// about the vertical line through (1, 0, 0): its upper arc (first to last) and lower arc
 /// (last to first, as a loop runs it, here given first to last).

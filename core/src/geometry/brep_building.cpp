@@ -184,7 +184,7 @@ Error noAreaError(const std::string& cpacsPath) {
   return Error(ErrorCode::InvalidModel, "a profile encloses no area (scaled to no thickness?)", {}, cpacsPath);
 }
 
-TopoDS_Solid outwards(TopoDS_Solid solid) {
+TopoDS_Solid outwards(TopoDS_Solid solid, FlatSolid flat) {
   const double volume = roughSignedVolumeOf(solid);
   // The solid's scale: the box of its vertices costs next to nothing (the whole solid's box
   // is taken where the vertices all coincide).
@@ -193,8 +193,10 @@ TopoDS_Solid outwards(TopoDS_Solid solid) {
     box.Add(BRep_Tool::Pnt(TopoDS::Vertex(vertices.Current())));
   if (box.IsVoid() || box.SquareExtent() == 0.0) BRepBndLib::Add(solid, box);
   const double size = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
-  if (std::abs(volume) <= kEmptyVolume * size * size * size)
+  if (std::abs(volume) <= kEmptyVolume * size * size * size) {
+    if (flat == FlatSolid::Kept) return solid;
     throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (a segment of zero length or thickness?)");
+  }
   if (volume < 0) solid.Reverse();
   return solid;
 }

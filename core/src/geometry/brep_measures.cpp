@@ -25,6 +25,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include "airshape/geometry/gauss_rule.h"
 
@@ -139,29 +140,33 @@ double integrateOverSpans(const RectangularPatch& patch, int uPoints, int vPoint
 /// How a volume is integrated: exactly, or roughly (enough to tell its sign).
 enum class Accuracy { Exact, Rough };
 
-/// P·(S_u × S_v): three times the volume integrand.
-double volumeIntegrand(const gp_Pnt& p, const gp_Vec& du, const gp_Vec& dv) {
-  return gp_Vec(p.XYZ()).Dot(du.Crossed(dv));
-}
+/// (P − O)·(S_u × S_v) about the point O: three times the volume integrand.
+struct VolumeIntegrand {
+  gp_XYZ origin;
+  double operator()(const gp_Pnt& p, const gp_Vec& du, const gp_Vec& dv) const {
+    return gp_Vec(p.XYZ() - origin).Dot(du.Crossed(dv));
+  }
+};
 
-/// (1/3)∫∫ P·(S_u × S_v) du dv over the patch: polynomial on every knot span, so a Gauss rule
-/// with ceil(3p/2) points in a direction of degree p integrates it exactly; two points per
-/// span and direction when rough.
-double patchVolume(const RectangularPatch& patch, Accuracy accuracy) {
+/// (1/3)∫∫ (P − O)·(S_u × S_v) du dv over the patch: polynomial on every knot span, so a Gauss
+/// rule with ceil(3p/2) points in a direction of degree p integrates it exactly; two points
+/// per span and direction when rough.
+double patchVolume(const RectangularPatch& patch, const gp_XYZ& origin, Accuracy accuracy) {
   const bool exact = accuracy == Accuracy::Exact;
   const int uPoints = exact ? (3 * patch.surface->UDegree() + 2) / 2 : 2;
   const int vPoints = exact ? (3 * patch.surface->VDegree() + 2) / 2 : 2;
-  return integrateOverSpans(patch, uPoints, vPoints, volumeIntegrand) / 3.0;
+  return integrateOverSpans(patch, uPoints, vPoints, VolumeIntegrand{origin}) / 3.0;
 }
 
 /// The same on a coarse grid (two Gauss points on each of at most kCoarseIntervals intervals
 /// per direction, whatever the knots): a few dozen points per face where a fuselage's skin
 /// has hundreds of spans.
-double coarsePatchVolume(const RectangularPatch& patch) {
+double coarsePatchVolume(const RectangularPatch& patch, const gp_XYZ& origin) {
   constexpr int kCoarseIntervals = 8;
   const Geom_BSplineSurface& s = *patch.surface;
   return integrateBetweenBreaks(patch, coarseBreaks(s.UKnots(), patch.u0, patch.u1, kCoarseIntervals),
-                                coarseBreaks(s.VKnots(), patch.v0, patch.v1, kCoarseIntervals), 2, 2, volumeIntegrand) /
+                                coarseBreaks(s.VKnots(), patch.v0, patch.v1, kCoarseIntervals), 2, 2,
+                                VolumeIntegrand{origin}) /
          3.0;
 }
 
@@ -230,30 +235,42 @@ double planeArea(const TopoDS_Face& face, const Geom_Plane& plane) {
   return std::abs(areaAlong(face, plane.Position().Direction()));
 }
 
-/// (1/3)∮ P·n dA over every face, with the sign of the solid's orientation: exact on
-/// rectangular patches and on planes (where P·n is constant). The terms of one formula only
-/// add up to the volume together, so a solid with any other face is integrated by OCCT as a
-/// whole.
-/// A plane face's share of the volume: P·n is constant on it.
-double planeFaceVolume(const TopoDS_Face& face, const Geom_Plane& plane) {
+/// A plane face's share of the volume about O: (P − O)·n is constant on it.
+double planeFaceVolume(const TopoDS_Face& face, const Geom_Plane& plane, const gp_XYZ& origin) {
   const gp_Ax3& frame = plane.Position();
-  const double offset = gp_Vec(frame.Location().XYZ()).Dot(gp_Vec(frame.Direction()));
+  const double offset = gp_Vec(frame.Location().XYZ() - origin).Dot(gp_Vec(frame.Direction()));
   const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
   return orientation * offset * planeArea(face, plane) / 3.0;
 }
 
-/// The faces' shares of a solid's volume with their senses, each by `patchShare` on a
-/// rectangular patch and exactly on a plane; none when a face is neither.
+/// The point volumes are integrated about: the mean of the shape's vertices, each counted as
+/// often as the shape's edges use it. Any point gives a closed shell's volume; one inside the
+/// shape keeps the faces' shares small (no cancellation far from the origin), and it is
+/// OCCT's choice, so that a solid whose shell is open (the reference's component segments)
+/// measures what OCCT's integration of it gives.
+gp_XYZ volumeOrigin(const TopoDS_Shape& solid) {
+  gp_XYZ sum(0.0, 0.0, 0.0);
+  int count = 0;
+  for (TopExp_Explorer vertex(solid, TopAbs_VERTEX); vertex.More(); vertex.Next(), ++count)
+    sum += BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())).XYZ();
+  return count > 0 ? sum / count : sum;
+}
+
+/// The faces' shares of a solid's volume about volumeOrigin, with their senses:
+/// (1/3)∫ (P − O)·n dA, each by `patchShare` on a rectangular patch and exactly on a plane;
+/// none when a face is neither (the terms of one formula only add up to the volume together,
+/// so such a solid is integrated by OCCT as a whole).
 template <typename PatchShare>
 std::optional<std::vector<double>> volumeShares(const TopoDS_Shape& solid, PatchShare patchShare) {
+  const gp_XYZ origin = volumeOrigin(solid);
   std::vector<double> shares;
   for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
     const TopoDS_Face& face = TopoDS::Face(faces.Current());
     const double sense = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
     if (const auto patch = rectangularPatch(face))
-      shares.push_back(sense * patchShare(*patch));
+      shares.push_back(sense * patchShare(*patch, origin));
     else if (const auto plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face)); !plane.IsNull())
-      shares.push_back(sense * planeFaceVolume(face, *plane));
+      shares.push_back(sense * planeFaceVolume(face, *plane, origin));
     else
       return std::nullopt;
   }
@@ -268,13 +285,14 @@ double sum(const std::vector<double>& values) {
 
 double signedVolume(const TopoDS_Shape& solid, Accuracy accuracy) {
   if (solid.IsNull()) return 0.0;
-  const auto shares =
-      volumeShares(solid, [accuracy](const RectangularPatch& patch) { return patchVolume(patch, accuracy); });
+  const auto shares = volumeShares(solid, [accuracy](const RectangularPatch& patch, const gp_XYZ& origin) {
+    return patchVolume(patch, origin, accuracy);
+  });
   return shares ? sum(*shares) : occtVolume(solid, accuracy);
 }
 
 /// The volume from the coarse grid, where it can be trusted: where the faces' shares do not
-/// nearly cancel (as they do on a solid of next to no volume, or far from the origin), so
+/// nearly cancel (as they do on a solid of next to no volume), so
 /// that the coarse rule's error, a small part of each share, cannot turn the sign.
 std::optional<double> coarseSignedVolume(const TopoDS_Shape& solid) {
   constexpr double kTrustedShare = 0.05;

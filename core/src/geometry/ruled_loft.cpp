@@ -172,6 +172,22 @@ TopoDS_Face ruledSideFace(const Handle(Geom_BSplineCurve) & first, const Handle(
   return face;
 }
 
+/// Whether each curve of one profile runs through the same points as its partner on the
+/// other (checked at its ends and at a few points between them).
+bool profilesCoincide(const std::vector<Handle(Geom_BSplineCurve)>& first,
+                      const std::vector<Handle(Geom_BSplineCurve)>& last) {
+  constexpr int kSamples = 8;
+  for (std::size_t k = 0; k < first.size(); ++k)
+    for (int i = 0; i <= kSamples; ++i) {
+      const double t = static_cast<double>(i) / kSamples;
+      const auto at = [t](const Geom_BSplineCurve& curve) {
+        return curve.Value(curve.FirstParameter() + t * (curve.LastParameter() - curve.FirstParameter()));
+      };
+      if (at(*first[k]).Distance(at(*last[k])) > kBrepTolerance) return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
@@ -230,7 +246,12 @@ RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
   TopoDS_Solid solid;
   builder.MakeSolid(solid);
   builder.Add(solid, shell);
-  loft.solid = outwards(solid);
+  // Two different profiles in one plane bound a flat ring of no volume, which the reference
+  // builds too (CPACS_30_D250_10.xml's wing steps from its tip airfoil to a smaller one
+  // there); only coinciding profiles, a segment of no length, are refused.
+  if (profilesCoincide(first, last))
+    throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (the two profiles coincide)");
+  loft.solid = outwards(solid, FlatSolid::Kept);
   return loft;
 }
 

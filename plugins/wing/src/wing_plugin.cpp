@@ -89,7 +89,7 @@ class WingPlugin final : public plugin::BasicPlugin {
       const schema::WingType& wing = wingHolding(c, uid);
       const ComponentSegment segment(*WingGeometry::of(c, wing), componentSegmentNamed(wing, uid));
       const auto [first, last] = std::minmax_element(segment.segments().begin(), segment.segments().end());
-      return WingShape::of(c, wing)->solidOf(*first, *last);
+      return WingShape::of(c, wing)->componentSegmentShape(*first, *last);
     });
   }
 

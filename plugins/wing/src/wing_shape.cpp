@@ -1,6 +1,10 @@
 #include "wing_shape.h"
 
 #include <BRepCheck_Analyzer.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -139,6 +143,20 @@ NamedShape WingShape::solid() const {
   return solidOf(0, segments_.size() - 1);
 }
 
+namespace {
+
+/// An unguided segment's own solid (the ruled loft's, whose faces share their edges already)
+/// with its faces named: no sewing, and a flat segment (two profiles in one plane) is kept as
+/// the loft keeps it.
+NamedShape ownSolidOf(const SegmentShape& segment, const std::vector<std::pair<std::string, TopoDS_Face>>& named) {
+  NamedShape own{segment.solid, {}};
+  for (const auto& face : named)
+    if (!face.second.IsNull()) own.faces.push_back(face);
+  return own;
+}
+
+}  // namespace
+
 NamedShape WingShape::solidOf(std::size_t first, std::size_t last) const {
   const auto capName = [&](std::size_t segment, bool atWingEnd, const char* wingEnd, const char* segmentEnd) {
     return atWingEnd ? wingUid_ + wingEnd : segmentDefinitions_[segment].uid + segmentEnd;
@@ -154,6 +172,7 @@ NamedShape WingShape::solidOf(std::size_t first, std::size_t last) const {
     named.emplace_back(uid + "/lower", segment.lower);
     named.emplace_back(uid + "/trailingEdge", segment.trailingEdge);
   }
+  if (first == last && !segments_[first].sewnOnRequest) return ownSolidOf(segments_[first], named);
   NamedShape solid = sewnNamedSolid(named);
   // A root or tip cap on a profile flattened to a line is a valid face on its own, but a
   // guided skin only approximates that profile, and sewn to it the cap may cross itself or
@@ -163,6 +182,28 @@ NamedShape WingShape::solidOf(std::size_t first, std::size_t last) const {
     if (!cap.IsNull() && geometry::enclosesNoArea(cap) && !BRepCheck_Analyzer(solid.shape).IsValid())
       throw geometry::noAreaError(end->xpath);
   return solid;
+}
+
+NamedShape WingShape::componentSegmentShape(std::size_t first, std::size_t last) const {
+  NamedShape whole = solidOf(first, last);
+  NamedShape open;
+  TopoDS_Shell shell;
+  BRep_Builder builder;
+  builder.MakeShell(shell);
+  for (const auto& [name, face] : whole.faces) {
+    if (name.size() >= 13 && name.compare(name.size() - 13, 13, "/trailingEdge") == 0) continue;
+    open.faces.emplace_back(name, face);
+  }
+  for (TopExp_Explorer face(whole.shape, TopAbs_FACE); face.More(); face.Next()) {
+    bool kept = false;
+    for (const auto& named : open.faces) kept = kept || named.second.IsSame(face.Current());
+    if (kept) builder.Add(shell, face.Current());
+  }
+  TopoDS_Solid solid;
+  builder.MakeSolid(solid);
+  builder.Add(solid, shell);
+  open.shape = solid;
+  return open;
 }
 
 }  // namespace airshape::wing

@@ -54,6 +54,9 @@ class WingShape {
   /// by the caps at their ends, named as in solid(); caps inside the wing are named
   /// "<segment uID>/inner" and "/outer". A wing segment's or component segment's shape.
   NamedShape solidOf(std::size_t first, std::size_t last) const;
+  /// A component segment's shape over the segments first..last: solidOf without the blunt
+  /// trailing-edge strips, the skins and end caps as one open shell held by a solid.
+  NamedShape componentSegmentShape(std::size_t first, std::size_t last) const;
 
  private:
   std::string wingUid_, wingPath_;

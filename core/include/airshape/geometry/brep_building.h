@@ -78,8 +78,13 @@ bool enclosesNoArea(const TopoDS_Face& planarFace);
 /// `cpacsPath` where given.
 Error noAreaError(const std::string& cpacsPath = {});
 
+/// What `outwards` does with a solid that encloses no volume, whose inside and outside cannot
+/// be told apart: refuse it (a segment of zero length or thickness), or keep it as built
+/// (a segment between two different profiles in one plane, a flat ring).
+enum class FlatSolid { Refused, Kept };
+
 /// The solid turned so that its faces point outwards (Boolean operations then see its
-/// inside); throws Error when it encloses no volume (a segment of zero length or thickness).
-TopoDS_Solid outwards(TopoDS_Solid solid);
+/// inside); throws Error when it encloses no volume, unless `flat` keeps it.
+TopoDS_Solid outwards(TopoDS_Solid solid, FlatSolid flat = FlatSolid::Refused);
 
 }  // namespace airshape::geometry
