@@ -125,6 +125,15 @@ std::size_t withoutBuilder(const Configuration& configuration) {
   return count;
 }
 
+/// Whether a component named with --components is among those left out (the structure,
+/// devices or segments it brings with it may fail on their own: they are said, not fatal).
+bool namedComponentFailed(const exporting::ExportScene& scene, const ExportCommandOptions& options) {
+  for (const std::string& leftOut : scene.leftOut)
+    for (const std::string& uid : options.exportOptions.components)
+      if (leftOut.compare(0, uid.size() + 1, uid + ":") == 0) return true;
+  return false;
+}
+
 /// Why nothing is written, if nothing is: no plugin builds any component (or, for the
 /// structural model, no component holds structure), every component failed, or a component
 /// named with --components failed (an export of what was asked for).
@@ -137,8 +146,7 @@ std::optional<std::string> nothingToWrite(const exporting::ExportScene& scene, c
     return "nothing to build: no loaded plugin builds any component of " + options.input +
            (options.exportOptions.components.empty() ? "" : " named with --components");
   if (scene.components.empty()) return "no component could be built";
-  if (!scene.leftOut.empty() && !options.exportOptions.components.empty())
-    return "a component named with --components could not be built";
+  if (namedComponentFailed(scene, options)) return "a component named with --components could not be built";
   return std::nullopt;
 }
 

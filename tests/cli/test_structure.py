@@ -290,6 +290,21 @@ def test_rib_errors_name_the_cpacs_path(tmp_path):
     assert "no spar segment with uID 'Missing'" in answer["error"]
 
 
+def test_a_broken_rib_set_leaves_the_rest_of_a_named_structural_model(tmp_path):
+    # The component segment is named; one of its rib sets refers to a spar that is not
+    # there. It is left out and said, the rest of the model is written, status 1.
+    positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"),
+                      ribs("Ribs", 0.1, 0.9, 3, rib_end="Missing"))
+    model = tmp_path / "model.step"
+    result = airshape("export", str(path), "--structure", "--components", "RectCS", "-o", str(model))
+    assert result.returncode == 1, result.stderr
+    assert "left out Ribs:" in result.stderr and "no file written" not in result.stderr
+    assert model.exists()
+    named = airshape("export", str(path), "--components", "Ribs", "-o", str(tmp_path / "ribs.step"))
+    assert named.returncode == 1 and "no file written" in named.stderr  # the one named failed
+
+
 def cells(*cells_xml):
     return f"<upperShell><skin/><cells>{''.join(cells_xml)}</cells></upperShell>"
 
