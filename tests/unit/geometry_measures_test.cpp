@@ -6,12 +6,19 @@
 
 #include <gtest/gtest.h>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
@@ -20,6 +27,7 @@
 
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/curve_interpolation.h"
+#include "airshape/geometry/gauss_rule.h"
 #include "airshape/geometry/loft_piece.h"
 #include "airshape/geometry/skinning.h"
 
@@ -99,6 +107,79 @@ TEST(Measures, AnOpenShellsVolumeIsTakenAboutTheMeanOfItsVertexUses) {
   GProp_GProps occt;
   BRepGProp::VolumeProperties(far, occt, 1e-9);
   EXPECT_NEAR(occt.Mass(), 0.8, 1e-9);
+}
+
+/// A nose cone's meridian: a cubic B-spline of many spans from the axis (x from 0 to 1) back to
+/// it, z its radius 0.4 sin(πx) at 120 points.
+Handle(Geom_BSplineCurve) noseMeridian() {
+  std::vector<gp_Pnt> points;
+  for (int i = 0; i <= 120; ++i) {
+    const double x = i / 120.0;
+    points.emplace_back(x, 0.0, 0.4 * std::sin(M_PI * x));
+  }
+  return interpolateCurve(points, chordParameters(points, 0.5), 3);
+}
+
+/// ∫ f(t) dt over the curve's range by a 20-point Gauss rule on each of its knot spans.
+template <typename F>
+double integralOverSpans(const Geom_BSplineCurve& curve, F f) {
+  const GaussRule rule(20);
+  double sum = 0.0;
+  for (int i = 1; i < curve.NbKnots(); ++i) {
+    const double mid = 0.5 * (curve.Knot(i) + curve.Knot(i + 1)), half = 0.5 * (curve.Knot(i + 1) - curve.Knot(i));
+    for (int k = 1; k <= rule.points.Length(); ++k) sum += rule.weights(k) * half * f(mid + half * rule.points(k));
+  }
+  return sum;
+}
+
+TEST(Measures, ASolidOfRevolutionIsMeasuredExactly) {
+  // The nose cone turned about x: the volume π∫ z² x' dt (a polynomial on each span) and the
+  // area 2π∫ z |C'| dt, integrated here independently. OCCT's adaptive integration, which
+  // measured such faces before, is off by 2e-10 of the volume and 5e-9 of the area here.
+  const Handle(Geom_BSplineCurve) meridian = noseMeridian();
+  const TopoDS_Shape turned = BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeEdge(meridian).Edge(), gp::OX()).Shape();
+  BRep_Builder builder;
+  TopoDS_Shell shell;
+  builder.MakeShell(shell);
+  for (TopExp_Explorer face(turned, TopAbs_FACE); face.More(); face.Next()) builder.Add(shell, face.Current());
+  const TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(shell).Solid();
+  const double volume = M_PI * integralOverSpans(*meridian, [&](double t) {
+                          gp_Pnt p;
+                          gp_Vec d;
+                          meridian->D1(t, p, d);
+                          return p.Z() * p.Z() * d.X();
+                        });
+  const double area = 2.0 * M_PI * integralOverSpans(*meridian, [&](double t) {
+                        gp_Pnt p;
+                        gp_Vec d;
+                        meridian->D1(t, p, d);
+                        return p.Z() * d.Magnitude();
+                      });
+  EXPECT_NEAR(volumeOf(solid), volume, 1e-12 * volume);
+  EXPECT_NEAR(areaOf(solid), area, 1e-12 * area);
+}
+
+TEST(Measures, AnAreaIsRefinedWhereTheSurfacesDerivativesLineUp) {
+  // A flat ruled patch between the parabola (2t − 1, (2t − 1)²) and its copy moved by L along
+  // x: |S_t × S_v| = 4L|2t − 1| has a kink in the middle of its one span, which a fixed Gauss
+  // rule misses by 1e-3 of the area 2L.
+  constexpr double kShift = 3.0;
+  TColgp_Array2OfPnt poles(1, 3, 1, 2);
+  const gp_Pnt parabola[3] = {gp_Pnt(-1, 1, 0), gp_Pnt(0, -1, 0), gp_Pnt(1, 1, 0)};
+  for (int i = 0; i < 3; ++i) {
+    poles(i + 1, 1) = parabola[i];
+    poles(i + 1, 2) = parabola[i].Translated(gp_Vec(kShift, 0, 0));
+  }
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0.0;
+  knots(2) = 1.0;
+  TColStd_Array1OfInteger uMultiplicities(1, 2), vMultiplicities(1, 2);
+  uMultiplicities.Init(3);
+  vMultiplicities.Init(2);
+  const Handle(Geom_BSplineSurface) surface =
+      new Geom_BSplineSurface(poles, knots, knots, uMultiplicities, vMultiplicities, 2, 1);
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
+  EXPECT_NEAR(areaOf(face), 2.0 * kShift, 1e-12);
 }
 
 TEST(Measures, AWiresEnclosedAreaIsSignedByItsTurnAboutTheNormal) {

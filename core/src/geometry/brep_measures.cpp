@@ -28,6 +28,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "airshape/geometry/gauss_rule.h"
+#include "rectangular_patch.h"
 
 namespace airshape::geometry {
 
@@ -35,70 +36,12 @@ namespace {
 
 constexpr double kIntegrationAccuracy = 1e-9;
 
-/// The surface of a face bounded by four iso-lines of a polynomial B-spline surface, with
-/// its parameter rectangle; nothing for any other face.
-struct RectangularPatch {
-  Handle(Geom_BSplineSurface) surface;
-  double u0, u1, v0, v1;
-};
-
-/// Whether a parameter-space curve runs along u or along v: a line parallel to an axis, or
-/// (as sewing leaves them) a B-spline whose poles all share one coordinate.
-bool isIsoLine(Handle(Geom2d_Curve) pcurve) {
-  while (const auto trimmed = Handle(Geom2d_TrimmedCurve)::DownCast(pcurve)) pcurve = trimmed->BasisCurve();
-  if (const auto line = Handle(Geom2d_Line)::DownCast(pcurve)) {
-    const gp_Dir2d direction = line->Direction();
-    return std::abs(direction.X()) <= 1e-12 || std::abs(direction.Y()) <= 1e-12;
-  }
-  const auto spline = Handle(Geom2d_BSplineCurve)::DownCast(pcurve);
-  if (spline.IsNull()) return false;
-  bool sameU = true, sameV = true;
-  const gp_Pnt2d start = spline->Pole(1);
-  for (int i = 2; i <= spline->NbPoles(); ++i) {
-    sameU = sameU && std::abs(spline->Pole(i).X() - start.X()) <= 1e-12;
-    sameV = sameV && std::abs(spline->Pole(i).Y() - start.Y()) <= 1e-12;
-  }
-  return sameU || sameV;
-}
-
-std::optional<RectangularPatch> rectangularPatch(const TopoDS_Face& face) {
-  Handle(Geom_BSplineSurface) surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
-  if (surface.IsNull() || surface->IsURational() || surface->IsVRational()) return std::nullopt;
-  // Iso-lines are straight in the parameter plane, so the area they enclose there is the
-  // polygon of their ends; only when it fills the bounding rectangle is the face that
-  // rectangle (a notched face, as a cut leaves it, is bounded by iso-lines too).
-  double enclosed = 0.0;
-  for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
-    const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
-    double first, last;
-    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-    if (!isIsoLine(pcurve)) return std::nullopt;
-    gp_Pnt2d from = pcurve->Value(first), to = pcurve->Value(last);
-    if (edge.Orientation() == TopAbs_REVERSED) std::swap(from, to);
-    enclosed += 0.5 * (from.X() * to.Y() - to.X() * from.Y());
-  }
-  RectangularPatch patch{surface, 0, 0, 0, 0};
-  BRepTools::UVBounds(face, patch.u0, patch.u1, patch.v0, patch.v1);
-  const double rectangle = (patch.u1 - patch.u0) * (patch.v1 - patch.v0);
-  if (std::abs(std::abs(enclosed) - rectangle) > 1e-9 * rectangle) return std::nullopt;
-  return patch;
-}
-
-/// The distinct knots of one direction inside [from, to], with the ends.
-std::vector<double> breaks(const TColStd_Array1OfReal& knots, double from, double to) {
-  std::vector<double> result = {from};
-  for (int i = knots.Lower(); i <= knots.Upper(); ++i)
-    if (knots(i) > from + 1e-12 && knots(i) < to - 1e-12) result.push_back(knots(i));
-  result.push_back(to);
-  return result;
-}
-
-/// At most `count` equal intervals of [from, to], fewer where the surface has fewer knot
-/// spans there (then its spans).
-std::vector<double> coarseBreaks(const TColStd_Array1OfReal& knots, double from, double to, int count) {
-  std::vector<double> spans = breaks(knots, from, to);
+/// At most `count` equal intervals of [from, to], fewer where the patch has fewer spans there
+/// (then its spans).
+std::vector<double> coarseBreaks(const std::vector<double>& spans, int count) {
   if (static_cast<int>(spans.size()) - 1 <= count) return spans;
   std::vector<double> result;
+  const double from = spans.front(), to = spans.back();
   for (int i = 0; i <= count; ++i) result.push_back(from + (to - from) * i / count);
   return result;
 }
@@ -108,7 +51,7 @@ std::vector<double> coarseBreaks(const TColStd_Array1OfReal& knots, double from,
 template <typename Integrand>
 double integrateBetweenBreaks(const RectangularPatch& patch, const std::vector<double>& uBreaks,
                               const std::vector<double>& vBreaks, int uPoints, int vPoints, Integrand integrand) {
-  const GeomAdaptor_Surface evaluator(patch.surface);  // caches each span's polynomial form
+  const GeomAdaptor_Surface evaluator(patch.surface);  // caches a B-spline's span polynomials
   const GaussRule uRule(uPoints), vRule(vPoints);
   double sum = 0.0;
   for (std::size_t i = 0; i + 1 < uBreaks.size(); ++i) {
@@ -132,9 +75,7 @@ double integrateBetweenBreaks(const RectangularPatch& patch, const std::vector<d
 /// The same span by span: a polynomial on each span is integrated exactly by enough points.
 template <typename Integrand>
 double integrateOverSpans(const RectangularPatch& patch, int uPoints, int vPoints, Integrand integrand) {
-  const Geom_BSplineSurface& s = *patch.surface;
-  return integrateBetweenBreaks(patch, breaks(s.UKnots(), patch.u0, patch.u1), breaks(s.VKnots(), patch.v0, patch.v1),
-                                uPoints, vPoints, integrand);
+  return integrateBetweenBreaks(patch, patch.uBreaks, patch.vBreaks, uPoints, vPoints, integrand);
 }
 
 /// How a volume is integrated: exactly, or roughly (enough to tell its sign).
@@ -148,13 +89,13 @@ struct VolumeIntegrand {
   }
 };
 
-/// (1/3)∫∫ (P − O)·(S_u × S_v) du dv over the patch: polynomial on every knot span, so a Gauss
-/// rule with ceil(3p/2) points in a direction of degree p integrates it exactly; two points
-/// per span and direction when rough.
+/// (1/3)∫∫ (P − O)·(S_u × S_v) du dv over the patch: on a B-spline a polynomial on every knot
+/// span, so a Gauss rule with ceil(3p/2) points in a direction of degree p integrates it
+/// exactly (on a turned surface, to rounding); two points per span and direction when rough.
 double patchVolume(const RectangularPatch& patch, const gp_XYZ& origin, Accuracy accuracy) {
   const bool exact = accuracy == Accuracy::Exact;
-  const int uPoints = exact ? (3 * patch.surface->UDegree() + 2) / 2 : 2;
-  const int vPoints = exact ? (3 * patch.surface->VDegree() + 2) / 2 : 2;
+  const int uPoints = exact ? (3 * patch.uDegree + 2) / 2 : 2;
+  const int vPoints = exact ? (3 * patch.vDegree + 2) / 2 : 2;
   return integrateOverSpans(patch, uPoints, vPoints, VolumeIntegrand{origin}) / 3.0;
 }
 
@@ -163,20 +104,68 @@ double patchVolume(const RectangularPatch& patch, const gp_XYZ& origin, Accuracy
 /// has hundreds of spans.
 double coarsePatchVolume(const RectangularPatch& patch, const gp_XYZ& origin) {
   constexpr int kCoarseIntervals = 8;
-  const Geom_BSplineSurface& s = *patch.surface;
-  return integrateBetweenBreaks(patch, coarseBreaks(s.UKnots(), patch.u0, patch.u1, kCoarseIntervals),
-                                coarseBreaks(s.VKnots(), patch.v0, patch.v1, kCoarseIntervals), 2, 2,
-                                VolumeIntegrand{origin}) /
+  return integrateBetweenBreaks(patch, coarseBreaks(patch.uBreaks, kCoarseIntervals),
+                                coarseBreaks(patch.vBreaks, kCoarseIntervals), 2, 2, VolumeIntegrand{origin}) /
          3.0;
 }
 
-/// ∫∫ |S_u × S_v| du dv over the patch. Not a polynomial, but smooth on every knot span:
-/// a Gauss rule of 2p + 4 points per direction leaves errors far below 1e-9 on lofts.
+/// ∫∫ |S_u × S_v| over one cell [u0, u1] × [v0, v1] by the product rule of `uRule` and `vRule`.
+double cellArea(const GeomAdaptor_Surface& evaluator, const GaussRule& uRule, const GaussRule& vRule, double u0,
+                double u1, double v0, double v1) {
+  const double uMid = 0.5 * (u0 + u1), uHalf = 0.5 * (u1 - u0), vMid = 0.5 * (v0 + v1), vHalf = 0.5 * (v1 - v0);
+  double sum = 0.0;
+  for (int a = 1; a <= uRule.points.Length(); ++a)
+    for (int b = 1; b <= vRule.points.Length(); ++b) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      evaluator.D1(uMid + uHalf * uRule.points(a), vMid + vHalf * vRule.points(b), p, du, dv);
+      sum += uRule.weights(a) * vRule.weights(b) * du.Crossed(dv).Magnitude();
+    }
+  return sum * uHalf * vHalf;
+}
+
+/// The Gauss rules an area is taken with: 2p + 4 points per direction of degree p, and two
+/// fewer to check it.
+struct AreaRules {
+  GaussRule u, v, uCheck, vCheck;
+  explicit AreaRules(const RectangularPatch& patch)
+      : u(2 * patch.uDegree + 4),
+        v(2 * patch.vDegree + 4),
+        uCheck(2 * patch.uDegree + 2),
+        vCheck(2 * patch.vDegree + 2) {}
+};
+
+/// A cell's area, refined where the two rules disagree: |S_u × S_v| is smooth on a knot span
+/// unless S_u and S_v nearly line up somewhere in it (a strongly cambered airfoil ruled over a
+/// long span), where the fixed rule is off by 6e-8 of the area and OCCT's adaptive one too.
+/// Such a cell is halved both ways, at most kDeepest times.
+double refinedCellArea(const GeomAdaptor_Surface& evaluator, const AreaRules& rules, double u0, double u1, double v0,
+                       double v1, int depth = 0) {
+  constexpr int kDeepest = 6;
+  constexpr double kAgreement = 1e-13;
+  const double area = cellArea(evaluator, rules.u, rules.v, u0, u1, v0, v1);
+  if (depth == kDeepest) return area;
+  const double check = cellArea(evaluator, rules.uCheck, rules.vCheck, u0, u1, v0, v1);
+  if (std::abs(area - check) <= kAgreement * std::abs(area)) return area;
+  const double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
+  return refinedCellArea(evaluator, rules, u0, u, v0, v, depth + 1) +
+         refinedCellArea(evaluator, rules, u, u1, v0, v, depth + 1) +
+         refinedCellArea(evaluator, rules, u0, u, v, v1, depth + 1) +
+         refinedCellArea(evaluator, rules, u, u1, v, v1, depth + 1);
+}
+
+/// ∫∫ |S_u × S_v| du dv over the patch, span by span. Not a polynomial, but smooth on almost
+/// every knot span: there a Gauss rule of 2p + 4 points per direction leaves errors far below
+/// 1e-9, and the others are refined.
 double patchArea(const RectangularPatch& patch) {
-  const int uPoints = 2 * patch.surface->UDegree() + 4, vPoints = 2 * patch.surface->VDegree() + 4;
-  return integrateOverSpans(patch, uPoints, vPoints, [](const gp_Pnt&, const gp_Vec& du, const gp_Vec& dv) {
-    return du.Crossed(dv).Magnitude();
-  });
+  const GeomAdaptor_Surface evaluator(patch.surface);
+  const AreaRules rules(patch);
+  double area = 0.0;
+  for (std::size_t i = 0; i + 1 < patch.uBreaks.size(); ++i)
+    for (std::size_t j = 0; j + 1 < patch.vBreaks.size(); ++j)
+      area += refinedCellArea(evaluator, rules, patch.uBreaks[i], patch.uBreaks[i + 1], patch.vBreaks[j],
+                              patch.vBreaks[j + 1]);
+  return area;
 }
 
 /// OCCT's volume of a solid: adaptive to 1e-9 when exact, its fixed Gauss rule when rough.
@@ -201,7 +190,7 @@ double edgeAreaShare(const TopoDS_Edge& edge, const gp_Dir& normal, const gp_Pnt
   const Handle(Geom_BSplineCurve) spline = GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last));
   const GaussRule rule(spline->IsRational() ? 24 : spline->Degree() + 1);
   const GeomAdaptor_Curve evaluator(spline);
-  const std::vector<double> spans = breaks(spline->Knots(), spline->FirstParameter(), spline->LastParameter());
+  const std::vector<double> spans = knotBreaks(spline->Knots(), spline->FirstParameter(), spline->LastParameter());
   const gp_Vec n(normal);
   double sum = 0.0;
   for (std::size_t i = 0; i + 1 < spans.size(); ++i) {
