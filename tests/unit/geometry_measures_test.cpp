@@ -13,6 +13,8 @@
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -157,6 +159,17 @@ TEST(Measures, ASolidOfRevolutionIsMeasuredExactly) {
                       });
   EXPECT_NEAR(volumeOf(solid), volume, 1e-12 * volume);
   EXPECT_NEAR(areaOf(solid), area, 1e-12 * area);
+}
+
+TEST(Measures, SpheresAndToriAreMeasuredInClosedForm) {
+  const TopoDS_Shape sphere = BRepPrimAPI_MakeSphere(gp_Pnt(40, -3, 7), 2.0).Shape();
+  EXPECT_NEAR(volumeOf(sphere), 4.0 / 3.0 * M_PI * 8.0, 1e-12 * 33.5);
+  EXPECT_NEAR(areaOf(sphere), 4.0 * M_PI * 4.0, 1e-12 * 50.3);
+  // A quarter turn of a torus, its two cut faces planes: (π/2)·R·π r² and (π/2)·R·2π r.
+  const TopoDS_Shape torus =
+      BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(1, 2, 3), gp_Dir(0, 0, 1)), 3.0, 0.5, M_PI / 2).Shape();
+  EXPECT_NEAR(volumeOf(torus), M_PI / 2 * 3.0 * M_PI * 0.25, 1e-12 * 3.7);
+  EXPECT_NEAR(areaOf(torus), M_PI / 2 * 3.0 * 2 * M_PI * 0.5 + 2 * M_PI * 0.25, 1e-12 * 16.4);
 }
 
 TEST(Measures, AnAreaIsRefinedWhereTheSurfacesDerivativesLineUp) {

@@ -13,7 +13,9 @@
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -105,12 +107,21 @@ bool setSpans(RectangularPatch& patch) {
   }
   const bool turned = !Handle(Geom_SurfaceOfRevolution)::DownCast(surface).IsNull() ||
                       !Handle(Geom_CylindricalSurface)::DownCast(surface).IsNull() ||
-                      !Handle(Geom_ConicalSurface)::DownCast(surface).IsNull();
+                      !Handle(Geom_ConicalSurface)::DownCast(surface).IsNull() ||
+                      !Handle(Geom_SphericalSurface)::DownCast(surface).IsNull() ||
+                      !Handle(Geom_ToroidalSurface)::DownCast(surface).IsNull();
   if (!turned) return false;
   patch.uBreaks = turnBreaks(patch.u0, patch.u1);
   patch.uDegree = kTurnDegree;
   if (const auto revolution = Handle(Geom_SurfaceOfRevolution)::DownCast(surface))
     return curveSpans(revolution->BasisCurve(), patch.v0, patch.v1, patch.vBreaks, patch.vDegree);
+  if (!Handle(Geom_SphericalSurface)::DownCast(surface).IsNull() ||
+      !Handle(Geom_ToroidalSurface)::DownCast(surface).IsNull()) {
+    // Turned about a second axis too: v is an angle as well.
+    patch.vBreaks = turnBreaks(patch.v0, patch.v1);
+    patch.vDegree = kTurnDegree;
+    return true;
+  }
   // A cylinder's or a cone's lines: the integrands are polynomials of degree 2 along them.
   patch.vBreaks = {patch.v0, patch.v1};
   patch.vDegree = 2;

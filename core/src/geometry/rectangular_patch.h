@@ -16,9 +16,10 @@ namespace airshape::geometry {
 ///
 /// - a polynomial B-spline surface: its knots and degrees;
 /// - a surface turned about an axis (of revolution of a polynomial B-spline curve or a line, a
-///   cylinder, a cone): along the angle u, eighths of a turn, on which the integrands are
-///   trigonometric polynomials of low order (taken as degree 6: ten points for a volume,
-///   sixteen for an area); along v, the curve's knots and degree.
+///   cylinder, a cone, a sphere, a torus): along the angle u, eighths of a turn, on which the
+///   integrands are trigonometric polynomials of low order (taken as degree 6: ten points for a
+///   volume, sixteen for an area); along v, the curve's knots and degree (a sphere's and a
+///   torus's v is an angle too).
 struct RectangularPatch {
   Handle(Geom_Surface) surface;
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
