@@ -2,6 +2,7 @@
 measures of its shape, on files the test writes itself where the numbers have a closed form."""
 import json
 import math
+import os
 
 from conftest import EXAMPLE, airshape, conformance_passed, query_answers as ask
 from test_fuselage import write_cylinders
@@ -40,6 +41,37 @@ def test_a_component_segment_and_its_segments_make_up_the_wing():
                                    {"op": "bounding_box", "uid": "WSeg1"})
     assert math.isclose(first + second, wing, rel_tol=1e-8), (first, second, wing)
     assert box["min"][1] < box["max"][1]
+
+
+def test_a_component_segment_is_the_references_loft_without_the_blunt_trailing_edge(tmp_path):
+    # The rectangular wing (chord 2, span 5) of parabolic arcs, given a blunt trailing edge and
+    # a component segment over its one segment: the component segment's shape (QUERY-components
+    # §1, as the reference lofts it) has the skins and caps but not the strip between the
+    # trailing edges, 5 m long and as high as the edge; it is held open as a solid, so its
+    # volume (about the mean of its vertices) is a little less than the wing's.
+    text = open(os.path.join(os.path.dirname(__file__), "..", "data", "wing-cst-rectangular.xml")).read()
+    text = text.replace("<lowerB mapType=\"vector\">0.15</lowerB>",
+                        "<lowerB mapType=\"vector\">0.15</lowerB><trailingEdgeThickness>0.01</trailingEdgeThickness>", 1)
+    text = text.replace('<segments><segment uID="RS">',
+                        '<componentSegments><componentSegment uID="RectCS"><name>cs</name>'
+                        "<fromElementUID>R1E</fromElementUID><toElementUID>R2E</toElementUID>"
+                        "</componentSegment></componentSegments>"
+                        '<segments><segment uID="RS">', 1)
+    path = tmp_path / "blunt.xml"
+    path.write_text(text)
+    wing_area, cs_area, wing_volume, cs_volume, upper, lower, wing_box, cs_box = answers(
+        path, {"op": "component_surface_area", "uid": "Rect"}, {"op": "component_surface_area", "uid": "RectCS"},
+        {"op": "component_volume", "uid": "Rect"}, {"op": "component_volume", "uid": "RectCS"},
+        {"op": "wing_upper_point", "wing": "Rect", "segment": 1, "eta": 0.5, "xsi": 1},
+        {"op": "wing_lower_point", "wing": "Rect", "segment": 1, "eta": 0.5, "xsi": 1},
+        {"op": "bounding_box", "uid": "Rect"}, {"op": "bounding_box", "uid": "RectCS"})
+    height = upper["ok"][2] - lower["ok"][2]
+    assert height > 0.01, (upper, lower)
+    assert math.isclose(wing_area["ok"] - cs_area["ok"], 5 * height, rel_tol=1e-9), (wing_area, cs_area, height)
+    # The strip's missing share (1/3)(x − O)·n A, O within the chord (x from 1 to 3), the strip at x = 3.
+    missing = wing_volume["ok"] - cs_volume["ok"]
+    assert 0 < missing <= 2 / 3 * 5 * height, (wing_volume, cs_volume)
+    assert cs_box == wing_box
 
 
 def test_where_the_wing_meets_the_fuselage():

@@ -200,7 +200,8 @@ Polyline StructureFrame::sparLine(const SparSegment& spar) const {
 }
 
 const TopoDS_Shape& StructureFrame::solid() const {
-  return configuration_.shapes().shapeOf(configuration_, inDevice() ? deviceUid_ : componentSegmentUid_);
+  if (inDevice()) return configuration_.shapes().shapeOf(configuration_, deviceUid_);
+  return wing().componentSegmentSolid(configuration_, componentSegmentUid_);
 }
 
 TopoDS_Shape StructureFrame::componentSegmentSkin(bool upper) const {

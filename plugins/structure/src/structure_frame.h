@@ -72,7 +72,8 @@ class StructureFrame {
   /// at a share of the length of a line (`lineNamed`).
   gp_Pnt positionPoint(const SparPosition& position) const;
 
-  /// The component segment's (or device's) solid (global frame), and the size of a box that
+  /// The closed solid of the component segment's wing segments (or the device's solid; global
+  /// frame), and the size of a box that
   /// holds it (a length that surely reaches across it).
   const TopoDS_Shape& solid() const;
   double reach() const;

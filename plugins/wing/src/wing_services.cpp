@@ -1,5 +1,7 @@
 #include "wing_services.h"
 
+#include <algorithm>
+
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRep_Builder.hxx>
@@ -139,6 +141,15 @@ class WingServicesOfThisPlugin final : public WingServices {
     for (const WingSegment& segment : geometry->segments()) sides.sides.push_back(placedSide(segment.inner, upper));
     if (!geometry->segments().empty()) sides.sides.push_back(placedSide(geometry->segments().back().outer, upper));
     return sides;
+  }
+
+  const TopoDS_Shape& componentSegmentSolid(const Configuration& configuration,
+                                            const std::string& componentSegmentUid) const override {
+    const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
+    const ComponentSegment segment(*WingGeometry::of(configuration, wing),
+                                   componentSegmentNamed(wing, componentSegmentUid));
+    const auto [first, last] = std::minmax_element(segment.segments().begin(), segment.segments().end());
+    return WingShape::of(configuration, wing)->closedSolidOf(*first, *last).shape;
   }
 
   TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,

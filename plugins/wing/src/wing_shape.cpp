@@ -184,8 +184,19 @@ NamedShape WingShape::solidOf(std::size_t first, std::size_t last) const {
   return solid;
 }
 
+const NamedShape& WingShape::closedSolidOf(std::size_t first, std::size_t last) const {
+  {
+    const std::lock_guard<std::mutex> lock(keepingSolids_);
+    const auto kept = closedSolids_.find({first, last});
+    if (kept != closedSolids_.end()) return kept->second;
+  }
+  NamedShape made = solidOf(first, last);  // built unlocked: another range may be built meanwhile
+  const std::lock_guard<std::mutex> lock(keepingSolids_);
+  return closedSolids_.emplace(std::make_pair(first, last), std::move(made)).first->second;
+}
+
 NamedShape WingShape::componentSegmentShape(std::size_t first, std::size_t last) const {
-  NamedShape whole = solidOf(first, last);
+  const NamedShape& whole = closedSolidOf(first, last);
   NamedShape open;
   TopoDS_Shell shell;
   BRep_Builder builder;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <map>
+
 #include <memory>
 #include <mutex>
 #include <string>
@@ -54,6 +56,8 @@ class WingShape {
   /// by the caps at their ends, named as in solid(); caps inside the wing are named
   /// "<segment uID>/inner" and "/outer". A wing segment's or component segment's shape.
   NamedShape solidOf(std::size_t first, std::size_t last) const;
+  /// solidOf, made once per first..last and kept: what structure lies in.
+  const NamedShape& closedSolidOf(std::size_t first, std::size_t last) const;
   /// A component segment's shape over the segments first..last: solidOf without the blunt
   /// trailing-edge strips, the skins and end caps as one open shell held by a solid.
   NamedShape componentSegmentShape(std::size_t first, std::size_t last) const;
@@ -64,6 +68,8 @@ class WingShape {
   std::vector<SegmentShape> segments_;
   mutable std::mutex sewingSegments_;             ///< guards sewnSolids_
   mutable std::vector<TopoDS_Shape> sewnSolids_;  ///< per segment, once sewn on request
+  mutable std::mutex keepingSolids_;              ///< guards closedSolids_
+  mutable std::map<std::pair<std::size_t, std::size_t>, NamedShape> closedSolids_;  ///< by first..last
 };
 
 }  // namespace airshape::wing

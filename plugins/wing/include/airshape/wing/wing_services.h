@@ -54,6 +54,12 @@ class WingServices {
   virtual std::vector<std::string> componentSegmentSegmentUids(const Configuration& configuration,
                                                                const std::string& componentSegmentUid) const = 0;
 
+  /// The closed solid of the wing segments a component segment runs through: their skins,
+  /// blunt trailing-edge strips and the caps at its two ends, what its structure lies in. (The
+  /// component segment's own shape, as the reference's, leaves out the strips.)
+  virtual const TopoDS_Shape& componentSegmentSolid(const Configuration& configuration,
+                                                    const std::string& componentSegmentUid) const = 0;
+
   /// The upper or the lower skin of a component segment (Surface::Upper or Lower), as faces
   /// in the global frame. A skin shaped by guide curves that no leading-edge guide splits is
   /// one face, returned for both.
