@@ -98,6 +98,6 @@ class WingServices {
 };
 
 /// The name the wing plugin offers WingServices under; the number is the interface's version.
-inline constexpr const char* kWingServices = "airshape.wing.WingServices/5";
+inline constexpr const char* kWingServices = "airshape.wing.WingServices/6";
 
 }  // namespace airshape::wing
