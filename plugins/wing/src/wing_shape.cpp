@@ -3,6 +3,7 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_MapOfShape.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 
@@ -197,19 +198,24 @@ const NamedShape& WingShape::closedSolidOf(std::size_t first, std::size_t last) 
 
 NamedShape WingShape::componentSegmentShape(std::size_t first, std::size_t last) const {
   const NamedShape& whole = closedSolidOf(first, last);
+  // The strips are the faces named after a segment's trailing edge (solidOf's names).
+  const std::string strip = "/trailingEdge";
+  const auto isStrip = [&](const std::string& name) {
+    return name.size() >= strip.size() && name.compare(name.size() - strip.size(), strip.size(), strip) == 0;
+  };
   NamedShape open;
-  TopoDS_Shell shell;
+  TopTools_MapOfShape strips;
+  for (const auto& [name, face] : whole.faces)
+    if (isStrip(name))
+      strips.Add(face);
+    else
+      open.faces.emplace_back(name, face);
+  // The other faces as the solid holds them (its orientation included), one open shell.
   BRep_Builder builder;
+  TopoDS_Shell shell;
   builder.MakeShell(shell);
-  for (const auto& [name, face] : whole.faces) {
-    if (name.size() >= 13 && name.compare(name.size() - 13, 13, "/trailingEdge") == 0) continue;
-    open.faces.emplace_back(name, face);
-  }
-  for (TopExp_Explorer face(whole.shape, TopAbs_FACE); face.More(); face.Next()) {
-    bool kept = false;
-    for (const auto& named : open.faces) kept = kept || named.second.IsSame(face.Current());
-    if (kept) builder.Add(shell, face.Current());
-  }
+  for (TopExp_Explorer face(whole.shape, TopAbs_FACE); face.More(); face.Next())
+    if (!strips.Contains(face.Current())) builder.Add(shell, face.Current());
   TopoDS_Solid solid;
   builder.MakeSolid(solid);
   builder.Add(solid, shell);
