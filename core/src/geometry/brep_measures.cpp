@@ -1,24 +1,18 @@
 #include "airshape/geometry/brep_measures.h"
 
-#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepGProp.hxx>
-#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GProp_GProps.hxx>
-#include <Geom2d_BSplineCurve.hxx>
-#include <Geom2d_Line.hxx>
-#include <Geom2d_TrimmedCurve.hxx>
 #include <GeomAdaptor_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
-#include <Geom_BSplineSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <TopExp_Explorer.hxx>
