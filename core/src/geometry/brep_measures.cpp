@@ -40,29 +40,34 @@ std::vector<double> coarseBreaks(const std::vector<double>& spans, int count) {
   return result;
 }
 
-/// ∫∫ f(u, v, P, S_u, S_v) du dv over the patch, interval by interval between the given
-/// breaks, with the given numbers of Gauss points per direction.
+/// ∫∫ f(P, S_u, S_v) du dv over one cell [u0, u1] × [v0, v1] by the product rule of `uRule`
+/// and `vRule`.
+template <typename Integrand>
+double cellIntegral(const GeomAdaptor_Surface& evaluator, const GaussRule& uRule, const GaussRule& vRule, double u0,
+                    double u1, double v0, double v1, const Integrand& integrand) {
+  const double uMid = 0.5 * (u0 + u1), uHalf = 0.5 * (u1 - u0), vMid = 0.5 * (v0 + v1), vHalf = 0.5 * (v1 - v0);
+  double sum = 0.0;
+  for (int a = 1; a <= uRule.points.Length(); ++a)
+    for (int b = 1; b <= vRule.points.Length(); ++b) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      evaluator.D1(uMid + uHalf * uRule.points(a), vMid + vHalf * vRule.points(b), p, du, dv);
+      sum += uRule.weights(a) * vRule.weights(b) * integrand(p, du, dv);
+    }
+  return sum * uHalf * vHalf;
+}
+
+/// The same over the patch, cell by cell between the given breaks, with the given numbers of
+/// Gauss points per direction.
 template <typename Integrand>
 double integrateBetweenBreaks(const RectangularPatch& patch, const std::vector<double>& uBreaks,
                               const std::vector<double>& vBreaks, int uPoints, int vPoints, Integrand integrand) {
   const GeomAdaptor_Surface evaluator(patch.surface);  // caches a B-spline's span polynomials
   const GaussRule uRule(uPoints), vRule(vPoints);
   double sum = 0.0;
-  for (std::size_t i = 0; i + 1 < uBreaks.size(); ++i) {
-    const double uMid = 0.5 * (uBreaks[i] + uBreaks[i + 1]), uHalf = 0.5 * (uBreaks[i + 1] - uBreaks[i]);
-    for (std::size_t j = 0; j + 1 < vBreaks.size(); ++j) {
-      const double vMid = 0.5 * (vBreaks[j] + vBreaks[j + 1]), vHalf = 0.5 * (vBreaks[j + 1] - vBreaks[j]);
-      double span = 0.0;
-      for (int a = 1; a <= uRule.points.Length(); ++a)
-        for (int b = 1; b <= vRule.points.Length(); ++b) {
-          gp_Pnt p;
-          gp_Vec du, dv;
-          evaluator.D1(uMid + uHalf * uRule.points(a), vMid + vHalf * vRule.points(b), p, du, dv);
-          span += uRule.weights(a) * vRule.weights(b) * integrand(p, du, dv);
-        }
-      sum += span * uHalf * vHalf;
-    }
-  }
+  for (std::size_t i = 0; i + 1 < uBreaks.size(); ++i)
+    for (std::size_t j = 0; j + 1 < vBreaks.size(); ++j)
+      sum += cellIntegral(evaluator, uRule, vRule, uBreaks[i], uBreaks[i + 1], vBreaks[j], vBreaks[j + 1], integrand);
   return sum;
 }
 
@@ -103,19 +108,11 @@ double coarsePatchVolume(const RectangularPatch& patch, const gp_XYZ& origin) {
          3.0;
 }
 
-/// ∫∫ |S_u × S_v| over one cell [u0, u1] × [v0, v1] by the product rule of `uRule` and `vRule`.
+/// ∫∫ |S_u × S_v| over one cell by the product rule of `uRule` and `vRule`.
 double cellArea(const GeomAdaptor_Surface& evaluator, const GaussRule& uRule, const GaussRule& vRule, double u0,
                 double u1, double v0, double v1) {
-  const double uMid = 0.5 * (u0 + u1), uHalf = 0.5 * (u1 - u0), vMid = 0.5 * (v0 + v1), vHalf = 0.5 * (v1 - v0);
-  double sum = 0.0;
-  for (int a = 1; a <= uRule.points.Length(); ++a)
-    for (int b = 1; b <= vRule.points.Length(); ++b) {
-      gp_Pnt p;
-      gp_Vec du, dv;
-      evaluator.D1(uMid + uHalf * uRule.points(a), vMid + vHalf * vRule.points(b), p, du, dv);
-      sum += uRule.weights(a) * vRule.weights(b) * du.Crossed(dv).Magnitude();
-    }
-  return sum * uHalf * vHalf;
+  return cellIntegral(evaluator, uRule, vRule, u0, u1, v0, v1,
+                      [](const gp_Pnt&, const gp_Vec& du, const gp_Vec& dv) { return du.Crossed(dv).Magnitude(); });
 }
 
 /// The Gauss rules an area is taken with: 2p + 4 points per direction of degree p, and two
