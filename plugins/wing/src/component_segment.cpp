@@ -1,5 +1,7 @@
 #include "component_segment.h"
 
+#include <algorithm>
+
 #include "airshape/error.h"
 
 namespace airshape::wing {
@@ -67,6 +69,11 @@ double ComponentSegment::toComponentSegment(std::size_t segment, double eta) con
   for (std::size_t i = 0; i < path_.size(); ++i)
     if (path_[i] == segment) return (1.0 - eta) * elementEtas_[i] + eta * elementEtas_[i + 1];
   throw Error(ErrorCode::InvalidArgument, "the segment is not part of component segment '" + uid_ + "'");
+}
+
+std::pair<std::size_t, std::size_t> ComponentSegment::segmentRange() const {
+  const auto [first, last] = std::minmax_element(path_.begin(), path_.end());
+  return {*first, *last};
 }
 
 }  // namespace airshape::wing

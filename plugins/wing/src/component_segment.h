@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "airshape/schema/generated/cpacs_model.h"
@@ -28,6 +29,8 @@ class ComponentSegment {
   double toComponentSegment(std::size_t segment, double eta) const;
   /// The wing segments it runs through (indices in chain order), inner to outer.
   const std::vector<std::size_t>& segments() const { return path_; }
+  /// The first and the last of them in chain order: the wing's segments first..last are its.
+  std::pair<std::size_t, std::size_t> segmentRange() const;
 
  private:
   std::vector<std::size_t> path_;    ///< wing segment indices, inner to outer

@@ -88,8 +88,8 @@ class WingPlugin final : public plugin::BasicPlugin {
     shapes.add("wingComponentSegment", [](const Configuration& c, const std::string& uid) {
       const schema::WingType& wing = wingHolding(c, uid);
       const ComponentSegment segment(*WingGeometry::of(c, wing), componentSegmentNamed(wing, uid));
-      const auto [first, last] = std::minmax_element(segment.segments().begin(), segment.segments().end());
-      return WingShape::of(c, wing)->componentSegmentShape(*first, *last);
+      const auto [first, last] = segment.segmentRange();
+      return WingShape::of(c, wing)->componentSegmentShape(first, last);
     });
   }
 

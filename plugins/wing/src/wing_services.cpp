@@ -1,7 +1,5 @@
 #include "wing_services.h"
 
-#include <algorithm>
-
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRep_Builder.hxx>
@@ -148,8 +146,8 @@ class WingServicesOfThisPlugin final : public WingServices {
     const schema::WingType& wing = wingHolding(configuration, componentSegmentUid);
     const ComponentSegment segment(*WingGeometry::of(configuration, wing),
                                    componentSegmentNamed(wing, componentSegmentUid));
-    const auto [first, last] = std::minmax_element(segment.segments().begin(), segment.segments().end());
-    return WingShape::of(configuration, wing)->closedSolidOf(*first, *last).shape;
+    const auto [first, last] = segment.segmentRange();
+    return WingShape::of(configuration, wing)->closedSolidOf(first, last).shape;
   }
 
   TopoDS_Shape componentSegmentSkin(const Configuration& configuration, const std::string& componentSegmentUid,
