@@ -38,9 +38,9 @@ Handle(Geom_BSplineCurve) cubicThrough(const std::vector<CurveSample>& samples, 
 /// The cubic B-spline through samples of a curve from `first` to `last` (their parameter, point
 /// and `where`), parametrised like the curve and ending exactly at their points: starting from four even intervals, an
 /// interval is halved where the cubic Hermite interpolant of its ends strays from the curve's middle by more than
-/// `tolerance`, so that samples are dense only where the curve bends. The C2 cubic through the samples (half the poles)
-/// where it too keeps within the tolerance at every interval's middle, else the Hermite cubic; null when a sample
-/// cannot be made.
+/// `tolerance`, so that samples are dense only where the curve bends. The C2 cubic through the samples (half the poles,
+/// and one piece for OCCT's intersections), with samples added where it strays at an interval's middle, else the
+/// Hermite cubic; null when a sample cannot be made.
 Handle(Geom_BSplineCurve)
     fittedCurve(const CurveSampler& sample, const CurveSample& first, const CurveSample& last, double tolerance);
 

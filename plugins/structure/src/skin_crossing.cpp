@@ -257,12 +257,57 @@ std::optional<double> senseFrom(const LevelCurve& curve, const geometry::PatchPo
   return tangent.Dot(gp_Vec(first.point, last.point)) >= 0.0 ? 1.0 : -1.0;
 }
 
+/// The cubic through points of the crossing and their directions, parametrised by the length
+/// between them, with points added until the crossing halfway between any two is within the
+/// tolerance: through their directions at every point (a Hermite cubic) or only at the ends
+/// (a C2 cubic); null when twelve rounds of added points do not make it follow the crossing.
+Handle(Geom_BSplineCurve) fitAlongCurve(const LevelCurve& curve, double sense, std::vector<geometry::PatchPoint> points,
+                                        std::vector<gp_Vec> tangents, double tolerance, bool everyDerivative) {
+  for (int round = 0; round < 12; ++round) {
+    std::vector<CurveSample> nodes;
+    double parameter = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (i > 0) parameter += points[i].point.Distance(points[i - 1].point);
+      nodes.push_back({parameter, points[i].point, tangents[i], gp_Pnt2d(points[i].u, points[i].v)});
+    }
+    Handle(Geom_BSplineCurve) fitted = cubicThrough(nodes, everyDerivative);
+    if (fitted.IsNull()) return nullptr;
+    std::vector<geometry::PatchPoint> refinedPoints{points.front()};
+    std::vector<gp_Vec> refinedTangents{tangents.front()};
+    bool strayed = false;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      double u = 0.5 * (points[i - 1].u + points[i].u), v = 0.5 * (points[i - 1].v + points[i].v);
+      gp_Vec tangent;
+      gp_Vec2d rate;
+      if (!curve.settle(u, v) || !curve.direction(u, v, sense, tangent, rate)) return nullptr;
+      const gp_Pnt middle = curve.point(u, v);
+      const double at = 0.5 * (nodes[i - 1].t + nodes[i].t);
+      gp_Pnt onFit;
+      gp_Vec fitTangent;
+      fitted->D1(at, onFit, fitTangent);
+      gp_Vec off(onFit, middle);
+      if (fitTangent.Magnitude() > 0.0) off -= off.Dot(fitTangent.Normalized()) * fitTangent.Normalized();
+      if (off.Magnitude() > tolerance) {
+        strayed = true;
+        refinedPoints.push_back({0.0, u, v, middle});
+        refinedTangents.push_back(tangent);
+      }
+      refinedPoints.push_back(points[i]);
+      refinedTangents.push_back(tangents[i]);
+    }
+    if (!strayed) return fitted;
+    points = refinedPoints;
+    tangents = refinedTangents;
+  }
+  return nullptr;
+}
+
 /// The piece of the crossing from `first` to `last` traced along the curve itself, for a
 /// piece no line of the family meets once (a rib round a leading edge, where the lines along
 /// up touch the skin): steps along the curve's direction, each settled onto it, shortened
-/// where the direction turns fast; the points then joined by the cubic through them and
-/// their directions, parametrised by the length between them, with points added until the
-/// crossing halfway between any two is within the tolerance.
+/// where the direction turns fast; the points then joined by a cubic (fitAlongCurve): the C2
+/// cubic where it follows the crossing, else the Hermite cubic. The C2 cubic is preferred for
+/// the reason fittedCurve gives: OCCT's intersections treat each C2 piece of an edge on its own.
 Handle(Geom_BSplineCurve)
     traceAlongCurve(const geometry::Patch& patch, const CrossingLines& lines, const geometry::PatchPoint& first,
                     const geometry::PatchPoint& last, double tolerance) {
@@ -300,43 +345,8 @@ Handle(Geom_BSplineCurve)
     step = std::min(step * 1.5, length / 4.0);
   }
   if (points.back().point.Distance(last.point) > 0.0) return nullptr;
-  // The cubic through the points, refined where its middles stray from the curve.
-  for (int round = 0; round < 12; ++round) {
-    std::vector<CurveSample> nodes;
-    double parameter = 0.0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (i > 0) parameter += points[i].point.Distance(points[i - 1].point);
-      nodes.push_back({parameter, points[i].point, tangents[i], gp_Pnt2d(points[i].u, points[i].v)});
-    }
-    Handle(Geom_BSplineCurve) fitted = cubicThrough(nodes, true);
-    if (fitted.IsNull()) return nullptr;
-    std::vector<geometry::PatchPoint> refinedPoints{points.front()};
-    std::vector<gp_Vec> refinedTangents{tangents.front()};
-    bool strayed = false;
-    for (std::size_t i = 1; i < points.size(); ++i) {
-      double u = 0.5 * (points[i - 1].u + points[i].u), v = 0.5 * (points[i - 1].v + points[i].v);
-      gp_Vec tangent;
-      if (!curve.settle(u, v) || !curve.direction(u, v, *sense, tangent, rate)) return nullptr;
-      const gp_Pnt middle = curve.point(u, v);
-      const double at = 0.5 * (nodes[i - 1].t + nodes[i].t);
-      gp_Pnt onFit;
-      gp_Vec fitTangent;
-      fitted->D1(at, onFit, fitTangent);
-      gp_Vec off(onFit, middle);
-      if (fitTangent.Magnitude() > 0.0) off -= off.Dot(fitTangent.Normalized()) * fitTangent.Normalized();
-      if (off.Magnitude() > tolerance) {
-        strayed = true;
-        refinedPoints.push_back({0.0, u, v, middle});
-        refinedTangents.push_back(tangent);
-      }
-      refinedPoints.push_back(points[i]);
-      refinedTangents.push_back(tangents[i]);
-    }
-    if (!strayed) return fitted;
-    points = refinedPoints;
-    tangents = refinedTangents;
-  }
-  return nullptr;
+  Handle(Geom_BSplineCurve) smooth = fitAlongCurve(curve, *sense, points, tangents, tolerance, false);
+  return !smooth.IsNull() ? smooth : fitAlongCurve(curve, *sense, points, tangents, tolerance, true);
 }
 
 /// The point of the patch on the line at t, starting from the patch parameters that the line
