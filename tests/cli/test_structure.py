@@ -72,11 +72,17 @@ def test_spar_webs_in_closed_form(tmp_path):
 def test_spar_errors_name_the_cpacs_path(tmp_path):
     on_rib = ('<sparPosition uID="R"><sparPositionRib><ribDefinitionUID>none</ribDefinitionUID><ribNumber>1'
               "</ribNumber><xsi>0.5</xsi></sparPositionRib></sparPosition>")
-    path = with_spars(tmp_path, position("A0", 0, 0.3) + position("A1", 1, 0.3) + on_rib,
+    path = with_spars(tmp_path, position("A0", 0, 0.3) + position("A1", 1, 0.3) + on_rib +
+                      position("NaN", 1, "nan") + position("Aft", 1, 1.5),
                       segment("Dangling", "A0", "Nowhere") + segment("OnRib", "A0", "R") + segment("Alone", "A0") +
-                      segment("Good", "A0", "A1"))
-    dangling, on_rib_answer, alone, good = ask(path, *({"op": "component_surface_area", "uid": uid}
-                                                       for uid in ("Dangling", "OnRib", "Alone", "Good")))
+                      segment("Good", "A0", "A1") + segment("NotANumber", "A0", "NaN") + segment("Beyond", "A0", "Aft"))
+    dangling, on_rib_answer, alone, good, not_a_number, beyond = ask(
+        path, *({"op": "component_surface_area", "uid": uid}
+                for uid in ("Dangling", "OnRib", "Alone", "Good", "NotANumber", "Beyond")))
+    # A coordinate that is no number, or one beyond the chord, is refused where it is written
+    # (a NaN once sent the spar's trace into an endless search).
+    assert not_a_number["error"].endswith("sparPosition[4]/sparPositionEtaXsi/xsi: nan is not a number in [0, 1]")
+    assert beyond["error"].endswith("sparPosition[5]/sparPositionEtaXsi/xsi: 1.5 is not a number in [0, 1]")
     assert "sparPositionUID 'Nowhere' names no spar position" in dangling["error"]
     assert "sparSegment[1]/sparPositionUIDs" in dangling["error"]
     assert "sparPosition[3]/sparPositionRib" in on_rib_answer["error"] and "'none'" in on_rib_answer["error"]

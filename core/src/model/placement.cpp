@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <sstream>
 #include <type_traits>
 
 #include "airshape/configuration.h"
@@ -179,6 +180,16 @@ std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const s
 
 double finite(double value, const std::string& xpath) {
   if (!std::isfinite(value)) throw Error(ErrorCode::InvalidModel, "not a finite number (NaN or INF)", {}, xpath);
+  return value;
+}
+
+double fraction(double value, const std::string& xpath) {
+  if (!(value >= 0.0 && value <= 1.0))
+  {
+    std::ostringstream text;
+    text << value << " is not a number in [0, 1]";
+    throw Error(ErrorCode::InvalidModel, text.str(), {}, xpath);
+  }
   return value;
 }
 

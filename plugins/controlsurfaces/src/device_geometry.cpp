@@ -37,11 +37,6 @@ const schema::WingType& wingNamed(const Configuration& configuration, const std:
   return model::findByUid(configuration, model, model.wings, uid, "wing");
 }
 
-void requireFraction(double value, const std::string& name, const std::string& xpath) {
-  if (!(value >= 0.0 && value <= 1.0))
-    throw Error(ErrorCode::InvalidModel, name + " " + std::to_string(value) + " lies outside [0, 1]", {}, xpath);
-}
-
 }  // namespace
 
 DeviceGeometry::DeviceGeometry(const Configuration& configuration, const wing::WingServices& wing, Device device)
@@ -107,8 +102,10 @@ gp_Pnt DeviceGeometry::chordPoint(const RelativeCoordinate& eta, double xsi, con
 }
 
 BorderPlane DeviceGeometry::borderPlaneOf(const BorderDefinition& border) const {
-  for (const double eta : {border.etaLE.value, border.etaTE.value}) requireFraction(eta, "eta", border.xpath);
-  for (const double xsi : {border.xsiLE, border.xsiTE}) requireFraction(xsi, "xsi", border.xpath);
+  model::fraction(border.etaLE.value, border.xpath + "/etaLE/eta");
+  model::fraction(border.etaTE.value, border.xpath + "/etaTE/eta");
+  model::fraction(border.xsiLE, border.xpath + "/xsiLE/xsi");
+  model::fraction(border.xsiTE, border.xpath + "/xsiTE/xsi");
   try {
     return BorderPlane(chordPoint(border.etaLE, border.xsiLE, border.xpath + "/etaLE"),
                        chordPoint(border.etaTE, border.xsiTE, border.xpath + "/etaTE"), upward());
@@ -354,7 +351,7 @@ TopoDS_Shape DeviceGeometry::skinCutOut() const {
     const BorderPlane plane = borderPlaneOf(end);
     const double eta = componentSegmentEta(end.etaLE, xpath);
     auto share = [&](double xsi) {
-      requireFraction(xsi, "xsi", xpath);
+      model::fraction(xsi, xpath);
       return gp_Vec(plane.origin,
                     wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, eta, xsi, Surface::Chord))
                  .Dot(plane.x) /
@@ -378,8 +375,8 @@ std::pair<double, double> DeviceGeometry::parameterRange() const { return parame
 gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,
                                   const char* which) const {
   const std::string xpath = device_.xpath + "/path/" + which;
-  requireFraction(hinge.hingeXsi, "hingeXsi", xpath);
-  requireFraction(hinge.hingeRelHeight, "hingeRelHeight", xpath);
+  model::fraction(hinge.hingeXsi, xpath + "/hingeXsi");
+  model::fraction(hinge.hingeRelHeight, xpath + "/hingeRelHeight");
   const double eta = componentSegmentEta(border.etaLE, border.xpath + "/etaLE");
   const gp_Pnt onChord =
       wing_.componentSegmentPoint(configuration_, device_.componentSegmentUid, eta, hinge.hingeXsi, Surface::Chord);

@@ -23,6 +23,7 @@
 #include "airshape/geometry/ruled_prism.h"
 #include "airshape/geometry/ruled_sections.h"
 #include "airshape/geometry/skin_split.h"
+#include "airshape/model/placement.h"
 #include "contour_cell.h"
 #include "faces_inside.h"
 #include "named_faces.h"
@@ -87,7 +88,8 @@ class CellCorners {
     }
     if (!chordwise.xsi1 || !chordwise.xsi2)
       throw Error(ErrorCode::InvalidModel, "the border gives neither xsi1 and xsi2 nor a spar", {}, chordwisePath);
-    const double xsi = inner ? *chordwise.xsi1 : *chordwise.xsi2;
+    const double xsi =
+        model::fraction(inner ? *chordwise.xsi1 : *chordwise.xsi2, chordwisePath + (inner ? "/xsi1" : "/xsi2"));
     double low = 0.0, high = 1.0;
     double sideLow = side(frame_.chordPoint("", low, xsi));
     if ((sideLow <= 0.0) == (side(frame_.chordPoint("", high, xsi)) <= 0.0))
@@ -117,9 +119,10 @@ class CellCorners {
     const auto& eta = leadingEdge ? spanwise.eta1 : spanwise.eta2;
     if (!eta) throw Error(ErrorCode::InvalidModel, "the border gives neither eta1 and eta2 nor a rib", {}, where);
     const std::string element = where + (leadingEdge ? "/eta1" : "/eta2");
-    if (const auto bare = bareNumber(element)) return *bare;
+    if (const auto bare = bareNumber(element)) return model::fraction(*bare, element);
+    const double value = model::fraction(eta->eta, element + "/eta");
     try {
-      return frame_.frameEta(eta->referenceUID, eta->eta);
+      return frame_.frameEta(eta->referenceUID, value);
     } catch (const Error& error) {
       throw Error(error.code(), error.message(), {}, where);
     }
@@ -148,7 +151,8 @@ class CellCorners {
 
   double xsiAt(const schema::CellPositioningChordwiseType& chordwise, bool inner, double eta,
                const std::string& where) const {
-    if (chordwise.xsi1 && chordwise.xsi2) return inner ? *chordwise.xsi1 : *chordwise.xsi2;
+    if (chordwise.xsi1 && chordwise.xsi2)
+      return model::fraction(inner ? *chordwise.xsi1 : *chordwise.xsi2, where + (inner ? "/xsi1" : "/xsi2"));
     if (!chordwise.sparUID)
       throw Error(ErrorCode::InvalidModel, "the border gives neither xsi1 and xsi2 nor a spar", {}, where);
     // Where the spar's midplane line crosses the chord at eta.

@@ -8,6 +8,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/placement.h"
 #include "device_section.h"
 #include "faces_inside.h"
 #include "plane_region.h"
@@ -38,8 +39,12 @@ RibCutter::RibCutter(const Configuration& configuration, const StructureFrame& f
 gp_Pnt RibCutter::pointOf(const schema::Child<schema::EtaXsiPointType>& etaXsi,
                           const schema::Child<schema::CurvePointType>& curve,
                           const std::optional<std::string>& sparPosition, const std::string& where) const {
-  if (etaXsi) return frame_.chordPoint(etaXsi->referenceUID, etaXsi->eta, etaXsi->xsi);
-  if (curve) return frame_.lineNamed(curve->referenceUID, where + "CurvePoint").at(curve->eta);
+  if (etaXsi)
+    return frame_.chordPoint(etaXsi->referenceUID, model::fraction(etaXsi->eta, where + "EtaXsiPoint/eta"),
+                             model::fraction(etaXsi->xsi, where + "EtaXsiPoint/xsi"));
+  if (curve)
+    return frame_.lineNamed(curve->referenceUID, where + "CurvePoint")
+        .at(model::fraction(curve->eta, where + "CurvePoint/eta"));
   if (sparPosition) {
     if (structure_.spars && structure_.spars->sparPositions)
       for (const auto& position : structure_.spars->sparPositions->sparPosition)

@@ -2,6 +2,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/placement.h"
 #include "component_segments.h"
 
 namespace airshape::structure {
@@ -18,6 +19,8 @@ bool readSparPoint(const Configuration& configuration, const std::string& xpath,
   } catch (const std::exception&) {  // no sparPoint, or not numbers
     return false;
   }
+  model::fraction(position.eta, point + "/eta");
+  model::fraction(position.xsi, point + "/xsi");
   try {
     position.referenceUid = configuration.value(point + "/referenceUID");
   } catch (const Error&) {  // a component segment eta and xsi
@@ -34,17 +37,17 @@ SparPosition sparPositionOf(const Configuration& configuration, const schema::Sp
   position.uid = node.uID;
   position.xpath = node.xpath;
   if (node.sparPositionEtaXsi) {
-    position.eta = node.sparPositionEtaXsi->eta;
-    position.xsi = node.sparPositionEtaXsi->xsi;
+    position.eta = model::fraction(node.sparPositionEtaXsi->eta, node.xpath + "/sparPositionEtaXsi/eta");
+    position.xsi = model::fraction(node.sparPositionEtaXsi->xsi, node.xpath + "/sparPositionEtaXsi/xsi");
     position.referenceUid = node.sparPositionEtaXsi->referenceUID;
   } else if (node.sparPositionRib) {
     position.kind = SparPosition::Kind::OnRib;
-    position.xsi = node.sparPositionRib->xsi;
+    position.xsi = model::fraction(node.sparPositionRib->xsi, node.xpath + "/sparPositionRib/xsi");
     position.ribsUid = node.sparPositionRib->ribDefinitionUID;
     position.ribNumber = node.sparPositionRib->ribNumber.value_or(1);
   } else if (node.sparPositionCurve) {
     position.kind = SparPosition::Kind::OnCurve;
-    position.eta = node.sparPositionCurve->eta;
+    position.eta = model::fraction(node.sparPositionCurve->eta, node.xpath + "/sparPositionCurve/eta");
     position.referenceUid = node.sparPositionCurve->referenceUID;
   } else if (!readSparPoint(configuration, node.xpath, position)) {
     throw Error(ErrorCode::InvalidModel,

@@ -48,6 +48,10 @@ std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const s
 /// geometry can be built from them: Error(InvalidModel) naming `xpath`.
 double finite(double value, const std::string& xpath);
 
+/// A relative coordinate the geometry is placed by (an eta or xsi, a share of a chord):
+/// Error(InvalidModel) naming `xpath` where it is not a number in [0, 1].
+double fraction(double value, const std::string& xpath);
+
 /// Numbers of a CPACS vector text ("1;2.5;3"). Throws Error(InvalidModel) naming `xpath`.
 std::vector<double> parseVector(const std::string& text, const std::string& xpath);
 
