@@ -296,6 +296,19 @@ def test_rib_errors_name_the_cpacs_path(tmp_path):
     assert "no spar segment with uID 'Missing'" in answer["error"]
 
 
+def test_a_rib_set_asking_for_more_ribs_than_any_wing_has_is_refused(tmp_path):
+    positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.7) + \
+        position("PosR1", 1, 0.7)
+    spacing = ribs("Spaced", 0.1, 0.9, 3).replace("<numberOfRibs>3</numberOfRibs>", "<spacing>1e-300</spacing>")
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Many", 0.1, 0.9, 10 ** 9).replace("</ribsDefinitions>", "") +
+                      spacing.replace("<ribsDefinitions>", ""))
+    many, spaced = ask(path, *({"op": "component_surface_area", "uid": uid} for uid in ("Many", "Spaced")))
+    assert many["error"].endswith("ribsDefinition[1]/ribsPositioning/numberOfRibs: asks for 1e+09 ribs in one set, "
+                                  "more than 10000; refused")
+    assert "ribsDefinition[2]/ribsPositioning/spacing: asks for " in spaced["error"]
+
+
 def test_a_broken_rib_set_leaves_the_rest_of_a_named_structural_model(tmp_path):
     # The component segment is named; one of its rib sets refers to a spar that is not
     # there. It is left out and said, the rest of the model is written, status 1.

@@ -15,6 +15,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/placement.h"
 #include "named_faces.h"
 #include "skin_parameters.h"
 
@@ -123,10 +124,7 @@ TopoDS_Face trimmed(const SkinFace& face, const Range& span, const Range& chord)
 
 /// A border's contour coordinate, which must lie in [0, 1].
 double contourCoordinate(const std::optional<double>& value, const std::string& where) {
-  if (*value < 0.0 || *value > 1.0)
-    throw Error(ErrorCode::InvalidModel, "contour coordinate " + std::to_string(*value) + " is outside [0, 1]", {},
-                where + "/contourCoordinate");
-  return *value;
+  return model::fraction(*value, where + "/contourCoordinate");
 }
 
 /// The span coordinate of a component segment eta: in the face of the wing segment that holds
@@ -156,10 +154,10 @@ double spanwiseCoordinate(const Configuration& configuration, const wing::WingSe
                           const std::vector<SkinFace>& faces, const schema::CellPositioningSpanwiseType& border,
                           const std::string& where) {
   if (border.contourCoordinate) return contourCoordinate(border.contourCoordinate, where);
+  const double given = model::fraction(border.eta1->eta, where + "/eta1/eta");
   double eta = 0.0;
   try {
-    eta =
-        wing.componentSegmentEta(configuration, cell.componentSegmentUid, border.eta1->referenceUID, border.eta1->eta);
+    eta = wing.componentSegmentEta(configuration, cell.componentSegmentUid, border.eta1->referenceUID, given);
   } catch (const Error& error) {
     throw Error(error.code(), error.message(), {}, where + "/eta1");
   }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <gp_Ax1.hxx>
@@ -22,6 +23,7 @@ namespace airshape::structure {
 namespace {
 
 constexpr double kDegrees = M_PI / 180.0;
+constexpr long long kMostRibs = 10000;
 
 /// The tilt of a rib's cross section: its `ribRotation/x`, 90° (upright) when not given.
 double xRotationOf(const RibsDefinition& ribs) {
@@ -194,16 +196,29 @@ class RibSet {
     return *share;
   }
 
+  /// How many ribs the set has: as many as written, or as the spacing fits between its ends.
+  /// More than kMostRibs is refused: no wing has so many in one set, and building them would
+  /// take hours (a spacing of 1e-300 written by mistake asks for more ribs than there are numbers).
   int numberOfRibs(double start, double end) const {
     if (positioning_.numberOfRibs) {
-      if (*positioning_.numberOfRibs < 1)
+      const auto count = *positioning_.numberOfRibs;
+      if (count < 1)
         throw Error(ErrorCode::InvalidModel, "numberOfRibs must be at least 1", {}, xpath() + "/numberOfRibs");
-      return static_cast<int>(*positioning_.numberOfRibs);
+      if (count > kMostRibs) throw tooMany(static_cast<double>(count), xpath() + "/numberOfRibs");
+      return static_cast<int>(count);
     }
     if (!positioning_.spacing || !(*positioning_.spacing > 0))
       throw Error(ErrorCode::InvalidModel, "the ribs need a positive spacing or a numberOfRibs", {}, xpath());
     if (std::abs(end - start) <= 1e-7) return 1;
-    return static_cast<int>((reference_.length() * std::abs(end - start) + 1e-7) / *positioning_.spacing) + 1;
+    const double count = std::floor((reference_.length() * std::abs(end - start) + 1e-7) / *positioning_.spacing) + 1;
+    if (!(count <= kMostRibs)) throw tooMany(count, xpath() + "/spacing");
+    return static_cast<int>(count);
+  }
+
+  static Error tooMany(double count, const std::string& where) {
+    std::ostringstream text;
+    text << "asks for " << count << " ribs in one set, more than " << kMostRibs << "; refused";
+    return Error(ErrorCode::InvalidModel, text.str(), {}, where);
   }
 
   double etaOffset(double start, double end, int count) const {
