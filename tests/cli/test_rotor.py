@@ -51,6 +51,23 @@ def test_rotor_errors_name_their_path():
     assert "rotor" in beyond["error"]
 
 
+def errors_of(path, query):
+    result = airshape("query", str(path), stdin=json.dumps(query) + "\n")
+    return json.loads(result.stdout)["error"]
+
+
+def test_blade_counts_and_azimuths_that_cannot_be_built_are_refused(tmp_path):
+    text = open(HELI).read()
+    many = tmp_path / "many-blades.xml"
+    many.write_text(text.replace("<numberOfBlades>2</numberOfBlades>", "<numberOfBlades>1000000000</numberOfBlades>", 1))
+    nan = tmp_path / "nan-azimuth.xml"
+    nan.write_text(text.replace("<azimuthAngles mapType=\"vector\">", "<azimuthAngles mapType=\"vector\">nan;", 1))
+    answer = errors_of(many, {"op": "rotor_blade_count", "rotor": "Main"})
+    assert answer.endswith("rotorBladeAttachment[1]/numberOfBlades: 1000000000 blades, more than 1000; refused")
+    answer = errors_of(nan, {"op": "rotor_volume", "rotor": "Clockwise"})
+    assert answer.endswith("rotorBladeAttachment[1]/azimuthAngles: not a finite number (NaN or INF)")
+
+
 def test_rotor_conformance_does_not_regress():
     passed, output = conformance_passed("cases-rotor.json")
     assert passed >= 79, output[-3000:]

@@ -12,6 +12,8 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 
+constexpr long long kMostBlades = 1000;
+
 /// The azimuths of an attachment: its `azimuthAngles` list, else `numberOfBlades` evenly spaced.
 std::vector<double> azimuthsOf(const schema::RotorBladeAttachmentType& attachment) {
   std::vector<double> azimuths;
@@ -20,18 +22,25 @@ std::vector<double> azimuthsOf(const schema::RotorBladeAttachmentType& attachmen
     std::string item;
     while (std::getline(list, item, ';')) {
       if (item.find_first_not_of(" \t\r\n") == std::string::npos) continue;
+      double azimuth = 0.0;
       try {
-        azimuths.push_back(std::stod(item));
+        azimuth = std::stod(item);
       } catch (const std::exception&) {
         throw Error(ErrorCode::InvalidModel, "azimuth angle '" + item + "' is not a number", {},
                     attachment.xpath + "/azimuthAngles");
       }
+      azimuths.push_back(model::finite(azimuth, attachment.xpath + "/azimuthAngles"));
     }
     return azimuths;
   }
   const long long count = attachment.numberOfBlades.value_or(0);
   if (count < 0)
     throw Error(ErrorCode::InvalidModel, "a negative number of blades", {}, attachment.xpath + "/numberOfBlades");
+  // No rotor or fan has so many; more would only fill the memory with blades.
+  if (count > kMostBlades)
+    throw Error(ErrorCode::InvalidModel,
+                std::to_string(count) + " blades, more than " + std::to_string(kMostBlades) + "; refused", {},
+                attachment.xpath + "/numberOfBlades");
   for (long long i = 0; i < count; ++i) azimuths.push_back(360.0 * static_cast<double>(i) / static_cast<double>(count));
   return azimuths;
 }
