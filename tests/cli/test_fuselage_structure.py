@@ -187,6 +187,20 @@ def test_fuselage_structure_errors_name_their_path(tmp_path):
     assert "wallPosition[8]/wallSegmentUID" in loop["error"] and "depends on itself" in loop["error"]
 
 
+def test_a_frame_or_stringer_position_that_is_no_number_is_refused(tmp_path):
+    # A NaN reference point once sent the frame's trace round the skin for ever.
+    path = tmp_path / "tube.xml"
+    write(path, "<frames>" + frame("Good", (5, 0)) + frame("NaN", (6, "nan")) + "</frames><stringers>" +
+          stringer("Infinite", (0, 0, "inf"), (10, 0, 90)) + "</stringers>")
+    queries = [{"op": "component_type", "uid": "Good"}] + [
+        {"op": "bounding_box", "uid": u} for u in ("Good", "NaN", "Infinite")]
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    kind, good, nan, infinite = (json.loads(line) for line in result.stdout.splitlines())
+    assert kind["ok"] == "frame" and "ok" in good
+    assert nan["error"].endswith("frame[2]/framePosition[1]/referenceY: not a finite number (NaN or INF)")
+    assert infinite["error"].endswith("stringer[1]/stringerPosition[1]/referenceAngle: not a finite number (NaN or INF)")
+
+
 def test_doors_are_the_skin_between_their_frames_and_stringers(tmp_path):
     path = tmp_path / "tube.xml"
     write(path, structure())

@@ -15,6 +15,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/placement.h"
 #include "faces_inside.h"
 
 namespace airshape::structure {
@@ -90,7 +91,11 @@ TopoDS_Face FuselageFrame::sectionFace(const std::string& sectionUid, const std:
 }
 
 double FuselageFrame::positionX(const schema::StringerFramePositionType& position) const {
-  if (position.positionX) return *position.positionX;
+  // Every use of a position asks for its station first: its other numbers are checked here too.
+  model::finite(position.referenceY, position.xpath + "/referenceY");
+  model::finite(position.referenceZ, position.xpath + "/referenceZ");
+  model::finite(position.referenceAngle, position.xpath + "/referenceAngle");
+  if (position.positionX) return model::finite(*position.positionX, position.xpath + "/positionX");
   const std::string where = position.xpath + "/sectionElementUID";
   const std::string& uid = position.sectionElementUID.value_or("");
   auto centreX = [&](const std::string& sectionUid) {

@@ -52,7 +52,8 @@ class FuselageFrame {
 
   /// A stringer or frame position's station: its positionX, or the x (fuselage coordinates) of
   /// the centre of the section its section element belongs to. Throws Error naming the position
-  /// for an element the body does not have.
+  /// for an element the body does not have, and naming the element for a position number
+  /// (positionX, referenceY, referenceZ, referenceAngle) that is not finite.
   double positionX(const schema::StringerFramePositionType& position) const;
   /// The first position of a frame that lies at another station than its first position (a
   /// riffled frame), or null when all share one.
