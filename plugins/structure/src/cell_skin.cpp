@@ -302,16 +302,14 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   loop.push_back(outerBack);
   for (const gp_Pnt& kink : corners.alongSpar(false, outerBack, innerBack)) loop.push_back(kink);
   loop.push_back(innerBack);
-  // Through each point of the outline a line along the chord surface's normal there (taken a
-  // little inside the cell, so that a border on a kink between segments takes the normal of the
-  // cell's own side); these lines sweep a prism reaching across the wing. On a wing without
-  // dihedral the lines are vertical.
+  // Through each point of the outline a line along the component segment's midplane normal at
+  // its eta (on a kink of the leading edge seen from the front, the normal of the bisector of its
+  // two directions, as the reference's cells have it); these lines sweep a prism reaching across
+  // the wing. On a wing without dihedral the lines are vertical.
   std::vector<double> etas;
   for (const gp_Pnt& point : loop) etas.push_back(frame.etaOf(point));
-  const double middle =
-      0.5 * (*std::min_element(etas.begin(), etas.end()) + *std::max_element(etas.begin(), etas.end()));
   std::vector<gp_Vec> normals;
-  for (const double eta : etas) normals.push_back(frame.midplaneNormal(eta + (middle > eta ? 1e-6 : -1e-6)));
+  for (const double eta : etas) normals.push_back(frame.midplaneNormal(eta));
   const TopoDS_Shape skin = frame.skin(cell.upper);
   if (!frame.inDevice())
     beyondSkinEnds(loop, etas, corners.alongSpar(true, innerFront, outerFront).size() + 1, boxCorners(skin, frame));

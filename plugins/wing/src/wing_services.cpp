@@ -214,7 +214,10 @@ class WingServicesOfThisPlugin final : public WingServices {
 
  private:
   /// The direction of the component segment's leading edge at eta, its points seen from the
-  /// front (x dropped) in the wing's own frame, eta taken as a share of that line's length.
+  /// front (x dropped) in the wing's own frame, eta taken as a share of that line's length; at a
+  /// kink of that line (within 1e-9 of its length) the bisector of the directions on either side
+  /// (multiple_wings.xml's W11 cell, whose border lies on such a kink, has the reference's box and
+  /// area so, and neither side's).
   static gp_Vec leadingEdgeSeenFromFront(const WingGeometry& geometry, const ComponentSegment& segment,
                                          const model::Transform& toWing, double eta) {
     std::vector<gp_Pnt> points;
@@ -229,8 +232,13 @@ class WingServicesOfThisPlugin final : public WingServices {
     double travelled = 0.0;
     for (std::size_t i = 1; i < points.size(); ++i) {
       const double piece = points[i - 1].Distance(points[i]);
-      if (piece > 1e-15 && (travelled + piece >= eta * total || i + 1 == points.size()))
-        return gp_Vec(points[i - 1], points[i]).Normalized();
+      if (piece > 1e-15 && (travelled + piece >= eta * total || i + 1 == points.size())) {
+        const gp_Vec here = gp_Vec(points[i - 1], points[i]).Normalized();
+        if (std::abs(travelled + piece - eta * total) <= 1e-9 * total && i + 1 < points.size() &&
+            points[i].Distance(points[i + 1]) > 1e-15)
+          return (here + gp_Vec(points[i], points[i + 1]).Normalized()).Normalized();
+        return here;
+      }
       travelled += piece;
     }
     throw Error(ErrorCode::InvalidModel, "the leading edge of the component segment has no spanwise extent");

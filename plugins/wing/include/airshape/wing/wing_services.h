@@ -74,7 +74,8 @@ class WingServices {
 
   /// The normal of the component segment's mid-plane at `eta`, in the global frame (not
   /// normalised): in the wing's own frame, the chord direction at eta crossed with the
-  /// spanwise direction of its leading edge seen from the front (x dropped); it points to
+  /// spanwise direction of its leading edge seen from the front (x dropped; eta a share of that
+  /// line's length, and on a kink of it the bisector of both sides' directions); it points to
   /// the upper skin.
   virtual gp_Vec midplaneNormal(const Configuration& configuration, const std::string& componentSegmentUid,
                                 double eta) const = 0;
