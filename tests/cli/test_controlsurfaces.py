@@ -319,6 +319,26 @@ def test_a_device_outside_its_wing_is_one_line(tmp_path):
     assert answer["error"].endswith("spoiler[1]/outerShape: the device's outline cuts nothing out of its wing")
 
 
+def test_a_step_value_that_is_not_finite_is_one_line_naming_it(tmp_path):
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    path = tmp_path / "nan-step.xml"
+    path.write_text(text.replace("<hingeLineRotation>-20</hingeLineRotation>", "<hingeLineRotation>nan</hingeLineRotation>",
+                                 1).replace("<controlParameter>1</controlParameter>",
+                                            "<controlParameter>inf</controlParameter>", 2))
+    queries = [{"op": "control_surface_deflection", "uid": "Slat", "control_parameter": 0.5},
+               {"op": "control_surface_parameter_range", "uid": "Flap"}]
+    result = airshape("query", str(path), stdin="".join(json.dumps(q) + "\n" for q in queries))
+    slat, flap = (json.loads(line) for line in result.stdout.splitlines())
+    assert slat["error"].endswith("leadingEdgeDevice[1]/path/steps/step[2]/controlParameter: not a finite number (NaN or INF)")
+    assert flap["error"].endswith("/path/steps/step[2]/controlParameter: not a finite number (NaN or INF)")
+    path.write_text(text.replace("<hingeLineRotation>-20</hingeLineRotation>", "<hingeLineRotation>nan</hingeLineRotation>",
+                                 1))
+    result = airshape("query", str(path), stdin=json.dumps(queries[0]) + "\n")
+    assert json.loads(result.stdout)["error"].endswith(
+        "leadingEdgeDevice[1]/path/steps/step[2]/hingeLineRotation: not a finite number (NaN or INF)")
+
+
 def test_control_surface_conformance_does_not_regress():
     passed, output = conformance_passed("cases-controlsurfaces.json")
     # 9 of 233 do not pass yet: boxes of trimmed device faces and one aileron's area

@@ -421,6 +421,7 @@ gp_Trsf DeviceGeometry::motionAt(double controlParameter) const {
   try {
     return hingeMotion(hinge->first, hinge->second, stepValuesAt(*device_.path->steps, controlParameter));
   } catch (const Error& error) {
+    if (!error.cpacsPath().empty()) throw;  // a step's value, named already
     throw Error(error.code(), error.message(), {}, device_.xpath + "/path");
   }
 }

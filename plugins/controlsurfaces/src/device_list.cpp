@@ -2,6 +2,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/model/placement.h"
 #include "airshape/model/primary_model.h"
 
 namespace airshape::controlsurfaces {
@@ -124,6 +125,7 @@ std::pair<double, double> parameterRangeOf(const Device& device) {
   if (device.path == nullptr || !device.path->steps || device.path->steps->step.empty())
     throw Error(ErrorCode::InvalidModel, "the control surface has no path steps", {}, device.xpath + "/path");
   const auto& steps = device.path->steps->step;
+  for (const auto& step : steps) model::finite(step.controlParameter, step.xpath + "/controlParameter");
   return {steps[0].controlParameter, steps[steps.size() - 1].controlParameter};
 }
 

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "airshape/error.h"
+#include "airshape/model/placement.h"
 
 namespace airshape::controlsurfaces {
 
@@ -22,17 +23,20 @@ Matrix rotationX(double a) { return Eigen::AngleAxisd(a, Vector::UnitX()).toRota
 Matrix rotationY(double a) { return Eigen::AngleAxisd(a, Vector::UnitY()).toRotationMatrix(); }
 Matrix rotationZ(double a) { return Eigen::AngleAxisd(a, Vector::UnitZ()).toRotationMatrix(); }
 
-/// The step values of one step, missing ones zero.
+/// The step values of one step, missing ones zero; a value that is not finite is an error
+/// naming it.
 StepValues valuesOf(const schema::ControlSurfaceStepType& step) {
   StepValues values;
-  values.rotation = step.hingeLineRotation.value_or(0.0);
+  values.rotation = model::finite(step.hingeLineRotation.value_or(0.0), step.xpath + "/hingeLineRotation");
   if (step.innerHingeTranslation) {
     const schema::PointType& t = *step.innerHingeTranslation;
-    values.innerTranslation.SetCoord(t.x.value_or(0.0), t.y.value_or(0.0), t.z.value_or(0.0));
+    values.innerTranslation.SetCoord(model::finite(t.x.value_or(0.0), t.xpath + "/x"),
+                                     model::finite(t.y.value_or(0.0), t.xpath + "/y"),
+                                     model::finite(t.z.value_or(0.0), t.xpath + "/z"));
   }
-  if (step.outerHingeTranslation)
-    values.outerTranslation.SetCoord(step.outerHingeTranslation->x, values.innerTranslation.Y(),
-                                     step.outerHingeTranslation->z);
+  if (const auto& outer = step.outerHingeTranslation)
+    values.outerTranslation.SetCoord(model::finite(outer->x, outer->xpath + "/x"), values.innerTranslation.Y(),
+                                     model::finite(outer->z, outer->xpath + "/z"));
   else
     values.outerTranslation.SetY(values.innerTranslation.Y());
   return values;
