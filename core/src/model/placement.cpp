@@ -184,8 +184,7 @@ double finite(double value, const std::string& xpath) {
 }
 
 double fraction(double value, const std::string& xpath) {
-  if (!(value >= 0.0 && value <= 1.0))
-  {
+  if (!(value >= 0.0 && value <= 1.0)) {
     std::ostringstream text;
     text << value << " is not a number in [0, 1]";
     throw Error(ErrorCode::InvalidModel, text.str(), {}, xpath);
