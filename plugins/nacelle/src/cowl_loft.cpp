@@ -23,7 +23,6 @@
 #include "airshape/geometry/curve_concatenation.h"
 #include "airshape/geometry/gordon_surface.h"
 #include "airshape/geometry/ruled_sections.h"
-#include "airshape/geometry/ruled_sections.h"
 #include "airshape/named_shape.h"
 #include "cowl_guides.h"
 #include "cowl_parts.h"
