@@ -16,14 +16,13 @@ namespace {
 using airshape::bench::openWithPlugins;
 using airshape::bench::sharedCpacs;
 
-void openAndExport(benchmark::State& state, const std::string& name, const std::string& extension, bool fused) {
+/// Opens the file and exports it with `options` to a file of the given extension, per iteration.
+void timeExport(benchmark::State& state, const std::string& name, const std::string& extension,
+                const airshape::exporting::ExportOptions& options) {
   const std::string path = sharedCpacs(name);
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / "airshape-bench-export";
   std::filesystem::create_directories(folder);
-  airshape::exporting::ExportOptions options;
-  options.fused = fused;
-  options.mirror = fused;
   airshape::bench::host();  // plugins loaded before the clock runs
   for (auto _ : state) {
     const airshape::Configuration configuration = openWithPlugins(path);
@@ -32,22 +31,20 @@ void openAndExport(benchmark::State& state, const std::string& name, const std::
   std::filesystem::remove_all(folder);
 }
 
+void openAndExport(benchmark::State& state, const std::string& name, const std::string& extension, bool fused) {
+  airshape::exporting::ExportOptions options;
+  options.fused = fused;
+  options.mirror = fused;
+  timeExport(state, name, extension, options);
+}
+
 // The structural model of one component segment (export --structure --components UID): its
 // structure built, joined with its faces by one general fuse, written as BREP.
 void openAndExportStructure(benchmark::State& state, const std::string& name, const std::string& host) {
-  const std::string path = sharedCpacs(name);
-  if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "airshape-bench-export-structure";
-  std::filesystem::create_directories(folder);
   airshape::exporting::ExportOptions options;
   options.structure = true;
   options.components = {host};
-  airshape::bench::host();
-  for (auto _ : state) {
-    const airshape::Configuration configuration = openWithPlugins(path);
-    airshape::exporting::exportConfiguration(configuration, (folder / "out.brep").string(), options);
-  }
-  std::filesystem::remove_all(folder);
+  timeExport(state, name, ".brep", options);
 }
 
 BENCHMARK_CAPTURE(openAndExportStructure, D250_winglet, std::string("CPACS_30_D250_10.xml"),

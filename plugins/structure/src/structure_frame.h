@@ -73,8 +73,7 @@ class StructureFrame {
   gp_Pnt positionPoint(const SparPosition& position) const;
 
   /// The closed solid of the component segment's wing segments (or the device's solid; global
-  /// frame), and the size of a box that
-  /// holds it (a length that surely reaches across it).
+  /// frame), and the size of a box that holds it (a length that surely reaches across it).
   const TopoDS_Shape& solid() const;
   double reach() const;
   /// The upper or the lower skin structure is bounded by (global frame): the component
