@@ -22,6 +22,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/geometry/tangent_contact.h"
 #include "airshape/geometry/traced_section.h"
 #include "airshape/query/arguments.h"
 
@@ -33,6 +34,8 @@ constexpr double kDefaultDeflection = 1e-3;
 constexpr double kChainingTolerance = 1e-6;
 /// How closely traced section curves follow the true crossing, as a share of the two shapes' size.
 constexpr double kTracingTolerance = 1e-9;
+/// How close a plane face and a surface must come to touch: OCCT's own confusion distance.
+constexpr double kContactTolerance = 1e-7;
 
 /// Whether two lines are one: the same ends (either way round) and the same length.
 bool sameLine(const TopoDS_Wire& a, const TopoDS_Wire& b) {
@@ -117,6 +120,15 @@ std::optional<std::vector<TopoDS_Wire>> tracedLines(const TopoDS_Shape& ruled, c
   return lines;
 }
 
+/// The lines' edges.
+std::vector<TopoDS_Edge> edgesOf(const std::vector<TopoDS_Wire>& lines) {
+  std::vector<TopoDS_Edge> edges;
+  for (const TopoDS_Wire& line : lines)
+    for (TopExp_Explorer explorer(line, TopAbs_EDGE); explorer.More(); explorer.Next())
+      edges.push_back(TopoDS::Edge(explorer.Current()));
+  return edges;
+}
+
 }  // namespace
 
 std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const TopoDS_Shape& second,
@@ -124,6 +136,9 @@ std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const Topo
   std::optional<std::vector<TopoDS_Wire>> wires = tracedLines(first, second);
   if (!wires) wires = tracedLines(second, first);
   if (!wires) wires = chained(sectionEdges(first, second, names));
+  // A wing's root laid on a fuselage's side touches it along a line the section misses.
+  if (const auto touching = geometry::withTangentContacts(edgesOf(*wires), first, second, kContactTolerance))
+    wires = chained(*touching);
   std::vector<TopoDS_Wire> lines;
   for (const TopoDS_Wire& wire : *wires)
     if (std::none_of(lines.begin(), lines.end(), [&](const TopoDS_Wire& kept) { return sameLine(kept, wire); }))
