@@ -20,8 +20,9 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/coons_patches.h"
 #include "airshape/geometry/curve_concatenation.h"
-#include "airshape/geometry/gordon_surface.h"
+#include "airshape/geometry/curve_network.h"
 #include "airshape/geometry/ruled_sections.h"
 #include "airshape/named_shape.h"
 #include "cowl_guides.h"
@@ -69,39 +70,85 @@ Handle(Geom_BSplineCurve) outline(const PlacedProfile& section, double startBlen
   return geometry::concatenateCurves(pieces);
 }
 
-/// The full circle about the x axis through `point`, starting at the angle `from` (radians) and
-/// running the way of rising angles, or of falling ones when `rising` is false.
-Handle(Geom_Curve) circleThrough(const gp_Pnt& point, double from, bool rising) {
-  const gp_Ax2 axes(gp_Pnt(point.X(), 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1));
-  Handle(Geom_TrimmedCurve) circle =
-      new Geom_TrimmedCurve(new Geom_Circle(axes, std::hypot(point.Y(), point.Z())), from, from + 2.0 * M_PI);
-  if (!rising) circle->Reverse();
-  return circle;
+/// A sector of a cowl: the angles (radians) from one section to the next about the x axis,
+/// `sweep` negative where the angles fall that way.
+struct Sector {
+  double start = 0, sweep = 0;
+};
+
+/// The sector an outer row spans, from its edge at v0 to its edge at v1.
+Sector sectorOf(const Handle(Geom_BSplineSurface) & row) {
+  double u0, u1, v0, v1;
+  row->Bounds(u0, u1, v0, v1);
+  const double start = angleOf(row->Value(u0, v0)), middle = angleOf(row->Value(u0, 0.5 * (v0 + v1)));
+  const double rising = std::fmod(angleOf(row->Value(u0, v1)) - start + 4.0 * M_PI, 2.0 * M_PI);
+  const bool throughMiddle = std::fmod(middle - start + 4.0 * M_PI, 2.0 * M_PI) < rising;
+  return {start, throughMiddle ? rising : rising - 2.0 * M_PI};
 }
 
-/// The ruled face between the outer surface's boundary at `u` (a closed curve around the
-/// engine) and the inner side's circle through `innerEnd`, both run the same way round.
-TopoDS_Face blendingFace(const Handle(Geom_BSplineSurface) & outer, double u, const gp_Pnt& innerEnd) {
-  const Handle(Geom_Curve) boundary = outer->UIso(u);
-  const double first = boundary->FirstParameter(), last = boundary->LastParameter();
-  const double start = angleOf(boundary->Value(first));
-  const double quarter = std::remainder(angleOf(boundary->Value(first + (last - first) / 4.0)) - start, 2.0 * M_PI);
-  const TopoDS_Face face =
-      geometry::ruledFaceBetween(BRepBuilderAPI_MakeEdge(boundary).Edge(),
-                                 BRepBuilderAPI_MakeEdge(circleThrough(innerEnd, start, quarter > 0.0)).Edge());
+/// The arc of the circle about the x axis through `point` over the sector.
+Handle(Geom_Curve) arcThrough(const gp_Pnt& point, const Sector& sector) {
+  const gp_Ax2 axes(gp_Pnt(point.X(), 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1));
+  const Handle(Geom_Circle) circle = new Geom_Circle(axes, std::hypot(point.Y(), point.Z()));
+  // The circle's parameter runs from +z towards −y, as the angles do.
+  const double end = sector.start + sector.sweep;
+  Handle(Geom_TrimmedCurve) arc =
+      new Geom_TrimmedCurve(circle, std::min(sector.start, end), std::max(sector.start, end));
+  if (sector.sweep < 0) arc->Reverse();
+  return arc;
+}
+
+/// The ruled face between a row's boundary at a blending zeta and the inner side's arc through
+/// `innerEnd` over the same sector, both run the same way round.
+TopoDS_Face blendingFace(const Handle(Geom_Curve) & boundary, const gp_Pnt& innerEnd, const Sector& sector) {
+  const TopoDS_Face face = geometry::ruledFaceBetween(BRepBuilderAPI_MakeEdge(boundary).Edge(),
+                                                      BRepBuilderAPI_MakeEdge(arcThrough(innerEnd, sector)).Edge());
   if (face.IsNull()) throw Error(ErrorCode::InvalidModel, "no ruled face joins the cowl's outer and inner side");
   return face;
 }
 
-/// The inner side: the rotation curve revolved once about the x axis, its seam at `angle` (radians).
-TopoDS_Face innerFace(const Handle(Geom_BSplineCurve) & inner, double angle) {
+/// The outer side as the reference library lofts sections with guides: one row of patches per
+/// sector (from one section to the next, the last back to the first), a patch per cell between
+/// two neighbouring guides, each the Coons filling of its four boundary pieces
+/// (geometry/coons_patches.h). The guides run smoothly (C2) through the sections, so every
+/// patch blends its sides in with 3t² − 2t³ across, as the fuselage's cells do where a guide
+/// runs smoothly through a profile (docs/fuselage.md).
+std::vector<Handle(Geom_BSplineSurface)> outerRows(const std::vector<Handle(Geom_BSplineCurve)>& outlines,
+                                                   const std::vector<Handle(Geom_BSplineCurve)>& guides,
+                                                   double crossingGap) {
+  const geometry::CurveNetwork network = geometry::buildCurveNetwork(outlines, guides, crossingGap);
+  const auto sections = static_cast<Eigen::Index>(network.profiles.size());
+  const auto columns = static_cast<Eigen::Index>(network.guides.size());
+  // The ring closes with the first section once more, one turn on along every guide.
+  std::vector<Handle(Geom_BSplineCurve)> ring = network.profiles;
+  ring.push_back(network.profiles.front());
+  geometry::KnownCrossings crossings;
+  crossings.profileParameters.resize(sections + 1, columns);
+  crossings.guideParameters.resize(sections + 1, columns);
+  for (Eigen::Index k = 0; k <= sections; ++k)
+    for (Eigen::Index l = 0; l < columns; ++l) {
+      const Handle(Geom_BSplineCurve)& guide = network.guides[static_cast<std::size_t>(l)];
+      const double turn = k == sections ? guide->LastParameter() - guide->FirstParameter() : 0.0;
+      crossings.profileParameters(k, l) = network.profileParameters(k % sections, l);
+      crossings.guideParameters(k, l) = network.guideParameters(k % sections, l) + turn;
+    }
+  return geometry::buildCoonsPatchRows(ring, network.guides, crossings,
+                                       [](std::size_t, std::size_t) { return geometry::PatchBlending::Rounded; });
+}
+
+/// The inner side over a sector: the rotation curve placed at the sector's start and turned
+/// through it about the x axis.
+TopoDS_Face innerFace(const Handle(Geom_BSplineCurve) & inner, const Sector& sector) {
   Handle(Geom_BSplineCurve) meridian = Handle(Geom_BSplineCurve)::DownCast(inner->Copy());
   for (int i = 1; i <= meridian->NbPoles(); ++i) {
     const gp_Pnt p = meridian->Pole(i);
     const double r = std::hypot(p.Y(), p.Z());
-    meridian->SetPole(i, gp_Pnt(p.X(), -r * std::sin(angle), r * std::cos(angle)));
+    meridian->SetPole(i, gp_Pnt(p.X(), -r * std::sin(sector.start), r * std::cos(sector.start)));
   }
-  BRepPrimAPI_MakeRevol sweep(BRepBuilderAPI_MakeEdge(meridian).Edge(), gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)));
+  // Turning about +x by a positive angle takes +z towards −y, the way the angles rise.
+  const gp_Dir axis = sector.sweep > 0 ? gp_Dir(1, 0, 0) : gp_Dir(-1, 0, 0);
+  BRepPrimAPI_MakeRevol sweep(BRepBuilderAPI_MakeEdge(meridian).Edge(), gp_Ax1(gp_Pnt(0, 0, 0), axis),
+                              std::abs(sector.sweep));
   return TopoDS::Face(sweep.Shape());
 }
 
@@ -122,8 +169,8 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
     throw Error(ErrorCode::InvalidModel, "startZetaBlending must lie behind endZetaBlending (be smaller)", {},
                 rotation.xpath);
 
-  // The outer surface: the Gordon surface through the sections' outlines and the guides at the
-  // outline's ends, leading edge, trailing edge(s) and the cowl's own guide zetas.
+  // The outer side: patches through the sections' outlines and the guides at the outlines'
+  // ends, leading edge, trailing edge(s) and the cowl's own guide zetas.
   const bool blunt = sections.front().at(1.0).Distance(sections.front().at(-1.0)) > Precision::Confusion();
   std::vector<double> required{endBlend, 0.0, -1.0, startBlend};
   if (blunt) required.push_back(1.0);
@@ -136,35 +183,39 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
                   cowl.xpath + "/guideCurves");
     guides.push_back(guide.curve);
   }
-  geometry::GordonTolerances tolerances;
-  tolerances.crossing = kCrossingGap * std::max(1.0, sections.front().chord());
-  Handle(Geom_BSplineSurface) outer;
+  std::vector<Handle(Geom_BSplineSurface)> rows;
   try {
-    // Around the engine the surface is periodic: its degree across the sections at most their count − 1.
-    const int degreeAround = std::min(3, static_cast<int>(sections.size()) - 1);
-    outer = geometry::buildGordonSurface(profiles, guides, tolerances, nullptr, degreeAround).surface;
+    rows = outerRows(profiles, guides, kCrossingGap * std::max(1.0, sections.front().chord()));
   } catch (const Error& error) {
     throw Error(error.code(), "the cowl's outer surface cannot be lofted: " + error.message(), {}, cowl.xpath);
   }
 
-  // Which end of the outlines (u) is at endZetaBlending, which at startZetaBlending.
-  double u0, u1, v0, v1;
-  outer->Bounds(u0, u1, v0, v1);
-  const gp_Pnt atEnd = sections.front().at(endBlend);
-  const bool startsAtEndBlend = outer->Value(u0, v0).Distance(atEnd) < outer->Value(u1, v0).Distance(atEnd);
-  const double uEndBlend = startsAtEndBlend ? u0 : u1, uStartBlend = startsAtEndBlend ? u1 : u0;
   // The inner curve's ends, each with the blending zeta it meets (the nearer one).
   gp_Pnt innerAtStartBlend = inner->StartPoint(), innerAtEndBlend = inner->EndPoint();
   const gp_Pnt outerStart = sections.front().at(startBlend);
   if (outerStart.Distance(innerAtEndBlend) < outerStart.Distance(innerAtStartBlend))
     std::swap(innerAtStartBlend, innerAtEndBlend);
+  // The row's boundary at u0 or u1 that lies at endZetaBlending: the one nearer that inner end's circle.
+  auto offCircle = [](const gp_Pnt& p, const gp_Pnt& onCircle) {
+    return std::hypot(p.X() - onCircle.X(), std::hypot(p.Y(), p.Z()) - std::hypot(onCircle.Y(), onCircle.Z()));
+  };
 
+  // Sector by sector, so that the faces meet along the same curves and sewing only matches them.
   const std::string name = cowl.uID;
-  std::vector<std::pair<std::string, TopoDS_Face>> faces{
-      {name + "/outer", BRepBuilderAPI_MakeFace(outer, Precision::Confusion()).Face()},
-      {name + "/blending", blendingFace(outer, uStartBlend, innerAtStartBlend)},
-      {name + "/blending", blendingFace(outer, uEndBlend, innerAtEndBlend)},
-      {name + "/inner", innerFace(inner, angleOf(outer->Value(u0, v0)))}};
+  std::vector<std::pair<std::string, TopoDS_Face>> faces;
+  for (const Handle(Geom_BSplineSurface) & row : rows) {
+    double u0, u1, v0, v1;
+    row->Bounds(u0, u1, v0, v1);
+    const Sector sector = sectorOf(row);
+    const gp_Pnt atU0 = row->Value(u0, v0);
+    const bool u0AtEndBlend = offCircle(atU0, innerAtEndBlend) < offCircle(atU0, innerAtStartBlend);
+    faces.emplace_back(name + "/outer", BRepBuilderAPI_MakeFace(row, Precision::Confusion()).Face());
+    faces.emplace_back(name + "/blending",
+                       blendingFace(row->UIso(u0), u0AtEndBlend ? innerAtEndBlend : innerAtStartBlend, sector));
+    faces.emplace_back(name + "/blending",
+                       blendingFace(row->UIso(u1), u0AtEndBlend ? innerAtStartBlend : innerAtEndBlend, sector));
+    faces.emplace_back(name + "/inner", innerFace(inner, sector));
+  }
   try {
     return sewnNamedSolid(faces).shape;
   } catch (const Error& error) {
