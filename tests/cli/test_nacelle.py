@@ -94,6 +94,21 @@ def test_an_engine_without_nacelle_has_no_shape():
     assert "has no nacelle" in error and "vehicles/engines/engine[6]" in error
 
 
+def test_an_engine_placed_beyond_any_precision_is_refused_and_the_rest_builds(tmp_path):
+    # A placement 1e300 away is finite, but OCCT's shape check crashed on the nacelle moved
+    # there; a transformation's numbers beyond 1e9 are refused, naming the number.
+    with open(ENGINES) as original:
+        text = original.read()
+    placed = '<engine uID="High"><name>p</name><engineUID>HighEngine</engineUID><parentUID>Rect</parentUID><transformation><translation><x>5</x><y>20</y><z>0</z>'
+    assert placed in text
+    path = tmp_path / "far.xml"
+    path.write_text(text.replace(placed, placed.replace("<z>0</z>", "<z>1e300</z>")))
+    result = airshape("build", str(path))
+    assert result.returncode == 1, result.stderr
+    assert "engines/engine[2]/transformation/translation/z: 1e+300 is beyond 1e+09" in result.stdout + result.stderr
+    assert "Low " in result.stdout and "FAILED" not in result.stdout.split("Low ")[1].splitlines()[0]
+
+
 def test_configuration_length_leaves_nacelles_and_empty_pylons_out():
     length, whole, *parts = ask(ENGINES, {"op": "configuration_length"}, {"op": "bounding_box"},
                                 *({"op": "bounding_box", "uid": uid} for uid in ("Rect", "Swept", "Pylon")))

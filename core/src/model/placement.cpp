@@ -15,9 +15,20 @@ namespace {
 
 double degrees(double value) { return value * M_PI / 180.0; }
 
-/// One coordinate of a point type, `absent` where it is left out.
+/// The largest translation, scaling or angle a transformation may hold. Beyond it neighbouring
+/// doubles lie more than OCCT's confusion distance (1e-7) apart, so that no shape placed there
+/// can be built or checked (OCCT's shape check crashed on a nacelle moved by 1e300).
+constexpr double kLargestPlacement = 1e9;
+
+/// One coordinate of a point type of a transformation, `absent` where it is left out.
 double coordinate(const std::optional<double>& value, const std::string& xpath, double absent = 0.0) {
-  return value ? finite(*value, xpath) : absent;
+  if (!value) return absent;
+  if (std::abs(finite(*value, xpath)) > kLargestPlacement) {
+    std::ostringstream text;
+    text << *value << " is beyond " << kLargestPlacement << ": no shape can be placed that far to OCCT's precision";
+    throw Error(ErrorCode::InvalidModel, text.str(), {}, xpath);
+  }
+  return *value;
 }
 
 /// The parentUID of a component that may have one (optional in the schema) or must (required).
