@@ -309,11 +309,12 @@ def test_guides_may_start_at_a_profile_parameter(tmp_path):
 
 
 def test_a_loft_that_cannot_be_built_names_the_fuselage(tmp_path):
-    """Sections 1e200 apart overflow the loft's parametrisation: the error names the
-    fuselage's segments, and the other fuselage still builds."""
+    """Two sections in one place leave the loft's interpolation singular: the error names the
+    fuselage's segments, and the other fuselage still builds. (Sections 1e200 apart, which
+    overflowed the loft, are now refused at their translation: beyond 1e9.)"""
     profile = f'<fuselageProfiles><fuselageProfile uID="Circle"><name>c</name>{circle(16)}</fuselageProfile></fuselageProfiles>'
     path = tmp_path / "far.xml"
-    path.write_text(HEADER + fuselage("Far", "Circle", 1e200, [0, 1, 1e200]) + fuselage("Near", "Circle", 10.0) +
+    path.write_text(HEADER + fuselage("Far", "Circle", 1.0, [0, 1, 1]) + fuselage("Near", "Circle", 10.0) +
                     f"</fuselages></model></aircraft><profiles>{profile}</profiles></vehicles></cpacs>")
     result = airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":"Far"}\n'
                                                  '{"op":"fuselage_volume","fuselage":"Near"}\n')
