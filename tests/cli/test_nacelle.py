@@ -109,6 +109,21 @@ def test_an_engine_placed_beyond_any_precision_is_refused_and_the_rest_builds(tm
     assert "Low " in result.stdout and "FAILED" not in result.stdout.split("Low ")[1].splitlines()[0]
 
 
+def test_two_sections_at_one_angle_are_refused_naming_them(tmp_path):
+    # The third section of the lofted cowl moved onto the second's angle: no patch fits between.
+    with open(ENGINES) as original:
+        text = original.read()
+    third = '<section uID="ThreeSectionEngineS2"><name>s</name><transformation><scaling><x>2</x><y>1</y><z>1</z></scaling><translation><x>240</x>'
+    assert third in text
+    path = tmp_path / "same.xml"
+    path.write_text(text.replace(third, third.replace("<x>240</x>", "<x>120</x>")))
+    result = airshape("query", str(path), stdin='{"op":"component_volume","uid":"Lofted"}\n{"op":"component_volume","uid":"Low"}\n')
+    lofted, low = (json.loads(line) for line in result.stdout.splitlines())
+    assert "engines/engine[4]/nacelle/fanCowl/sections" in lofted["error"], lofted
+    assert "'ThreeSectionEngineS1' and 'ThreeSectionEngineS2' lie at the same angle" in lofted["error"], lofted
+    assert low["ok"] > 0
+
+
 def test_configuration_length_leaves_nacelles_and_empty_pylons_out():
     length, whole, *parts = ask(ENGINES, {"op": "configuration_length"}, {"op": "bounding_box"},
                                 *({"op": "bounding_box", "uid": uid} for uid in ("Rect", "Swept", "Pylon")))

@@ -35,6 +35,8 @@ namespace {
 
 /// Largest gap where a section's outline and a guide cross (they are built to meet exactly).
 constexpr double kCrossingGap = 1e-6;
+/// Degrees: sections closer than this around the engine are at one angle.
+constexpr double kSameAngle = 1e-9;
 
 /// The angle of a point about the x axis, as the sections' angles count it (0 at +z, 90° at −y), radians.
 double angleOf(const gp_Pnt& p) { return std::atan2(-p.Y(), p.Z()); }
@@ -161,6 +163,16 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
   for (const auto& section : cowl.sections->section) sections.push_back(placedProfile(configuration, section));
   for (PlacedProfile& section : sections) section.angle = std::fmod(std::fmod(section.angle, 360.0) + 360.0, 360.0);
   std::sort(sections.begin(), sections.end(), [](const auto& a, const auto& b) { return a.angle < b.angle; });
+  // Around the engine each section must have an angle of its own (0° and 360° are one).
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    const PlacedProfile &section = sections[k], &next = sections[(k + 1) % sections.size()];
+    const double apart = k + 1 < sections.size() ? next.angle - section.angle : next.angle + 360.0 - section.angle;
+    if (sections.size() > 1 && apart < kSameAngle)
+      throw Error(ErrorCode::InvalidModel,
+                  "sections '" + section.uID + "' and '" + next.uID + "' lie at the same angle around the engine (" +
+                      std::to_string(section.angle) + "°, translation/x)",
+                  {}, cowl.xpath + "/sections");
+  }
 
   const double startBlend = rotation.startZetaBlending, endBlend = rotation.endZetaBlending;
   lengthShare(startBlend, rotation.xpath + "/startZetaBlending");
