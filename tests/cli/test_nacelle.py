@@ -94,15 +94,20 @@ def test_an_engine_without_nacelle_has_no_shape():
     assert "has no nacelle" in error and "vehicles/engines/engine[6]" in error
 
 
+def edited_engines(path, old, new):
+    """The engines file written to `path` with the one piece `old` replaced by `new`."""
+    with open(ENGINES) as original:
+        text = original.read()
+    assert text.count(old) == 1, old
+    path.write_text(text.replace(old, new))
+    return path
+
+
 def test_an_engine_placed_beyond_any_precision_is_refused_and_the_rest_builds(tmp_path):
     # A placement 1e300 away is finite, but OCCT's shape check crashed on the nacelle moved
     # there; a transformation's numbers beyond 1e9 are refused, naming the number.
-    with open(ENGINES) as original:
-        text = original.read()
     placed = '<engine uID="High"><name>p</name><engineUID>HighEngine</engineUID><parentUID>Rect</parentUID><transformation><translation><x>5</x><y>20</y><z>0</z>'
-    assert placed in text
-    path = tmp_path / "far.xml"
-    path.write_text(text.replace(placed, placed.replace("<z>0</z>", "<z>1e300</z>")))
+    path = edited_engines(tmp_path / "far.xml", placed, placed.replace("<z>0</z>", "<z>1e300</z>"))
     result = airshape("build", str(path))
     assert result.returncode == 1, result.stderr
     assert "engines/engine[2]/transformation/translation/z: 1e+300 is beyond 1e+09" in result.stdout + result.stderr
@@ -111,12 +116,8 @@ def test_an_engine_placed_beyond_any_precision_is_refused_and_the_rest_builds(tm
 
 def test_two_sections_at_one_angle_are_refused_naming_them(tmp_path):
     # The third section of the lofted cowl moved onto the second's angle: no patch fits between.
-    with open(ENGINES) as original:
-        text = original.read()
     third = '<section uID="ThreeSectionEngineS2"><name>s</name><transformation><scaling><x>2</x><y>1</y><z>1</z></scaling><translation><x>240</x>'
-    assert third in text
-    path = tmp_path / "same.xml"
-    path.write_text(text.replace(third, third.replace("<x>240</x>", "<x>120</x>")))
+    path = edited_engines(tmp_path / "same.xml", third, third.replace("<x>240</x>", "<x>120</x>"))
     result = airshape("query", str(path), stdin='{"op":"component_volume","uid":"Lofted"}\n{"op":"component_volume","uid":"Low"}\n')
     lofted, low = (json.loads(line) for line in result.stdout.splitlines())
     assert "engines/engine[4]/nacelle/fanCowl/sections" in lofted["error"], lofted

@@ -5,27 +5,14 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
-#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
-#include <GeomConvert.hxx>
-#include <Geom_CylindricalSurface.hxx>
-#include <Geom_RectangularTrimmedSurface.hxx>
-#include <gp_Ax3.hxx>
 
 #include "airshape/geometry/ruled_side.h"
+#include "tube_skin.h"
 
 namespace airshape::geometry {
 namespace {
-
-/// The skin of a tube of radius 1 about the x axis from x = 0 to 4, one untrimmed B-spline face.
-TopoDS_Shape unitTube() {
-  const Handle(Geom_CylindricalSurface) cylinder =
-      new Geom_CylindricalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1)), 1.0);
-  const Handle(Geom_RectangularTrimmedSurface) piece =
-      new Geom_RectangularTrimmedSurface(cylinder, 0.0, 2 * M_PI, 0.0, 4.0);
-  return BRepBuilderAPI_MakeFace(GeomConvert::SurfaceToBSplineSurface(piece), 1e-9).Face();
-}
 
 double areaOf(const TopoDS_Face& face) {
   GProp_GProps properties;
@@ -36,7 +23,7 @@ double areaOf(const TopoDS_Face& face) {
 constexpr double kTolerance = 1e-9;
 
 TEST(RuledSide, AStripFromItsBaseUpToTheSkinHasTheAreaBelowTheArc) {
-  const TopoDS_Shape tube = unitTube();
+  const TopoDS_Shape tube = test::tubeSkin(1.0);
   // Lines straight up from y = 0.3, z = 0 at x = 1 and x = 3, three units long.
   const RuledSide side = ruledSide({1, 0.3, 0}, {1, 0.3, 3}, {3, 0.3, 0}, {3, 0.3, 3});
   const auto part = sidePart(side, {SideBound::Kind::Start}, {SideBound::Kind::Skin, &tube, 0.0, +1}, kTolerance);
@@ -46,7 +33,7 @@ TEST(RuledSide, AStripFromItsBaseUpToTheSkinHasTheAreaBelowTheArc) {
 }
 
 TEST(RuledSide, AStripExtrudedBothWaysReachesTheSkinAboveAndBelow) {
-  const TopoDS_Shape tube = unitTube();
+  const TopoDS_Shape tube = test::tubeSkin(1.0);
   // The lines run from z = -3 to 3; their middle (the base) lies inside the tube.
   const RuledSide side = ruledSide({1, 0.3, -3}, {1, 0.3, 3}, {3, 0.3, -3}, {3, 0.3, 3});
   const auto part =
@@ -56,7 +43,7 @@ TEST(RuledSide, AStripExtrudedBothWaysReachesTheSkinAboveAndBelow) {
 }
 
 TEST(RuledSide, ALeaningStripThroughTheAxisReachesTheSkinOneUnitAway) {
-  const TopoDS_Shape tube = unitTube();
+  const TopoDS_Shape tube = test::tubeSkin(1.0);
   // The plane y = z tan(30°) through the axis leans by 30°: its lines from the axis reach the
   // skin one unit away, so the part is a rectangle two long and one wide.
   const gp_Vec along(0, std::sin(M_PI / 6), std::cos(M_PI / 6));
@@ -68,7 +55,7 @@ TEST(RuledSide, ALeaningStripThroughTheAxisReachesTheSkinOneUnitAway) {
 }
 
 TEST(RuledSide, RaysLeavingThroughTheOpenEndAreDeclined) {
-  const TopoDS_Shape tube = unitTube();
+  const TopoDS_Shape tube = test::tubeSkin(1.0);
   // From x = 3 to x = 5: the rays beyond x = 4 miss the skin.
   const RuledSide side = ruledSide({3, 0.3, 0}, {3, 0.3, 3}, {5, 0.3, 0}, {5, 0.3, 3});
   EXPECT_FALSE(

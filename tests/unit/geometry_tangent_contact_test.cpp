@@ -14,28 +14,20 @@
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <Geom_CylindricalSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax3.hxx>
 
 #include "airshape/geometry/tangent_contact.h"
+#include "tube_skin.h"
 
 namespace airshape::geometry {
 namespace {
 
 constexpr double kTolerance = 1e-7;
 
-/// The skin of a tube of radius 1 about the x axis from x = 0 to 4, one untrimmed B-spline face
-/// whose seam lies at z = 1.
-TopoDS_Shape tube() {
-  const Handle(Geom_CylindricalSurface) cylinder =
-      new Geom_CylindricalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1)), 1.0);
-  const Handle(Geom_RectangularTrimmedSurface) piece =
-      new Geom_RectangularTrimmedSurface(cylinder, 0.0, 2 * M_PI, 0.0, 4.0);
-  return BRepBuilderAPI_MakeFace(GeomConvert::SurfaceToBSplineSurface(piece), 1e-9).Face();
-}
+TopoDS_Shape tube() { return test::tubeSkin(1.0); }
 
 /// A plane face at y = `y` over x in [x0, x1] and z in [z0, z1].
 TopoDS_Shape plateAtY(double y, double x0, double x1, double z0, double z1) {
@@ -97,10 +89,7 @@ TEST(TangentContact, AFaceInThePlaneOrEndingOnItDoesNotTouchIt) {
   EXPECT_FALSE(
       withTangentContacts({}, plateAtY(1.0, 1.0, 3.0, -0.5, 0.5), flatPatchAtY(1.0, 0.0, 4.0, -1.0, 1.0), kTolerance));
   // A half tube ending on the plane y = 0 along two lines: its edges, no tangency.
-  const Handle(Geom_CylindricalSurface) cylinder =
-      new Geom_CylindricalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1)), 1.0);
-  const TopoDS_Shape halfTube = BRepBuilderAPI_MakeFace(
-      GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(cylinder, 0.0, M_PI, 0.0, 4.0)), 1e-9);
+  const TopoDS_Shape halfTube = test::tubeSkin(1.0, M_PI);
   EXPECT_FALSE(withTangentContacts({}, plateAtY(0.0, 1.0, 3.0, -2.0, 2.0), halfTube, kTolerance));
 }
 

@@ -14,32 +14,22 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRep_Builder.hxx>
-#include <GeomConvert.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <Geom_CylindricalSurface.hxx>
-#include <Geom_RectangularTrimmedSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <gp_Ax3.hxx>
 
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/traced_section.h"
+#include "tube_skin.h"
 
 namespace airshape::geometry {
 namespace {
 
-/// The skin of a tube about the x axis from x = 0 to 4, one untrimmed B-spline face.
-TopoDS_Shape tube(double radius) {
-  const Handle(Geom_CylindricalSurface) cylinder =
-      new Geom_CylindricalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0), gp_Dir(0, 0, 1)), radius);
-  const Handle(Geom_RectangularTrimmedSurface) piece =
-      new Geom_RectangularTrimmedSurface(cylinder, 0.0, 2 * M_PI, 0.0, 4.0);
-  return BRepBuilderAPI_MakeFace(GeomConvert::SurfaceToBSplineSurface(piece), 1e-9).Face();
-}
+TopoDS_Shape tube(double radius) { return test::tubeSkin(radius); }
 
 /// The ruled surface between the parabolic arc from (1, y, 0) over z = height at x = 2 to
 /// (3, y, 0) at y = root and the same arc at y = tip: its rulings run along y.

@@ -27,6 +27,7 @@
 #include <gp_Pln.hxx>
 
 #include "airshape/geometry/bspline_patch.h"
+#include "rectangular_patch.h"
 
 namespace airshape::geometry {
 
@@ -54,10 +55,7 @@ constexpr double kOnBothFaces = 100.0;
 
 /// Parameters through [low, high], `perSpan` in each knot span and at least kLeastSamples.
 std::vector<double> sampleParameters(const TColStd_Array1OfReal& knots, double low, double high, int perSpan) {
-  std::vector<double> breaks{low};
-  for (int i = knots.Lower(); i <= knots.Upper(); ++i)
-    if (knots(i) > low && knots(i) < high) breaks.push_back(knots(i));
-  breaks.push_back(high);
+  const std::vector<double> breaks = knotBreaks(knots, low, high);
   const int pieces = static_cast<int>(breaks.size()) - 1;
   const int perPiece = std::max(perSpan, kLeastSamples / pieces + 1);
   std::vector<double> parameters;
