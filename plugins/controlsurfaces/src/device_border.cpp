@@ -6,7 +6,6 @@
 
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeWire.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <GeomAPI.hxx>
@@ -66,60 +65,36 @@ std::pair<SkinCrossing, SkinCrossing> skinCrossings(const BorderDefinition& bord
   return {crossing(hits.front()), crossing(hits.back())};
 }
 
-TopoDS_Edge straightEdge(const BorderPlane& plane, const gp_Pnt2d& a, const gp_Pnt2d& b) {
-  return BRepBuilderAPI_MakeEdge(plane.at(a.X(), a.Y()), plane.at(b.X(), b.Y())).Edge();
-}
-
-/// Where a ray from `from` along `direction` reaches the height v = `height`.
-gp_Pnt2d reachHeight(const gp_Pnt2d& from, const gp_Vec2d& direction, double height) {
-  const double along = (height - from.Y()) / direction.Y();
-  return {from.X() + along * direction.X(), from.Y() + along * direction.Y()};
-}
-
-/// The corners of the part of a border wire outside the wing: from the upper skin point out
-/// along `upOut` to a height well above the wing, `reach` chords along x (negative: forward),
-/// down to as far below the wing, and back along `downOut` to the lower skin point.
-struct OuterCorners {
-  gp_Pnt2d upperOut, upperFar, lowerFar, lowerOut;
-};
-
-OuterCorners outerCorners(const BorderPlane& plane, const gp_Pnt2d& lower, const gp_Pnt2d& upper, gp_Vec2d upOut,
-                          gp_Vec2d downOut, double reach) {
-  if (upOut.Y() < 0) upOut.Reverse();
-  if (downOut.Y() > 0) downOut.Reverse();
-  const double height = std::abs(reach) * std::max(std::abs(lower.Y()), std::abs(upper.Y()));
-  return {reachHeight(upper, upOut, height), gp_Pnt2d(reach * plane.chord, height),
-          gp_Pnt2d(reach * plane.chord, -height), reachHeight(lower, downOut, -height)};
-}
-
-/// A straight line across the wing from the upper to the lower skin, closed well outside the
-/// wing aft of it (reach > 0) or ahead of it (reach < 0).
-TopoDS_Wire acrossWire(const BorderPlane& plane, const gp_Pnt2d& lower, const gp_Pnt2d& upper, double reach) {
-  const gp_Vec2d across(lower, upper);
-  const OuterCorners c = outerCorners(plane, lower, upper, across, across.Reversed(), reach);
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(straightEdge(plane, c.lowerOut, c.upperOut));
-  wire.Add(straightEdge(plane, c.upperOut, c.upperFar));
-  wire.Add(straightEdge(plane, c.upperFar, c.lowerFar));
-  wire.Add(straightEdge(plane, c.lowerFar, c.lowerOut));
-  return wire.Wire();
+/// A straight line across the wing from the upper to the lower skin; the device lies aft of it
+/// (reach > 0) or ahead of it (reach < 0).
+BorderOutline acrossOutline(const BorderPlane& plane, const gp_Pnt2d& lower, const gp_Pnt2d& upper, double reach) {
+  BorderOutline outline{BorderOutline::Kind::Across, plane};
+  outline.lower = lower;
+  outline.upper = upper;
+  outline.upOut = gp_Vec2d(lower, upper);
+  outline.downOut = outline.upOut.Reversed();
+  if (outline.upOut.Y() < 0) outline.upOut.Reverse();
+  if (outline.downOut.Y() > 0) outline.downOut.Reverse();
+  outline.reach = reach;
+  outline.height = std::abs(reach) * std::max(std::abs(lower.Y()), std::abs(upper.Y()));
+  return outline;
 }
 
 /// Cut straight across the wing at the border's leading edge, the device aft of it. A border
 /// whose leading edge is the wing's (the whole chord moves) touches the skins in one point:
 /// the cut then runs along the plane's y, as high and low as a chord.
-TopoDS_Wire straightWire(const BorderPlane& plane, const TopoDS_Shape& wing) {
+BorderOutline straightOutline(const BorderPlane& plane, const TopoDS_Shape& wing) {
   const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-9 * plane.chord);
   const bool atLeadingEdge = hits.size() < 2 || hits.front().point.Distance(hits.back().point) < 1e-7 * plane.chord;
-  if (atLeadingEdge) return acrossWire(plane, gp_Pnt2d(0.0, -plane.chord), gp_Pnt2d(0.0, plane.chord), kReach);
-  return acrossWire(plane, inPlane(plane, hits.front().point), inPlane(plane, hits.back().point), kReach);
+  if (atLeadingEdge) return acrossOutline(plane, gp_Pnt2d(0.0, -plane.chord), gp_Pnt2d(0.0, plane.chord), kReach);
+  return acrossOutline(plane, inPlane(plane, hits.front().point), inPlane(plane, hits.back().point), kReach);
 }
 
 /// A rounded edge from the lower skin through a middle point between the skins to the upper
 /// skin, leaving the skins along them; the device lies aft of it (reach > 0, a flap's nose)
 /// or ahead of it (reach < 0, a slat's hollow back).
-TopoDS_Wire shapedWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
-                       double reach) {
+BorderOutline shapedOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+                            double reach) {
   SkinCrossing lower, upper;
   if (std::abs(border.xsiUpperSkin - border.xsiLowerSkin) < 1e-10) {
     std::tie(lower, upper) = skinCrossings(border, plane, wing, border.xsiUpperSkin);
@@ -144,60 +119,60 @@ TopoDS_Wire shapedWire(const BorderDefinition& border, const BorderPlane& plane,
   if (!interpolation.IsDone())
     throw Error(ErrorCode::InvalidModel, "the border's rounded edge cannot be drawn", {}, border.xpath);
   const gp_Pln borderPlane(gp_Ax3(plane.origin, gp_Dir(plane.z), gp_Dir(plane.x)));
-  const TopoDS_Edge innerEdge = BRepBuilderAPI_MakeEdge(GeomAPI::To3d(interpolation.Curve(), borderPlane)).Edge();
 
-  const gp_Vec2d upOut(-upper.tangent.Y(), upper.tangent.X()), downOut(-lower.tangent.Y(), lower.tangent.X());
-  const OuterCorners c = outerCorners(plane, lower.point, upper.point, upOut, downOut, reach);
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(innerEdge);
-  wire.Add(straightEdge(plane, upper.point, c.upperOut));
-  wire.Add(straightEdge(plane, c.upperOut, c.upperFar));
-  wire.Add(straightEdge(plane, c.upperFar, c.lowerFar));
-  wire.Add(straightEdge(plane, c.lowerFar, c.lowerOut));
-  wire.Add(straightEdge(plane, c.lowerOut, lower.point));
-  return wire.Wire();
+  BorderOutline outline{BorderOutline::Kind::Shaped, plane};
+  outline.shaped = BRepBuilderAPI_MakeEdge(GeomAPI::To3d(interpolation.Curve(), borderPlane)).Edge();
+  outline.lower = lower.point;
+  outline.upper = upper.point;
+  // Out of the wing along the skins' normals.
+  outline.upOut = gp_Vec2d(-upper.tangent.Y(), upper.tangent.X());
+  outline.downOut = gp_Vec2d(-lower.tangent.Y(), lower.tangent.X());
+  if (outline.upOut.Y() < 0) outline.upOut.Reverse();
+  if (outline.downOut.Y() > 0) outline.downOut.Reverse();
+  outline.reach = reach;
+  outline.height = std::abs(reach) * std::max(std::abs(lower.point.Y()), std::abs(upper.point.Y()));
+  return outline;
 }
 
 /// A spoiler's section: the wing between the border's leading and trailing edge above the
 /// line at relHeight between the skins, closed well above the wing.
-TopoDS_Wire panelWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing) {
+BorderOutline panelOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing) {
   const auto [frontLower, frontUpper] = skinCrossings(border, plane, wing, 1.0);
   const auto [backLower, backUpper] = skinCrossings(border, plane, wing, 0.0);
   auto lowerSide = [&](const SkinCrossing& lower, const SkinCrossing& upper) {
     return gp_Pnt2d(lower.point.XY() * (1.0 - border.relHeight) + upper.point.XY() * border.relHeight);
   };
-  const gp_Pnt2d front = lowerSide(frontLower, frontUpper), back = lowerSide(backLower, backUpper);
-  const double height = kReach * std::max(std::abs(frontUpper.point.Y()), std::abs(backUpper.point.Y()));
-  const gp_Pnt2d frontUp(front.X(), height), backUp(back.X(), height);
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(straightEdge(plane, front, frontUp));
-  wire.Add(straightEdge(plane, frontUp, backUp));
-  wire.Add(straightEdge(plane, backUp, back));
-  wire.Add(straightEdge(plane, back, front));
-  return wire.Wire();
+  BorderOutline outline{BorderOutline::Kind::Panel, plane};
+  outline.upper = lowerSide(frontLower, frontUpper);
+  outline.lower = lowerSide(backLower, backUpper);
+  outline.upOut = outline.downOut = gp_Vec2d(0.0, 1.0);
+  outline.height = kReach * std::max(std::abs(frontUpper.point.Y()), std::abs(backUpper.point.Y()));
+  return outline;
 }
 
 /// The border's own airfoil: x scaled to the border's chord, z by its scaling, laid into the
 /// border plane (profile x along the chord, profile z along the plane's y).
-TopoDS_Wire airfoilWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Wire& airfoil) {
+BorderOutline airfoilOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Wire& airfoil) {
   gp_GTrsf place;
   // Profile y (zero on an airfoil) goes along the plane normal, keeping the map regular.
   place.SetVectorialPart(gp_Mat(plane.x.X() * plane.chord, plane.z.X(), plane.y.X() * border.airfoilScaleZ,
                                 plane.x.Y() * plane.chord, plane.z.Y(), plane.y.Y() * border.airfoilScaleZ,
                                 plane.x.Z() * plane.chord, plane.z.Z(), plane.y.Z() * border.airfoilScaleZ));
   place.SetTranslationPart(plane.origin.XYZ());
-  return TopoDS::Wire(BRepBuilderAPI_GTransform(airfoil, place, true).Shape());
+  BorderOutline outline{BorderOutline::Kind::Airfoil, plane};
+  outline.airfoil = TopoDS::Wire(BRepBuilderAPI_GTransform(airfoil, place, true).Shape());
+  return outline;
 }
 
 }  // namespace
 
-TopoDS_Wire skinCutOutWire(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare, double lowerShare,
-                           bool aft, const std::string& xpath) {
+BorderOutline skinCutOutOutline(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare,
+                                double lowerShare, bool aft, const std::string& xpath) {
   BorderDefinition border;
   border.xpath = xpath;
   const gp_Pnt2d upper = skinCrossings(border, plane, wing, 1.0 - upperShare).second.point;
   const gp_Pnt2d lower = skinCrossings(border, plane, wing, 1.0 - lowerShare).first.point;
-  return acrossWire(plane, lower, upper, aft ? kReach : -kReach);
+  return acrossOutline(plane, lower, upper, aft ? kReach : -kReach);
 }
 
 BorderPlane::BorderPlane(const gp_Pnt& leadingEdge, const gp_Pnt& trailingEdge, const gp_Vec& up)
@@ -210,23 +185,23 @@ BorderPlane::BorderPlane(const gp_Pnt& leadingEdge, const gp_Pnt& trailingEdge, 
   y = z.Crossed(x);
 }
 
-TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
-                       const TopoDS_Wire& airfoil) {
+BorderOutline borderOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+                            const TopoDS_Wire& airfoil) {
   switch (border.nose) {
     case BorderDefinition::Nose::LeadingEdgeShape:
-      return shapedWire(border, plane, wing, kReach);
+      return shapedOutline(border, plane, wing, kReach);
     case BorderDefinition::Nose::InnerShape:
-      return shapedWire(border, plane, wing, -kReach);
+      return shapedOutline(border, plane, wing, -kReach);
     case BorderDefinition::Nose::Airfoil:
-      return airfoilWire(border, plane, airfoil);
+      return airfoilOutline(border, plane, airfoil);
     case BorderDefinition::Nose::Panel:
-      return panelWire(border, plane, wing);
+      return panelOutline(border, plane, wing);
     case BorderDefinition::Nose::StraightBack:
       // The border's chord runs from xsi 0 (its leading edge) to xsiTE, the larger skin xsi.
-      return skinCutOutWire(plane, wing, border.xsiUpperSkin / border.xsiTE, border.xsiLowerSkin / border.xsiTE, false,
-                            border.xpath);
+      return skinCutOutOutline(plane, wing, border.xsiUpperSkin / border.xsiTE, border.xsiLowerSkin / border.xsiTE,
+                               false, border.xpath);
     default:
-      return straightWire(plane, wing);
+      return straightOutline(plane, wing);
   }
 }
 

@@ -2,10 +2,13 @@
 
 #include <string>
 
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
+#include <gp_Vec2d.hxx>
 
 #include "airshape/schema/generated/cpacs_model.h"
 
@@ -60,20 +63,43 @@ struct BorderPlane {
   gp_Pnt at(double u, double v) const { return origin.Translated(u * x + v * y); }
 };
 
-/// The closed wire of a border in its plane, enclosing the part of the wing section that
-/// belongs to the device and reaching well outside the wing elsewhere, so that a ruled solid
-/// between the inner and the outer border cuts the device out of the wing. `wing` is the
-/// clean wing solid whose skins the border meets; `airfoil` the border's own airfoil in
-/// profile coordinates (Nose::Airfoil only). Throws Error naming the border's CPACS path
-/// when the border does not cross the wing's skins.
-TopoDS_Wire borderWire(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
-                       const TopoDS_Wire& airfoil);
+/// A border's outline in its plane as far as it leaves the wing: the part inside the wing and
+/// the points and directions it leaves by. Outside the wing it is closed together with the
+/// device's other outlines (outline_closing.h), so that the ruled solid between them cuts the
+/// device out of the wing.
+struct BorderOutline {
+  enum class Kind {
+    Across,  ///< a straight line across the wing from `lower` to `upper`
+    Shaped,  ///< the rounded edge `shaped` from `lower` to `upper`
+    Panel,   ///< a spoiler's panel: its lower side inside the wing from `lower` (its back) to `upper` (its front)
+    Airfoil  ///< the border's own airfoil, closed in itself (`airfoil`)
+  };
+  BorderOutline(Kind outlineKind, const BorderPlane& borderPlane) : kind(outlineKind), plane(borderPlane) {}
+
+  Kind kind;
+  BorderPlane plane;
+  TopoDS_Wire airfoil;
+  TopoDS_Edge shaped;
+  gp_Pnt2d lower, upper;    ///< where the outline leaves the wing, in the plane's coordinates
+  gp_Vec2d upOut, downOut;  ///< the directions it leaves `upper` and `lower` along, outwards
+  /// Where it closes beyond the wing along the plane's x, in chords: aft (> 0) or ahead (< 0);
+  /// a panel closes above the wing only.
+  double reach = 0.0;
+  /// How far from the chord line the outline closes when closed on its own.
+  double height = 0.0;
+};
+
+/// The outline of a border. `wing` is the clean wing solid whose skins the border meets;
+/// `airfoil` the border's own airfoil in profile coordinates (Nose::Airfoil only). Throws
+/// Error naming the border's CPACS path when the border does not cross the wing's skins.
+BorderOutline borderOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+                            const TopoDS_Wire& airfoil);
 
 /// The outline of a skin cut-out in a border plane: the wing section aft of (`aft`; else ahead
 /// of) the straight line from the upper skin at `upperShare` of the chord (from the plane's
-/// origin) to the lower skin at `lowerShare`, reaching well outside the wing. Throws Error
-/// naming `xpath` when the lines at those shares do not cross both skins.
-TopoDS_Wire skinCutOutWire(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare, double lowerShare,
-                           bool aft, const std::string& xpath);
+/// origin) to the lower skin at `lowerShare`. Throws Error naming `xpath` when the lines at
+/// those shares do not cross both skins.
+BorderOutline skinCutOutOutline(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare,
+                                double lowerShare, bool aft, const std::string& xpath);
 
 }  // namespace airshape::controlsurfaces

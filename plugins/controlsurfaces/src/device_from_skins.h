@@ -33,7 +33,7 @@ struct DeviceFaceNames {
 
 /// The device at rest (the wing in common with the ruled solid between its inner and outer
 /// border) made from the wing's faces without a Boolean operation. Both borders' outlines
-/// (borderWire) are of one kind with corners in the same order: four straight edges (a straight
+/// (closedOutlines) are of one kind with corners in the same order: four straight edges (a straight
 /// cut across the wing, a panel) or a shaped edge between the skins followed by five straight
 /// ones (a rounded nose, a hollow back), whose ruled face between the borders is `shapedSide`
 /// (the cutter's). `cutter` is the ruled solid itself, which tells which pieces of the skins

@@ -25,6 +25,7 @@
 #include "device_from_skins.h"
 #include "hinge_motion.h"
 #include "line_crossings.h"
+#include "outline_closing.h"
 
 namespace airshape::controlsurfaces {
 
@@ -123,12 +124,12 @@ gp_Vec DeviceGeometry::upward() const {
       .Crossed(gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 1.0, 0.0, Surface::Chord)));
 }
 
-TopoDS_Wire DeviceGeometry::borderWireOf(const BorderDefinition& border, const BorderPlane& plane) const {
+BorderOutline DeviceGeometry::borderOutlineOf(const BorderDefinition& border, const BorderPlane& plane) const {
   try {
     const TopoDS_Wire airfoil = border.nose == BorderDefinition::Nose::Airfoil
                                     ? wing_.airfoilWire(configuration_, border.airfoilUid)
                                     : TopoDS_Wire();
-    return borderWire(border, plane, wing_.cleanSolid(configuration_, device_.wingUid), airfoil);
+    return borderOutline(border, plane, wing_.cleanSolid(configuration_, device_.wingUid), airfoil);
   } catch (const Error& error) {
     if (!error.cpacsPath().empty()) throw;
     throw Error(error.code(), error.message(), {}, border.xpath);
@@ -163,7 +164,7 @@ std::vector<TopoDS_Wire> DeviceGeometry::intermediateWires(const BorderPlane& in
     section.nose = BorderDefinition::Nose::Airfoil;
     section.airfoilUid = airfoil.airfoilUid;
     section.airfoilScaleZ = airfoil.scaleZ;
-    placed.emplace_back(share, borderWireOf(section, plane));
+    placed.emplace_back(share, closedOutlines({borderOutlineOf(section, plane)}).front());
   }
   std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<TopoDS_Wire> wires;
@@ -208,9 +209,10 @@ DeviceGeometry::Outlines DeviceGeometry::outlines() const {
   return *configuration_.cache().obtain<Outlines>("device-outlines:" + device_.uid, [&] {
     const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
     const double size = innerPlane.chord + outerPlane.chord + innerPlane.origin.Distance(outerPlane.origin);
-    return std::make_shared<const Outlines>(Outlines{borderWireOf(device_.innerBorder, innerPlane),
-                                                     borderWireOf(device_.outerBorder, outerPlane),
-                                                     intermediateWires(innerPlane, outerPlane), size});
+    const std::vector<TopoDS_Wire> borders = closedOutlines(
+        {borderOutlineOf(device_.innerBorder, innerPlane), borderOutlineOf(device_.outerBorder, outerPlane)});
+    return std::make_shared<const Outlines>(
+        Outlines{borders[0], borders[1], intermediateWires(innerPlane, outerPlane), size});
   });
 }
 
@@ -357,14 +359,14 @@ TopoDS_Shape DeviceGeometry::skinCutOut() const {
                  .Dot(plane.x) /
              plane.chord;
     };
-    return skinCutOutWire(plane, wing_.cleanSolid(configuration_, device_.wingUid), share(upperXsi), share(lowerXsi),
-                          aft, xpath);
+    return skinCutOutOutline(plane, wing_.cleanSolid(configuration_, device_.wingUid), share(upperXsi), share(lowerXsi),
+                             aft, xpath);
   };
   const geometry::RuledSections loft =
-      geometry::ruledThroughSections({outline(device_.outerBorder, cutOut.outerEtaLE, cutOut.outerEtaTE,
-                                              cutOut.upperOuter, cutOut.lowerOuter, cutOut.xpath),
-                                      outline(device_.innerBorder, cutOut.innerEtaLE, cutOut.innerEtaTE,
-                                              cutOut.upperInner, cutOut.lowerInner, cutOut.xpath)});
+      geometry::ruledThroughSections(closedOutlines({outline(device_.outerBorder, cutOut.outerEtaLE, cutOut.outerEtaTE,
+                                                             cutOut.upperOuter, cutOut.lowerOuter, cutOut.xpath),
+                                                     outline(device_.innerBorder, cutOut.innerEtaLE, cutOut.innerEtaTE,
+                                                             cutOut.upperInner, cutOut.lowerInner, cutOut.xpath)}));
   if (loft.solid.IsNull())
     throw Error(ErrorCode::InvalidModel, "no solid joins the cut-out's borders", {}, cutOut.xpath);
   return loft.solid;

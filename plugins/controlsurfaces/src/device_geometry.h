@@ -80,7 +80,7 @@ class DeviceGeometry {
   BorderPlane borderPlaneOf(const BorderDefinition& border) const;
   /// The component segment's upward direction: its inner chord crossed with its leading edge.
   gp_Vec upward() const;
-  TopoDS_Wire borderWireOf(const BorderDefinition& border, const BorderPlane& plane) const;
+  BorderOutline borderOutlineOf(const BorderDefinition& border, const BorderPlane& plane) const;
   /// The wires of the intermediate airfoils, from the inner border outwards, each in the plane
   /// between the borders' planes at its eta.
   std::vector<TopoDS_Wire> intermediateWires(const BorderPlane& inner, const BorderPlane& outer) const;

@@ -66,7 +66,7 @@ TopoDS_Wire outline(double y, const std::vector<std::pair<double, double>>& corn
 }
 
 /// A straight cut across the wing at x, from below the wing to above it, closed far aft
-/// (`reach` > 0) or far ahead (< 0), as borderWire draws it.
+/// (`reach` > 0) or far ahead (< 0), as borderOutline and closedOutlines draw it.
 TopoDS_Wire cutAt(double y, double x, double reach) {
   return outline(y, {{x, -0.5}, {x, 0.5}, {x + reach, 0.5}, {x + reach, -0.5}});
 }
@@ -128,7 +128,7 @@ TEST(DeviceFromSkins, ASpoilerIsTheUpperSkinAboveItsPanel) {
 
 /// A rounded nose at x in the border plane y: a parabola from the lower skin forward through
 /// (x - depth, 0) to the upper skin, then straight edges up, far aft, down and forward back to
-/// the lower skin, as borderWire draws a flap's leading-edge shape.
+/// the lower skin, as borderOutline draws a flap's leading-edge shape.
 TopoDS_Wire roundedNoseAt(double y, double x, double depth) {
   const double upper = 4.0 * kUpperCrest * x * (1.0 - x), lower = -4.0 * kLowerCrest * x * (1.0 - x);
   TColgp_Array1OfPnt poles(1, 3);
