@@ -52,9 +52,9 @@ gp_Vec2d inPlane(const BorderPlane& plane, const gp_Vec& v) { return {v.Dot(plan
 /// The lower and the upper skin crossing of the line normal to the chord at `xsi`, a share
 /// of the chord counted from the trailing-edge point (1 is the leading-edge point).
 std::pair<SkinCrossing, SkinCrossing> skinCrossings(const BorderDefinition& border, const BorderPlane& plane,
-                                                    const TopoDS_Shape& wing, double xsi) {
+                                                    LineCrossings& wing, double xsi) {
   const gp_Pnt start = plane.at((1.0 - xsi) * plane.chord, 0.0);
-  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(start, gp_Dir(plane.y)), 1e-9 * plane.chord);
+  const std::vector<LineCrossing> hits = wing.of(gp_Lin(start, gp_Dir(plane.y)), 1e-9 * plane.chord);
   if (hits.size() < 2)
     throw Error(ErrorCode::InvalidModel,
                 "the border does not cross both skins of the wing at xsi " + std::to_string(xsi) + " of its chord", {},
@@ -83,8 +83,8 @@ BorderOutline acrossOutline(const BorderPlane& plane, const gp_Pnt2d& lower, con
 /// Cut straight across the wing at the border's leading edge, the device aft of it. A border
 /// whose leading edge is the wing's (the whole chord moves) touches the skins in one point:
 /// the cut then runs along the plane's y, as high and low as a chord.
-BorderOutline straightOutline(const BorderPlane& plane, const TopoDS_Shape& wing) {
-  const std::vector<LineCrossing> hits = crossingsOf(wing, gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-9 * plane.chord);
+BorderOutline straightOutline(const BorderPlane& plane, LineCrossings& wing) {
+  const std::vector<LineCrossing> hits = wing.of(gp_Lin(plane.origin, gp_Dir(plane.y)), 1e-9 * plane.chord);
   const bool atLeadingEdge = hits.size() < 2 || hits.front().point.Distance(hits.back().point) < 1e-7 * plane.chord;
   if (atLeadingEdge) return acrossOutline(plane, gp_Pnt2d(0.0, -plane.chord), gp_Pnt2d(0.0, plane.chord), kReach);
   return acrossOutline(plane, inPlane(plane, hits.front().point), inPlane(plane, hits.back().point), kReach);
@@ -93,7 +93,7 @@ BorderOutline straightOutline(const BorderPlane& plane, const TopoDS_Shape& wing
 /// A rounded edge from the lower skin through a middle point between the skins to the upper
 /// skin, leaving the skins along them; the device lies aft of it (reach > 0, a flap's nose)
 /// or ahead of it (reach < 0, a slat's hollow back).
-BorderOutline shapedOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+BorderOutline shapedOutline(const BorderDefinition& border, const BorderPlane& plane, LineCrossings& wing,
                             double reach) {
   SkinCrossing lower, upper;
   if (std::abs(border.xsiUpperSkin - border.xsiLowerSkin) < 1e-10) {
@@ -136,7 +136,7 @@ BorderOutline shapedOutline(const BorderDefinition& border, const BorderPlane& p
 
 /// A spoiler's section: the wing between the border's leading and trailing edge above the
 /// line at relHeight between the skins, closed well above the wing.
-BorderOutline panelOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing) {
+BorderOutline panelOutline(const BorderDefinition& border, const BorderPlane& plane, LineCrossings& wing) {
   const auto [frontLower, frontUpper] = skinCrossings(border, plane, wing, 1.0);
   const auto [backLower, backUpper] = skinCrossings(border, plane, wing, 0.0);
   auto lowerSide = [&](const SkinCrossing& lower, const SkinCrossing& upper) {
@@ -166,8 +166,8 @@ BorderOutline airfoilOutline(const BorderDefinition& border, const BorderPlane& 
 
 }  // namespace
 
-BorderOutline skinCutOutOutline(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare,
-                                double lowerShare, bool aft, const std::string& xpath) {
+BorderOutline skinCutOutOutline(const BorderPlane& plane, LineCrossings& wing, double upperShare, double lowerShare,
+                                bool aft, const std::string& xpath) {
   BorderDefinition border;
   border.xpath = xpath;
   const gp_Pnt2d upper = skinCrossings(border, plane, wing, 1.0 - upperShare).second.point;
@@ -185,7 +185,7 @@ BorderPlane::BorderPlane(const gp_Pnt& leadingEdge, const gp_Pnt& trailingEdge, 
   y = z.Crossed(x);
 }
 
-BorderOutline borderOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+BorderOutline borderOutline(const BorderDefinition& border, const BorderPlane& plane, LineCrossings& wing,
                             const TopoDS_Wire& airfoil) {
   switch (border.nose) {
     case BorderDefinition::Nose::LeadingEdgeShape:

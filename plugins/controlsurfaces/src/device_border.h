@@ -11,6 +11,7 @@
 #include <gp_Vec2d.hxx>
 
 #include "airshape/schema/generated/cpacs_model.h"
+#include "line_crossings.h"
 
 namespace airshape::controlsurfaces {
 
@@ -89,17 +90,17 @@ struct BorderOutline {
   double height = 0.0;
 };
 
-/// The outline of a border. `wing` is the clean wing solid whose skins the border meets;
+/// The outline of a border. `wing` finds where lines meet the clean wing solid's skins;
 /// `airfoil` the border's own airfoil in profile coordinates (Nose::Airfoil only). Throws
 /// Error naming the border's CPACS path when the border does not cross the wing's skins.
-BorderOutline borderOutline(const BorderDefinition& border, const BorderPlane& plane, const TopoDS_Shape& wing,
+BorderOutline borderOutline(const BorderDefinition& border, const BorderPlane& plane, LineCrossings& wing,
                             const TopoDS_Wire& airfoil);
 
 /// The outline of a skin cut-out in a border plane: the wing section aft of (`aft`; else ahead
 /// of) the straight line from the upper skin at `upperShare` of the chord (from the plane's
 /// origin) to the lower skin at `lowerShare`. Throws Error naming `xpath` when the lines at
 /// those shares do not cross both skins.
-BorderOutline skinCutOutOutline(const BorderPlane& plane, const TopoDS_Shape& wing, double upperShare,
-                                double lowerShare, bool aft, const std::string& xpath);
+BorderOutline skinCutOutOutline(const BorderPlane& plane, LineCrossings& wing, double upperShare, double lowerShare,
+                                bool aft, const std::string& xpath);
 
 }  // namespace airshape::controlsurfaces

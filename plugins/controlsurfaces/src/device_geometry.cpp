@@ -124,19 +124,21 @@ gp_Vec DeviceGeometry::upward() const {
       .Crossed(gp_Vec(innerFront, wing_.componentSegmentPoint(configuration_, cs, 1.0, 0.0, Surface::Chord)));
 }
 
-BorderOutline DeviceGeometry::borderOutlineOf(const BorderDefinition& border, const BorderPlane& plane) const {
+BorderOutline DeviceGeometry::borderOutlineOf(const BorderDefinition& border, const BorderPlane& plane,
+                                              LineCrossings& wing) const {
   try {
     const TopoDS_Wire airfoil = border.nose == BorderDefinition::Nose::Airfoil
                                     ? wing_.airfoilWire(configuration_, border.airfoilUid)
                                     : TopoDS_Wire();
-    return borderOutline(border, plane, wing_.cleanSolid(configuration_, device_.wingUid), airfoil);
+    return borderOutline(border, plane, wing, airfoil);
   } catch (const Error& error) {
     if (!error.cpacsPath().empty()) throw;
     throw Error(error.code(), error.message(), {}, border.xpath);
   }
 }
 
-std::vector<TopoDS_Wire> DeviceGeometry::intermediateWires(const BorderPlane& inner, const BorderPlane& outer) const {
+std::vector<TopoDS_Wire> DeviceGeometry::intermediateWires(const BorderPlane& inner, const BorderPlane& outer,
+                                                           LineCrossings& wing) const {
   if (device_.intermediateAirfoils.empty()) return {};
   if (device_.innerBorder.nose != BorderDefinition::Nose::Airfoil ||
       device_.outerBorder.nose != BorderDefinition::Nose::Airfoil) {
@@ -164,7 +166,7 @@ std::vector<TopoDS_Wire> DeviceGeometry::intermediateWires(const BorderPlane& in
     section.nose = BorderDefinition::Nose::Airfoil;
     section.airfoilUid = airfoil.airfoilUid;
     section.airfoilScaleZ = airfoil.scaleZ;
-    placed.emplace_back(share, closedOutlines({borderOutlineOf(section, plane)}).front());
+    placed.emplace_back(share, closedOutlines({borderOutlineOf(section, plane, wing)}).front());
   }
   std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<TopoDS_Wire> wires;
@@ -209,10 +211,11 @@ DeviceGeometry::Outlines DeviceGeometry::outlines() const {
   return *configuration_.cache().obtain<Outlines>("device-outlines:" + device_.uid, [&] {
     const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
     const double size = innerPlane.chord + outerPlane.chord + innerPlane.origin.Distance(outerPlane.origin);
-    const std::vector<TopoDS_Wire> borders = closedOutlines(
-        {borderOutlineOf(device_.innerBorder, innerPlane), borderOutlineOf(device_.outerBorder, outerPlane)});
+    LineCrossings wing(wing_.cleanSolid(configuration_, device_.wingUid));
+    const std::vector<TopoDS_Wire> borders = closedOutlines({borderOutlineOf(device_.innerBorder, innerPlane, wing),
+                                                             borderOutlineOf(device_.outerBorder, outerPlane, wing)});
     return std::make_shared<const Outlines>(
-        Outlines{borders[0], borders[1], intermediateWires(innerPlane, outerPlane), size});
+        Outlines{borders[0], borders[1], intermediateWires(innerPlane, outerPlane, wing), size});
   });
 }
 
@@ -344,6 +347,7 @@ TopoDS_Shape DeviceGeometry::skinCutOut() const {
   const bool aft = device_.kind == Device::Kind::TrailingEdge;
   // The outline at one end: in the cut-out border's own plane where it gives its etas, else in
   // the device border's; the skins' xsi are component segment xsi at that plane's front.
+  LineCrossings wing(wing_.cleanSolid(configuration_, device_.wingUid));
   auto outline = [&](const BorderDefinition& border, const std::optional<RelativeCoordinate>& etaLE,
                      const std::optional<RelativeCoordinate>& etaTE, double upperXsi, double lowerXsi,
                      const std::string& xpath) {
@@ -359,8 +363,7 @@ TopoDS_Shape DeviceGeometry::skinCutOut() const {
                  .Dot(plane.x) /
              plane.chord;
     };
-    return skinCutOutOutline(plane, wing_.cleanSolid(configuration_, device_.wingUid), share(upperXsi), share(lowerXsi),
-                             aft, xpath);
+    return skinCutOutOutline(plane, wing, share(upperXsi), share(lowerXsi), aft, xpath);
   };
   const geometry::RuledSections loft =
       geometry::ruledThroughSections(closedOutlines({outline(device_.outerBorder, cutOut.outerEtaLE, cutOut.outerEtaTE,
@@ -375,7 +378,7 @@ TopoDS_Shape DeviceGeometry::skinCutOut() const {
 std::pair<double, double> DeviceGeometry::parameterRange() const { return parameterRangeOf(device_); }
 
 gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,
-                                  const char* which) const {
+                                  const char* which, const std::array<LineCrossings*, 2>& skins) const {
   const std::string xpath = device_.xpath + "/path/" + which;
   model::fraction(hinge.hingeXsi, xpath + "/hingeXsi");
   model::fraction(hinge.hingeRelHeight, xpath + "/hingeRelHeight");
@@ -388,9 +391,16 @@ gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hi
   const std::string& cs = device_.componentSegmentUid;
   const double chord = wing_.componentSegmentPoint(configuration_, cs, eta, 0.0, Surface::Chord)
                            .Distance(wing_.componentSegmentPoint(configuration_, cs, eta, 1.0, Surface::Chord));
-  const double reach = 10.0 * chord;
-  const gp_Pnt upper = nearestToLine(wing_.componentSegmentSkin(configuration_, cs, Surface::Upper), across, reach);
-  const gp_Pnt lower = nearestToLine(wing_.componentSegmentSkin(configuration_, cs, Surface::Lower), across, reach);
+  const auto onSkin = [&](LineCrossings& skin) {
+    // Meeting the line is cheap; the nearest point (a hinge beyond the skin's edge) is not.
+    const std::vector<LineCrossing> hits = skin.of(across, 1e-9 * chord);
+    if (hits.empty()) return nearestToLine(skin.shape(), across, 10.0 * chord);
+    return std::min_element(
+               hits.begin(), hits.end(),
+               [](const LineCrossing& a, const LineCrossing& b) { return std::abs(a.along) < std::abs(b.along); })
+        ->point;
+  };
+  const gp_Pnt upper = onSkin(*skins[0]), lower = onSkin(*skins[1]);
   const gp_Pnt between(lower.XYZ() + hinge.hingeRelHeight * (upper.XYZ() - lower.XYZ()));
 
   // The reference places hinge points by the wing's own transformation only.
@@ -416,9 +426,12 @@ gp_Trsf DeviceGeometry::motionAt(double controlParameter) const {
   // motion alone.
   using HingeLine = std::pair<gp_Pnt, gp_Pnt>;
   const auto hinge = configuration_.cache().obtain<HingeLine>("device-hinge-line:" + device_.uid, [&] {
+    const std::string& cs = device_.componentSegmentUid;
+    LineCrossings upper(wing_.componentSegmentSkin(configuration_, cs, Surface::Upper));
+    LineCrossings lower(wing_.componentSegmentSkin(configuration_, cs, Surface::Lower));
     return std::make_shared<const HingeLine>(
-        hingePoint(*device_.path->innerHingePoint, device_.innerBorder, "innerHingePoint"),
-        hingePoint(*device_.path->outerHingePoint, device_.outerBorder, "outerHingePoint"));
+        hingePoint(*device_.path->innerHingePoint, device_.innerBorder, "innerHingePoint", {&upper, &lower}),
+        hingePoint(*device_.path->outerHingePoint, device_.outerBorder, "outerHingePoint", {&upper, &lower}));
   });
   try {
     return hingeMotion(hinge->first, hinge->second, stepValuesAt(*device_.path->steps, controlParameter));

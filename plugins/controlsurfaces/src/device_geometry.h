@@ -4,6 +4,7 @@
 #include <gp_Pnt.hxx>
 #include <gp_Trsf.hxx>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -80,14 +81,17 @@ class DeviceGeometry {
   BorderPlane borderPlaneOf(const BorderDefinition& border) const;
   /// The component segment's upward direction: its inner chord crossed with its leading edge.
   gp_Vec upward() const;
-  BorderOutline borderOutlineOf(const BorderDefinition& border, const BorderPlane& plane) const;
+  /// A border's outline in its plane; `wing` meets lines with the clean wing.
+  BorderOutline borderOutlineOf(const BorderDefinition& border, const BorderPlane& plane, LineCrossings& wing) const;
   /// The wires of the intermediate airfoils, from the inner border outwards, each in the plane
   /// between the borders' planes at its eta.
-  std::vector<TopoDS_Wire> intermediateWires(const BorderPlane& inner, const BorderPlane& outer) const;
+  std::vector<TopoDS_Wire> intermediateWires(const BorderPlane& inner, const BorderPlane& outer,
+                                             LineCrossings& wing) const;
   /// A hinge point at rest: between the skins at the hinge's xsi on the border's leading
-  /// edge, in the global frame without the wing's parent translation (as the reference).
+  /// edge, in the global frame without the wing's parent translation (as the reference);
+  /// `skins` meet lines with the component segment's upper and lower skin.
   gp_Pnt hingePoint(const schema::ControlSurfaceHingePointType& hinge, const BorderDefinition& border,
-                    const char* which) const;
+                    const char* which, const std::array<LineCrossings*, 2>& skins) const;
 
   const Configuration& configuration_;
   const wing::WingServices& wing_;

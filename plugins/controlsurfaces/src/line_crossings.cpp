@@ -4,23 +4,31 @@
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
-#include <BRepIntCurveSurface_Inter.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Surface.hxx>
+#include <Precision.hxx>
 #include <TopoDS_Edge.hxx>
 
 #include "airshape/error.h"
 
 namespace airshape::controlsurfaces {
 
-std::vector<LineCrossing> crossingsOf(const TopoDS_Shape& shape, const gp_Lin& line, double merge) {
+LineCrossings::LineCrossings(const TopoDS_Shape& shape) : shape_(shape) {}
+
+LineCrossings::~LineCrossings() = default;
+
+std::vector<LineCrossing> LineCrossings::of(const gp_Lin& line, double merge) {
+  if (!intersector_) {
+    intersector_ = std::make_unique<IntCurvesFace_ShapeIntersector>();
+    intersector_->Load(shape_, 1e-7);
+  }
+  intersector_->Perform(line, -Precision::Infinite(), Precision::Infinite());
   std::vector<LineCrossing> crossings;
-  BRepIntCurveSurface_Inter intersector;
-  for (intersector.Init(shape, line, 1e-7); intersector.More(); intersector.Next()) {
+  for (int i = 1; intersector_->IsDone() && i <= intersector_->NbPnt(); ++i) {
     gp_Pnt p;
     gp_Vec du, dv;
-    BRep_Tool::Surface(intersector.Face())->D1(intersector.U(), intersector.V(), p, du, dv);
-    crossings.push_back({intersector.W(), intersector.Pnt(), du.Crossed(dv)});
+    BRep_Tool::Surface(intersector_->Face(i))->D1(intersector_->UParameter(i), intersector_->VParameter(i), p, du, dv);
+    crossings.push_back({intersector_->WParameter(i), intersector_->Pnt(i), du.Crossed(dv)});
   }
   std::sort(crossings.begin(), crossings.end(),
             [](const LineCrossing& a, const LineCrossing& b) { return a.along < b.along; });
@@ -28,6 +36,10 @@ std::vector<LineCrossing> crossingsOf(const TopoDS_Shape& shape, const gp_Lin& l
                               [&](const LineCrossing& a, const LineCrossing& b) { return b.along - a.along < merge; }),
                   crossings.end());
   return crossings;
+}
+
+std::vector<LineCrossing> crossingsOf(const TopoDS_Shape& shape, const gp_Lin& line, double merge) {
+  return LineCrossings(shape).of(line, merge);
 }
 
 gp_Pnt nearestToLine(const TopoDS_Shape& shape, const gp_Lin& line, double reach) {

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <memory>
 #include <vector>
+
+#include <IntCurvesFace_ShapeIntersector.hxx>
 
 #include <TopoDS_Shape.hxx>
 #include <gp_Lin.hxx>
@@ -16,8 +19,27 @@ struct LineCrossing {
   gp_Vec normal;  ///< the face's normal there (not normalised, orientation of its surface)
 };
 
-/// Every crossing of `line` with `shape`, ordered along the line; a line through an edge
-/// between two faces crosses once (crossings closer than `merge` are one).
+/// Where lines meet one shape's faces, the shape prepared once for all of them (when the first
+/// line is met): preparing OCCT's intersector for each face costs more than meeting one line
+/// with it. Not to be shared between threads.
+class LineCrossings {
+ public:
+  explicit LineCrossings(const TopoDS_Shape& shape);
+  ~LineCrossings();
+  LineCrossings(const LineCrossings&) = delete;
+  LineCrossings& operator=(const LineCrossings&) = delete;
+
+  /// Every crossing of `line` with the shape, ordered along the line; a line through an edge
+  /// between two faces crosses once (crossings closer than `merge` are one).
+  std::vector<LineCrossing> of(const gp_Lin& line, double merge);
+  const TopoDS_Shape& shape() const { return shape_; }
+
+ private:
+  TopoDS_Shape shape_;
+  std::unique_ptr<IntCurvesFace_ShapeIntersector> intersector_;
+};
+
+/// Every crossing of `line` with `shape` (LineCrossings::of, for one line).
 std::vector<LineCrossing> crossingsOf(const TopoDS_Shape& shape, const gp_Lin& line, double merge);
 
 /// The point of `shape` nearest to `line` within `reach` of its origin (where the line meets
