@@ -455,7 +455,7 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage and vessel walls, cross beams and struts are built
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 488, output[-3000:]
+    assert passed >= 493, output[-3000:]
 
 
 def two_segment_wing(tmp_path, shells):
@@ -484,12 +484,14 @@ def two_segment_wing(tmp_path, shells):
     return path
 
 
-def test_a_cell_border_on_the_kink_of_the_leading_edge_bisects_it(tmp_path):
-    # The 4 m segment rises at a dihedral of 40°. Seen from the front the leading edge kinks at
-    # y = 1, eta 0.2 (by its length, as by the chord's midpoints): a border there stands along
-    # the normal of the bisector of both directions, the plane y = 1 − z·tan 20° through the
-    # kink's chord. The cell of ξ 0.2 to 0.6 on the flat first segment's upper skin
-    # (z = 0.3·ξ(1−ξ), x = 1 + 2ξ) loses what lies beyond it.
+def test_cell_sides_lean_with_the_leading_edge_from_root_to_tip(tmp_path):
+    # The 4 m segment rises at a dihedral of 40°: seen from the front the leading edge runs from
+    # the root (y 0, z 0) to the tip (y 1 + 4 cos 40°, z 4 sin 40°). Every side of a cell stands
+    # square to the root chord and to that line (as the reference's cells are cut), so a border
+    # at the kink (y = 1, eta 0.2 by the chord's midpoints) is the plane y = 1 − z·tan(lean)
+    # through the kink's chord, not the plane of either segment's normal. The cell of ξ 0.2 to
+    # 0.6 on the flat first segment's upper skin (z = 0.3·ξ(1−ξ), x = 1 + 2ξ) loses what lies
+    # beyond it.
     path = two_segment_wing(tmp_path, cells(cell("Kinked", 0.0, 0.2, "<xsi1>0.2</xsi1><xsi2>0.2</xsi2>",
                                                  "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")))
     path.write_text(path.read_text().replace(
@@ -498,7 +500,8 @@ def test_a_cell_border_on_the_kink_of_the_leading_edge_bisects_it(tmp_path):
         '<positioning uID="RP3"><name>p</name><length>4</length><sweepAngle>0</sweepAngle>'
         "<dihedralAngle>40</dihedralAngle>", 1))
     area, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Kinked"}))
-    lean = math.tan(math.radians(20))
+    dihedral = math.radians(40)
+    lean = 4 * math.sin(dihedral) / (1 + 4 * math.cos(dihedral))
     expected = simpson(lambda xi: (1 - 0.3 * xi * (1 - xi) * lean) * math.hypot(2, 0.3 * (1 - 2 * xi)), 0.2, 0.6)
     assert area == pytest.approx(expected, rel=1e-7)
 

@@ -302,14 +302,12 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   loop.push_back(outerBack);
   for (const gp_Pnt& kink : corners.alongSpar(false, outerBack, innerBack)) loop.push_back(kink);
   loop.push_back(innerBack);
-  // Through each point of the outline a line along the component segment's midplane normal at
-  // its eta (on a kink of the leading edge seen from the front, the normal of the bisector of its
-  // two directions, as the reference's cells have it); these lines sweep a prism reaching across
+  // Through each point of the outline a line across the wing, all in the component segment's
+  // one cell direction (StructureFrame::cellDirection); these lines sweep a prism reaching across
   // the wing. On a wing without dihedral the lines are vertical.
   std::vector<double> etas;
   for (const gp_Pnt& point : loop) etas.push_back(frame.etaOf(point));
-  std::vector<gp_Vec> normals;
-  for (const double eta : etas) normals.push_back(frame.midplaneNormal(eta));
+  const gp_Vec across = frame.cellDirection();
   const TopoDS_Shape skin = frame.skin(cell.upper);
   if (!frame.inDevice())
     beyondSkinEnds(loop, etas, corners.alongSpar(true, innerFront, outerFront).size() + 1, boxCorners(skin, frame));
@@ -317,7 +315,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   auto level = [&](double side) {
     BRepBuilderAPI_MakePolygon polygon;
     for (std::size_t k = 0; k < loop.size(); ++k)
-      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * normals[k])));
+      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * across)));
     polygon.Close();
     return polygon.Wire();
   };
@@ -329,7 +327,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   geometry::RuledLoop ruled;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));
-    ruled.directions.push_back(frame.toGlobal(normals[k]));
+    ruled.directions.push_back(frame.toGlobal(across));
   }
   const double tolerance = kTraceTolerance * reach;
   // Inside the prism: in closed form from its sides, or by OCCT's classification where the

@@ -91,6 +91,15 @@ gp_Vec StructureFrame::midplaneNormal(double eta) const {
   return toWing(wing().midplaneNormal(configuration_, componentSegmentUid_, csEta)).Normalized();
 }
 
+gp_Vec StructureFrame::cellDirection() const {
+  const gp_Pnt rootFront = chordPoint("", 0.0, 0.0), tipFront = chordPoint("", 1.0, 0.0);
+  const gp_Vec seenFromFront(0.0, tipFront.Y() - rootFront.Y(), tipFront.Z() - rootFront.Z());
+  const gp_Vec across = gp_Vec(rootFront, chordPoint("", 0.0, 1.0)).Crossed(seenFromFront);
+  if (across.Magnitude() < 1e-12 * seenFromFront.Magnitude())
+    throw Error(ErrorCode::InvalidModel, "the component segment's root chord runs along its leading edge");
+  return across.Normalized();
+}
+
 std::vector<double> StructureFrame::sectionEtas() const {
   if (inDevice()) return {0.0, 1.0};  // the device's borders
   // Cached: every spar position asks whether it stands in a section.

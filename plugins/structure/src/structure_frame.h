@@ -43,6 +43,12 @@ class StructureFrame {
   double etaOf(const gp_Pnt& point) const;
   /// The unit normal of the chord surface at eta (towards the upper skin), in the wing frame.
   gp_Vec midplaneNormal(double eta) const;
+  /// The one direction across the wing that cells are cut along (wing frame, unit, towards the
+  /// upper skin): the root chord crossed with the leading edge from root to tip seen from the
+  /// front (x dropped), as the reference library's cells are cut. It is the midplane normal of
+  /// a wing without twist whose leading edge is straight seen from the front; on a twisted blade
+  /// or a wing with a kink in dihedral the cells' sides do not turn with the sections.
+  gp_Vec cellDirection() const;
   /// The component segment etas of the sections it runs through (0, those between its wing
   /// segments, 1).
   std::vector<double> sectionEtas() const;
