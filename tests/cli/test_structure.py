@@ -426,6 +426,29 @@ def test_a_cell_follows_the_kinks_of_its_spar(tmp_path):
     assert area == pytest.approx(expected, rel=1e-6)
 
 
+def test_a_cell_ends_on_the_web_of_its_spar(tmp_path):
+    # The wing rises at a dihedral of 30°; its spar runs from ξ 0.2 at the root to ξ 0.5 at the
+    # tip, its web upright (the wing's z axis). A cell behind the spar, up to ξ 0.8 over the
+    # whole span, ends where that web meets the skin, not on lines along the cell direction
+    # (square to the dihedral), which would meet the skin elsewhere along the slanting spar.
+    # Skin: the profile z = 0.3·ξ(1−ξ), x = 1 + 2ξ moved along (0, 5 cos 30°, 5 sin 30°).
+    positions = position("S0", 0, 0.2) + position("S1", 1, 0.5)
+    behind = cell("Behind", 0.0, 1.0, "<sparUID>Slanting</sparUID>", "<xsi1>0.8</xsi1><xsi2>0.8</xsi2>")
+    path = with_spars(tmp_path, positions, segment("Slanting", "S0", "S1"), cells(behind))
+    path.write_text(path.read_text().replace(
+        "<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>0</dihedralAngle>",
+        "<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>30</dihedralAngle>", 1))
+    area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Behind"},
+                                      {"op": "bounding_box", "uid": "Behind"}))
+    lean = math.cos(math.radians(30))
+
+    def across(s):  # the skin's area per unit of s, from the spar to ξ 0.8
+        return simpson(lambda xi: 5 * math.sqrt(4 + (0.3 * (1 - 2 * xi) * lean) ** 2), 0.2 + 0.3 * s, 0.8, steps=400)
+
+    assert area == pytest.approx(simpson(across, 0.0, 1.0), rel=1e-6)
+    assert box["min"][0] == pytest.approx(1.4, abs=1e-6), "the web meets the root's skin at ξ 0.2"
+
+
 def test_older_spar_points_and_rib_etas_are_read_with_a_warning(tmp_path):
     # CPACS 3.0 files of some tools give a spar position as `sparPoint` and a rib set's first
     # and last rib by `etaStart`/`etaEnd` (where the reference line reaches that eta): the
@@ -590,6 +613,34 @@ def test_cells_bounded_by_ribs(tmp_path):
     assert box["min"][1] == pytest.approx(0.5, abs=1e-6) and box["max"][1] == pytest.approx(2.5, abs=1e-6)
     missing, = ask(path, {"op": "component_surface_area", "uid": "Beyond"})
     assert "positioningOuterBorder" in missing["error"] and "has no rib 7" in missing["error"]
+
+
+def test_a_cell_ends_on_the_plane_of_its_rib(tmp_path):
+    # The same ribs leaning 30° about their own direction (ribCrossSection rotation x = 60°):
+    # the cell between rib 1 and rib 2 ends on their planes, y = y_rib ± z·tan 30° over the skin
+    # z = 0.3·ξ(1−ξ), not on upright lines through their feet. Its area stays the skin between
+    # ξ 0.2 and 0.6 over 2 m (parallel planes across a skin straight along y).
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6))
+    border = ("<positioningInnerBorder><ribDefinitionUID>Ribs</ribDefinitionUID><ribNumber>1</ribNumber>"
+              "</positioningInnerBorder><positioningOuterBorder><ribDefinitionUID>Ribs</ribDefinitionUID>"
+              "<ribNumber>2</ribNumber></positioningOuterBorder>")
+    between = (f'<cell uID="BetweenRibs"><positioningLeadingEdge><sparUID>Front</sparUID></positioningLeadingEdge>'
+               "<positioningTrailingEdge><xsi1>0.6</xsi1><xsi2>0.6</xsi2></positioningTrailingEdge>"
+               f"{border}</cell>")
+    leaning = ribs("Ribs", 0.1, 0.9, 3).replace(
+        "</ribsPositioning>", "</ribsPositioning><ribCrossSection><ribRotation><x>60</x></ribRotation>"
+        "</ribCrossSection>")
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      leaning + cells(between))
+    area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "BetweenRibs"},
+                                      {"op": "bounding_box", "uid": "BetweenRibs"}))
+    assert area == pytest.approx(2.0 * skin_length(0.2, 0.6), rel=1e-6)
+    lean = math.tan(math.radians(30))
+    low, top = 0.3 * 0.2 * 0.8, 0.3 * 0.5 * 0.5  # the skin's lowest and highest z in the cell
+    shifts = (box["min"][1] - 0.5, box["max"][1] - 2.5)
+    assert (shifts == pytest.approx((lean * low, lean * top), abs=1e-6) or
+            shifts == pytest.approx((-lean * top, -lean * low), abs=1e-6)), shifts
 
 
 def test_spar_positions_on_ribs(tmp_path):

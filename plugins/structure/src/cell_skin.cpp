@@ -61,11 +61,25 @@ class CellCorners {
     return frame_.chordPoint("", csEta, xsiAt(*chordwise, inner, csEta, chordwisePath));
   }
 
+  /// The normal of the rib's plane a spanwise border lies on; nothing for a border of etas.
+  std::optional<gp_Vec> ribNormal(bool inner) const {
+    const auto& spanwise = inner ? cell_.node->positioningInnerBorder : cell_.node->positioningOuterBorder;
+    if (!spanwise || !spanwise->ribDefinitionUID) return std::nullopt;
+    const std::string where = cell_.xpath + (inner ? "/positioningInnerBorder" : "/positioningOuterBorder");
+    return gp_Vec(ribPlaneOf(*spanwise->ribDefinitionUID, spanwise->ribNumber.value_or(1), where).Axis().Direction());
+  }
+
+  /// Whether a spar gives the leading (trailing) edge.
+  bool onSpar(bool leadingEdge) const {
+    const auto& chordwise = leadingEdge ? cell_.node->positioningLeadingEdge : cell_.node->positioningTrailingEdge;
+    return chordwise && chordwise->sparUID && !(chordwise->xsi1 && chordwise->xsi2);
+  }
+
   /// The spar's corners between a cell's inner and outer corner on a chordwise border that a
   /// spar gives, from `from` to `to` (none for a border of xsi values).
   std::vector<gp_Pnt> alongSpar(bool leadingEdge, const gp_Pnt& from, const gp_Pnt& to) const {
+    if (!onSpar(leadingEdge)) return {};
     const auto& chordwise = leadingEdge ? cell_.node->positioningLeadingEdge : cell_.node->positioningTrailingEdge;
-    if (!chordwise || !chordwise->sparUID || (chordwise->xsi1 && chordwise->xsi2)) return {};
     const Polyline spar = frame_.sparLine(sparSegmentNamed(configuration_, *chordwise->sparUID));
     return spar.cornersBetween(spar.nearestShare(from), spar.nearestShare(to));
   }
@@ -281,6 +295,51 @@ std::vector<gp_Pnt> boxCorners(const TopoDS_Shape& shape, const StructureFrame& 
   return corners;
 }
 
+/// The lines across the wing through the points of a cell's outline (wing frame, unit, towards
+/// the upper skin), so that each side of the prism they sweep lies on its own surface, as the
+/// reference library bounds its cells: a border of etas or a chordwise border of xsi values on
+/// the plane through its chord points along the component segment's one cell direction
+/// (StructureFrame::cellDirection), a border on a rib on the rib's plane, a chordwise border on
+/// a spar on the spar's web (its line at each of the spar's corners the web's up direction
+/// there). Where two sides meet, the line is where their surfaces meet. On a cell of etas and
+/// xsi values every line runs along the cell direction. `outerFront` indexes the outer border's
+/// first corner in the loop.
+std::vector<gp_Vec> sideLines(const std::vector<gp_Pnt>& loop, const std::vector<double>& etas, std::size_t outerFront,
+                              const CellCorners& corners, const StructureFrame& frame) {
+  const gp_Vec across = frame.cellDirection();
+  const std::size_t count = loop.size(), last = count - 1;
+  const bool leadingSpar = corners.onSpar(true), trailingSpar = corners.onSpar(false);
+  const auto upright = [&](std::size_t k) { return frame.uprightAtSparPosition(etas[k]); };
+  // The normal of the surface of the side from point k to point k + 1, at point `at` (one of
+  // its ends).
+  const auto sideNormal = [&](std::size_t k, std::size_t at) {
+    const std::size_t next = (k + 1) % count;
+    const gp_Vec along(loop[k], loop[next]);
+    const bool leadingSide = k<outerFront, trailingSide = k> outerFront && k < last;
+    if (k == outerFront || k == last) {
+      if (const std::optional<gp_Vec> rib = corners.ribNormal(k == last)) return *rib;
+    } else if ((leadingSide && leadingSpar) || (trailingSide && trailingSpar)) {
+      return along.Crossed(upright(at));
+    }
+    return along.Crossed(across);
+  };
+  std::vector<gp_Vec> lines;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t before = (k + count - 1) % count;
+    const bool sparKink = (k > 0 && k < outerFront && leadingSpar) || (k > outerFront + 1 && k < last && trailingSpar);
+    gp_Vec line = upright(k);
+    if (!sparKink) {
+      const gp_Vec first = sideNormal(before, k), second = sideNormal(k, k);
+      line = first.Crossed(second);
+      if (line.Magnitude() < 1e-9 * first.Magnitude() * second.Magnitude()) line = across;  // sides in one plane
+    }
+    line.Normalize();
+    if (line.Dot(across) < 0.0) line.Reverse();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
 }  // namespace
 
 NamedShape cellSkin(const Configuration& configuration, const StructureServices& services, const WingCell& cell) {
@@ -302,20 +361,19 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   loop.push_back(outerBack);
   for (const gp_Pnt& kink : corners.alongSpar(false, outerBack, innerBack)) loop.push_back(kink);
   loop.push_back(innerBack);
-  // Through each point of the outline a line across the wing, all in the component segment's
-  // one cell direction (StructureFrame::cellDirection); these lines sweep a prism reaching across
-  // the wing. On a wing without dihedral the lines are vertical.
+  // Through each point of the outline a line across the wing (sideLines); these lines sweep a
+  // prism reaching across the wing.
   std::vector<double> etas;
   for (const gp_Pnt& point : loop) etas.push_back(frame.etaOf(point));
-  const gp_Vec across = frame.cellDirection();
   const TopoDS_Shape skin = frame.skin(cell.upper);
-  if (!frame.inDevice())
-    beyondSkinEnds(loop, etas, corners.alongSpar(true, innerFront, outerFront).size() + 1, boxCorners(skin, frame));
+  const std::size_t outerFrontIndex = corners.alongSpar(true, innerFront, outerFront).size() + 1;
+  if (!frame.inDevice()) beyondSkinEnds(loop, etas, outerFrontIndex, boxCorners(skin, frame));
+  const std::vector<gp_Vec> across = sideLines(loop, etas, outerFrontIndex, corners, frame);
   const double reach = frame.reach();
   auto level = [&](double side) {
     BRepBuilderAPI_MakePolygon polygon;
     for (std::size_t k = 0; k < loop.size(); ++k)
-      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * across)));
+      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * across[k])));
     polygon.Close();
     return polygon.Wire();
   };
@@ -327,7 +385,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   geometry::RuledLoop ruled;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));
-    ruled.directions.push_back(frame.toGlobal(across));
+    ruled.directions.push_back(frame.toGlobal(across[k]));
   }
   const double tolerance = kTraceTolerance * reach;
   // Inside the prism: in closed form from its sides, or by OCCT's classification where the
