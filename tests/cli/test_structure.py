@@ -592,9 +592,10 @@ def test_cells_of_contour_coordinates_between_etas(tmp_path):
     assert "cell[2]" in slanted_error["error"] and "at one eta each" in slanted_error["error"]
 
 
-def test_cells_bounded_by_ribs(tmp_path):
-    # The chordwise ribs y = 0.5, 2.5, 4.5 between spars at ξ 0.2 and 0.6 (as above); a cell from
-    # rib 1 to rib 2, from the front spar to xsi 0.6: the upper skin between ξ 0.2 and 0.6 over 2 m.
+def cells_between_ribs(tmp_path, rib_set, with_beyond=False):
+    """The chordwise ribs `rib_set` ("Ribs", as `ribs` draws them) between spars at ξ 0.2 and 0.6,
+    and the cell "BetweenRibs" from rib 1 to rib 2, from the front spar to xsi 0.6 (with
+    `with_beyond`, also "Beyond", up to rib 7, which the set does not have)."""
     positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
                  position("PosR1", 1, 0.6))
     border = ("<positioningInnerBorder><ribDefinitionUID>Ribs</ribDefinitionUID><ribNumber>1</ribNumber>"
@@ -605,8 +606,14 @@ def test_cells_bounded_by_ribs(tmp_path):
                f"{border}</cell>")
     beyond = between.replace('uID="BetweenRibs"', 'uID="Beyond"').replace("<ribNumber>2</ribNumber>",
                                                                           "<ribNumber>7</ribNumber>")
-    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
-                      ribs("Ribs", 0.1, 0.9, 3) + cells(between, beyond))
+    return with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      rib_set + cells(between, *([beyond] if with_beyond else [])))
+
+
+def test_cells_bounded_by_ribs(tmp_path):
+    # The chordwise ribs y = 0.5, 2.5, 4.5 between spars at ξ 0.2 and 0.6 (as above); a cell from
+    # rib 1 to rib 2, from the front spar to xsi 0.6: the upper skin between ξ 0.2 and 0.6 over 2 m.
+    path = cells_between_ribs(tmp_path, ribs("Ribs", 0.1, 0.9, 3), with_beyond=True)
     area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "BetweenRibs"},
                                       {"op": "bounding_box", "uid": "BetweenRibs"}))
     assert area == pytest.approx(2.0 * skin_length(0.2, 0.6), rel=1e-6)
@@ -620,19 +627,10 @@ def test_a_cell_ends_on_the_plane_of_its_rib(tmp_path):
     # the cell between rib 1 and rib 2 ends on their planes, y = y_rib ± z·tan 30° over the skin
     # z = 0.3·ξ(1−ξ), not on upright lines through their feet. Its area stays the skin between
     # ξ 0.2 and 0.6 over 2 m (parallel planes across a skin straight along y).
-    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
-                 position("PosR1", 1, 0.6))
-    border = ("<positioningInnerBorder><ribDefinitionUID>Ribs</ribDefinitionUID><ribNumber>1</ribNumber>"
-              "</positioningInnerBorder><positioningOuterBorder><ribDefinitionUID>Ribs</ribDefinitionUID>"
-              "<ribNumber>2</ribNumber></positioningOuterBorder>")
-    between = (f'<cell uID="BetweenRibs"><positioningLeadingEdge><sparUID>Front</sparUID></positioningLeadingEdge>'
-               "<positioningTrailingEdge><xsi1>0.6</xsi1><xsi2>0.6</xsi2></positioningTrailingEdge>"
-               f"{border}</cell>")
     leaning = ribs("Ribs", 0.1, 0.9, 3).replace(
         "</ribsPositioning>", "</ribsPositioning><ribCrossSection><ribRotation><x>60</x></ribRotation>"
         "</ribCrossSection>")
-    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
-                      leaning + cells(between))
+    path = cells_between_ribs(tmp_path, leaning)
     area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "BetweenRibs"},
                                       {"op": "bounding_box", "uid": "BetweenRibs"}))
     assert area == pytest.approx(2.0 * skin_length(0.2, 0.6), rel=1e-6)

@@ -32,19 +32,23 @@ bool coplanar(const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c, const gp_Pnt& d
   return std::abs(gp_Vec(a, d).Dot(normal.Normalized())) < tolerance;
 }
 
-/// A straight cut across a wing section of chord `chord` in the plane y = `y` (its chord
-/// along x from x = `front`), from the lower skin at height -`thickness` / 2 to the upper one,
-/// aft of it the device.
-BorderOutline cutAcross(double y, double front, double chord, double thickness, const gp_Vec& up = gp_Vec(0, 0, 1)) {
-  const BorderPlane plane(gp_Pnt(front, y, 0.0), gp_Pnt(front + chord, y, 0.0), up);
+/// A straight cut across a wing section in `plane` at 0.3 of its chord, from the lower skin at
+/// height -`thickness` / 2 to the upper one, aft of it the device, closed alone 5 chords along
+/// and 5 half-thicknesses above and below.
+BorderOutline cutIn(const BorderPlane& plane, double thickness) {
   BorderOutline outline(BorderOutline::Kind::Across, plane);
-  outline.lower = gp_Pnt2d(0.3 * chord, -0.5 * thickness);
-  outline.upper = gp_Pnt2d(0.3 * chord, 0.5 * thickness);
+  outline.lower = gp_Pnt2d(0.3 * plane.chord, -0.5 * thickness);
+  outline.upper = gp_Pnt2d(0.3 * plane.chord, 0.5 * thickness);
   outline.upOut = gp_Vec2d(0.0, 1.0);
   outline.downOut = gp_Vec2d(0.0, -1.0);
   outline.reach = 5.0;
   outline.height = 5.0 * 0.5 * thickness;
   return outline;
+}
+
+/// The same in the plane y = `y`, its chord `chord` along x from x = `front`.
+BorderOutline cutAcross(double y, double front, double chord, double thickness) {
+  return cutIn(BorderPlane(gp_Pnt(front, y, 0.0), gp_Pnt(front + chord, y, 0.0), gp_Vec(0, 0, 1)), thickness);
 }
 
 TEST(OutlineClosing, FarEdgesOfTwoBordersLieInCommonPlanes) {
@@ -89,13 +93,7 @@ TEST(OutlineClosing, BorderPlanesMeetingInsideTheCommonReachCloseAlone) {
   const gp_Pnt outerFront(3.5, 1.0, 0.0);
   const BorderPlane turned(outerFront, outerFront.Translated(0.5 * gp_Vec(std::cos(turn), -std::sin(turn), 0.0)),
                            gp_Vec(0, 0, 1));
-  BorderOutline outer(BorderOutline::Kind::Across, turned);
-  outer.lower = gp_Pnt2d(0.15, -0.2);  // as thick as the inner border, so the lid is level
-  outer.upper = gp_Pnt2d(0.15, 0.2);
-  outer.upOut = gp_Vec2d(0.0, 1.0);
-  outer.downOut = gp_Vec2d(0.0, -1.0);
-  outer.reach = 5.0;
-  outer.height = 1.0;
+  const BorderOutline outer = cutIn(turned, 0.4);  // as thick as the inner border, so the lid is level
   const std::vector<TopoDS_Wire> wires = closedOutlines({inner, outer});
   ASSERT_EQ(wires.size(), 2u);
   // Closed alone: the far corners 5 chords along each border's own chord.
@@ -115,13 +113,23 @@ TEST(OutlineClosing, BorderPlanesMeetingInsideTheCommonReachCloseAlone) {
   EXPECT_GT(common[2].X(), 5.0);
 }
 
-TEST(OutlineClosing, PanelsAndAirfoilsCloseAlone) {
-  const BorderPlane plane(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Vec(0, 0, 1));
+/// The plane of a panel's border at y = `y`: its chord along x from x = 0, twisted along y.
+BorderPlane panelPlane(double y) { return BorderPlane(gp_Pnt(0.0, y, 0.0), gp_Pnt(1.0, y, -0.1 * y), gp_Vec(0, 0, 1)); }
+
+/// A spoiler's panel in `plane`: its lower side at height `depth` from x = `front` to `back`,
+/// closed above the wing at `height`.
+BorderOutline panelIn(const BorderPlane& plane, double front, double back, double depth, double height) {
   BorderOutline panel(BorderOutline::Kind::Panel, plane);
-  panel.upper = gp_Pnt2d(0.2, 0.02);  // its front
-  panel.lower = gp_Pnt2d(0.6, 0.02);  // its back
+  panel.upper = gp_Pnt2d(front, depth);
+  panel.lower = gp_Pnt2d(back, depth);
   panel.upOut = panel.downOut = gp_Vec2d(0.0, 1.0);
-  panel.height = 0.3;
+  panel.height = height;
+  return panel;
+}
+
+TEST(OutlineClosing, PanelsAndAirfoilsCloseAlone) {
+  const BorderPlane plane = panelPlane(0.0);
+  const BorderOutline panel = panelIn(plane, 0.2, 0.6, 0.02, 0.3);  // front, back
   BorderOutline airfoil(BorderOutline::Kind::Airfoil, plane);
   airfoil.airfoil = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0.01), gp_Pnt(1, 0, -0.01), true).Wire();
   const std::vector<TopoDS_Wire> wires = closedOutlines({panel, airfoil});
@@ -133,28 +141,10 @@ TEST(OutlineClosing, PanelsAndAirfoilsCloseAlone) {
   EXPECT_TRUE(wires[1].IsSame(airfoil.airfoil));
 }
 
-/// A spoiler's panel in the plane y = `y`: its lower side at height `depth` from x = `front` to
-/// `back`, closed above the wing at `height`.
-BorderOutline panelAt(double y, double front, double back, double depth, double height) {
-  const BorderPlane plane(gp_Pnt(0.0, y, 0.0), gp_Pnt(1.0, y, -0.1 * y), gp_Vec(0, 0, 1));  // twisted along y
-  BorderOutline panel(BorderOutline::Kind::Panel, plane);
-  panel.upper = gp_Pnt2d(front, depth);
-  panel.lower = gp_Pnt2d(back, depth);
-  panel.upOut = panel.downOut = gp_Vec2d(0.0, 1.0);
-  panel.height = height;
-  return panel;
-}
-
-/// Where a panel's edge up from x = `x` ends when the panel is closed alone at `height`.
-gp_Pnt ownCorner(double y, double x, double height) {
-  const BorderPlane plane(gp_Pnt(0.0, y, 0.0), gp_Pnt(1.0, y, -0.1 * y), gp_Vec(0, 0, 1));
-  return plane.at(x, height);
-}
-
 TEST(OutlineClosing, TwoPanelsShareTheirLidsPlane) {
   // Panels of different depth and height, their planes' upward directions apart.
   const std::vector<TopoDS_Wire> wires =
-      closedOutlines({panelAt(0.0, 0.2, 0.6, 0.02, 0.3), panelAt(2.0, 0.3, 0.6, 0.01, 0.2)});
+      closedOutlines({panelIn(panelPlane(0.0), 0.2, 0.6, 0.02, 0.3), panelIn(panelPlane(2.0), 0.3, 0.6, 0.01, 0.2)});
   ASSERT_EQ(wires.size(), 2u);
   const std::vector<gp_Pnt> inner = cornersOf(wires[0]), outer = cornersOf(wires[1]);
   ASSERT_EQ(inner.size(), 4u);
@@ -165,10 +155,9 @@ TEST(OutlineClosing, TwoPanelsShareTheirLidsPlane) {
   EXPECT_TRUE(coplanar(inner[1], inner[2], outer[2], outer[1], 1e-12));
   // The outer back's edge still leaves along its plane's upward direction.
   const gp_Vec up = gp_Vec(outer[3], outer[2]).Normalized();
-  const BorderPlane outerPlane(gp_Pnt(0.0, 2.0, 0.0), gp_Pnt(1.0, 2.0, -0.2), gp_Vec(0, 0, 1));
-  EXPECT_NEAR(up.Dot(outerPlane.y), 1.0, 1e-12);
+  EXPECT_NEAR(up.Dot(panelPlane(2.0).y), 1.0, 1e-12);
   // Alone, the four corners above would not lie in one plane.
-  EXPECT_FALSE(coplanar(inner[1], inner[2], ownCorner(2.0, 0.3, 0.2), ownCorner(2.0, 0.6, 0.2), 1e-6));
+  EXPECT_FALSE(coplanar(inner[1], inner[2], panelPlane(2.0).at(0.3, 0.2), panelPlane(2.0).at(0.6, 0.2), 1e-6));
 }
 
 }  // namespace

@@ -315,7 +315,8 @@ std::vector<gp_Vec> sideLines(const std::vector<gp_Pnt>& loop, const std::vector
   const auto sideNormal = [&](std::size_t k, std::size_t at) {
     const std::size_t next = (k + 1) % count;
     const gp_Vec along(loop[k], loop[next]);
-    const bool leadingSide = k<outerFront, trailingSide = k> outerFront && k < last;
+    const bool leadingSide = k < outerFront;
+    const bool trailingSide = k > outerFront && k < last;
     if (k == outerFront || k == last) {
       if (const std::optional<gp_Vec> rib = corners.ribNormal(k == last)) return *rib;
     } else if ((leadingSide && leadingSpar) || (trailingSide && trailingSpar)) {
@@ -357,6 +358,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   const gp_Pnt outerBack = corners.at(false, false), innerBack = corners.at(true, false);
   std::vector<gp_Pnt> loop{innerFront};
   for (const gp_Pnt& kink : corners.alongSpar(true, innerFront, outerFront)) loop.push_back(kink);
+  const std::size_t outerFrontIndex = loop.size();
   loop.push_back(outerFront);
   loop.push_back(outerBack);
   for (const gp_Pnt& kink : corners.alongSpar(false, outerBack, innerBack)) loop.push_back(kink);
@@ -366,14 +368,13 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   std::vector<double> etas;
   for (const gp_Pnt& point : loop) etas.push_back(frame.etaOf(point));
   const TopoDS_Shape skin = frame.skin(cell.upper);
-  const std::size_t outerFrontIndex = corners.alongSpar(true, innerFront, outerFront).size() + 1;
   if (!frame.inDevice()) beyondSkinEnds(loop, etas, outerFrontIndex, boxCorners(skin, frame));
-  const std::vector<gp_Vec> across = sideLines(loop, etas, outerFrontIndex, corners, frame);
+  const std::vector<gp_Vec> lines = sideLines(loop, etas, outerFrontIndex, corners, frame);
   const double reach = frame.reach();
   auto level = [&](double side) {
     BRepBuilderAPI_MakePolygon polygon;
     for (std::size_t k = 0; k < loop.size(); ++k)
-      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * across[k])));
+      polygon.Add(frame.toGlobal(loop[k].Translated(side * reach * lines[k])));
     polygon.Close();
     return polygon.Wire();
   };
@@ -385,7 +386,7 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   geometry::RuledLoop ruled;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     ruled.points.push_back(frame.toGlobal(loop[k]));
-    ruled.directions.push_back(frame.toGlobal(across[k]));
+    ruled.directions.push_back(frame.toGlobal(lines[k]));
   }
   const double tolerance = kTraceTolerance * reach;
   // Inside the prism: in closed form from its sides, or by OCCT's classification where the
