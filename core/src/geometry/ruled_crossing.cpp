@@ -241,6 +241,13 @@ Hit reentry(const Side<Lines>& side, double outside, Hit inside, double toleranc
   return inside;
 }
 
+/// Whether every point of a piece lies at one place of its patch.
+bool heldAtOnePlace(const Piece& piece) {
+  for (const PatchPoint& point : piece.points)
+    if (point.u != piece.points.front().u || point.v != piece.points.front().v) return false;
+  return true;
+}
+
 /// The side's crossing of the skin, piece by patch: sampled evenly, each change of patch found
 /// by bisection. Where the side runs beyond the skin's edge (past its leading or trailing edge,
 /// its root or tip), the region follows that edge, which the skin has already: no piece there.
@@ -293,15 +300,18 @@ std::optional<std::vector<Piece>> piecesOf(const Side<Lines>& side, double toler
     --i;  // this line again, from there
   }
   // A piece over a mere corner of a patch (the crossing passing through a vertex) is left out:
-  // its neighbours meet within the vertices' tolerance. A piece's ends are put on its patch's
-  // bounds where they lie within the tolerance of them; its points between are left where they
-  // are, which along a bound close by would put the curve now on the bound, now off it.
+  // its neighbours meet within the vertices' tolerance. So is a piece held at one place (lines
+  // passing beyond the skin's corner, each met at the corner): it draws no curve. A piece's ends
+  // are put on its patch's bounds where they lie within the tolerance of them; its points
+  // between are left where they are, which along a bound close by would put the curve now on
+  // the bound, now off it.
   std::vector<Piece> kept;
   for (Piece& piece : pieces) {
     if (piece.points.back().t - piece.points.front().t <= 1e-9) continue;
     const Patch& patch = side.patch(piece.patch);
     piece.points.front() = ontoBound(patch, piece.points.front(), tolerance);
     piece.points.back() = ontoBound(patch, piece.points.back(), tolerance);
+    if (heldAtOnePlace(piece)) continue;
     kept.push_back(piece);
   }
   for (const Piece& piece : kept)

@@ -53,5 +53,16 @@ TEST(RuledCrossing, FollowsTheSkinToWhereALineTouchesItsLeadingEdge) {
   }
 }
 
+TEST(RuledCrossing, LeavesOutLinesThatMeetTheSkinOnlyAtItsCorner) {
+  // Lines up along z from the trailing edge's root corner (x = 1, y = 0) outwards and aft: the
+  // first meets the skin at that corner, all others pass beyond its trailing edge and its root.
+  // The lines within the tolerance of the corner meet it there, a crossing that draws no curve.
+  const geometry::RuledLines pastTheCorner{gp_Pnt(1.0, 0.0, -1.0), gp_Pnt(1.5, -0.5, -1.0), gp_Vec(0, 0, 1),
+                                           gp_Vec(0, 0, 1)};
+  const auto pieces = geometry::ruledCrossing(geometry::skinPatches(test::upperSkin())->patches, pastTheCorner, 1e-8);
+  ASSERT_TRUE(pieces.has_value());
+  EXPECT_TRUE(pieces->empty());
+}
+
 }  // namespace
 }  // namespace airshape::structure
