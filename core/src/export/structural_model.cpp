@@ -1,6 +1,8 @@
 #include "structural_model.h"
 
 #include <map>
+#include <mutex>
+#include <numeric>
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRep_Builder.hxx>
@@ -13,6 +15,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/parallel_for.h"
 
 namespace airshape::exporting {
 
@@ -57,6 +60,7 @@ NamedShape joined(const std::vector<const NamedShape*>& parts, const std::string
   BRepAlgoAPI_BuilderAlgo fuse;
   fuse.SetArguments(arguments);
   fuse.SetRunParallel(true);
+  fuse.SetNonDestructive(true);  // models are joined side by side: inputs stay untouched
   fuse.Build();
   if (!fuse.IsDone() || fuse.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the structure of '" + host + "' cannot be joined with its faces");
@@ -87,7 +91,8 @@ std::vector<std::size_t> structuralModelComponents(const Configuration& configur
 std::vector<SceneComponent> structuralModels(const Configuration& configuration, const ExportOptions& options,
                                              std::vector<std::string>& leftOut,
                                              const std::function<void(const std::string&)>& step) {
-  std::vector<SceneComponent> models;
+  // Each model's parts: its host's faces and its built structure.
+  std::vector<std::pair<std::string, std::vector<const NamedShape*>>> models;
   for (const auto& [host, structure] : structureByHost(configuration)) {
     if (!wanted(configuration, host, options)) continue;
     std::vector<const NamedShape*> parts = {&configuration.shapes().namedShapeOf(configuration, host)};
@@ -100,12 +105,28 @@ std::vector<SceneComponent> structuralModels(const Configuration& configuration,
         leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
       }
     }
-    if (parts.size() < 2) continue;
-    step("joining the structure of " + host + " (" + std::to_string(parts.size() - 1) +
-         (parts.size() == 2 ? " component)" : " components)"));
-    models.push_back({host + " structure", joined(parts, host), ""});
+    if (parts.size() >= 2) models.emplace_back(host, std::move(parts));
   }
-  return models;
+  // Joined side by side, the models with the most faces first: one large model would otherwise
+  // leave a core idle while it finishes alone (each fuse keeps both cores busy only in parts).
+  std::vector<std::size_t> order(models.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<std::size_t> faces(models.size(), 0);
+  for (std::size_t k = 0; k < models.size(); ++k)
+    for (const NamedShape* part : models[k].second) faces[k] += part->faces.size();
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return faces[a] > faces[b]; });
+  std::vector<SceneComponent> joinedModels(models.size());
+  std::mutex reporting;
+  parallelFor(order.size(), [&](std::size_t k) {
+    const auto& [host, parts] = models[order[k]];
+    {
+      const std::lock_guard<std::mutex> lock(reporting);
+      step("joining the structure of " + host + " (" + std::to_string(parts.size() - 1) +
+           (parts.size() == 2 ? " component)" : " components)"));
+    }
+    joinedModels[order[k]] = {host + " structure", joined(parts, host), ""};
+  });
+  return joinedModels;
 }
 
 }  // namespace airshape::exporting
