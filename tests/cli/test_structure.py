@@ -287,6 +287,30 @@ def test_the_structural_model_meshes_conformally(tmp_path):
     assert result.returncode == 0 and "holds spars or ribs" in result.stderr and not nothing.exists()
 
 
+def test_structural_models_of_a_wing_and_its_flap_are_both_written_in_order(tmp_path):
+    # Two models, joined side by side (the larger first): the component segment's spars and
+    # ribs, and the flap's own spar and rib. Both are written, in the order of their hosts; the
+    # flap's is a shell whose spar and rib share their edges with its skins.
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6))
+    wing = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Ribs", 0.1, 0.9, 3))
+    path = with_flap_structure(wing.read_text(), tmp_path / "both.xml")
+    model = tmp_path / "models.step"
+    result = airshape("export", str(path), "--structure", "-o", str(model))
+    assert result.returncode == 0, result.stderr
+    rows = [line.split()[0] for line in result.stdout.splitlines() if line.endswith(" structure") or " structure " in line]
+    assert rows == ["Flap", "RectCS"], result.stdout
+    joining = [line for line in result.stderr.splitlines() if "joining the structure of" in line]
+    assert len(joining) == 2 and "RectCS (3 components)" in joining[0], joining  # the larger first
+    # Naming the flap writes its model alone (naming the component segment would bring its
+    # devices' models too, whose skins lie on the component segment's).
+    flap = tmp_path / "flap.step"
+    assert airshape("export", str(path), "--structure", "--components", "Flap", "-o", str(flap)).returncode == 0
+    joined = gmsh_mesh_conformity(flap, 0.1)
+    assert joined["duplicates"] == 0 and joined["junctions"] >= 2, joined
+
+
 def test_rib_errors_name_the_cpacs_path(tmp_path):
     positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
     path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"),
@@ -688,16 +712,13 @@ def test_spar_positions_on_curves(tmp_path):
     assert "sparPosition[8]/sparPositionCurve/referenceUID" in dangling["error"] and "'Nothing'" in dangling["error"]
 
 
-def test_the_structure_of_a_flap_in_its_own_coordinates(tmp_path):
-    # The flap of the test wing spans component segment eta 0.2 to 0.8 (y 1 to 4) aft of xsi 0.7
-    # (x 2.4 to 3). Its own spar at device xsi 0.5 (ξ 0.85, x 2.7) from its inner to its outer
-    # border, positioned with the component segment as reference (as the D150 and D250 files
-    # do), its own rib at device eta 0.5 (y 2.5) from its leading to its trailing edge, and a
-    # cell of its upper skin aft of its spar.
+def flap_structure():
+    """A spar at device xsi 0.5 of the test wing's flap, a rib at its eta 0.5 and a cell of its
+    upper skin aft of the spar."""
     def eta_xsi(kind, eta, xsi):
         return f"<{kind}><eta>{eta}</eta><xsi>{xsi}</xsi><referenceUID>RectCS</referenceUID></{kind}>"
 
-    structure = (
+    return (
         "<structure><upperShell><skin/><cells><cell uID=\"FlapCell\">"
         "<positioningLeadingEdge><sparUID>FlapSpar</sparUID></positioningLeadingEdge>"
         "<positioningTrailingEdge><xsi1>1</xsi1><xsi2>1</xsi2></positioningTrailingEdge>"
@@ -713,12 +734,23 @@ def test_the_structure_of_a_flap_in_its_own_coordinates(tmp_path):
         + position("FlapSpar0", 0, 0.5) + position("FlapSpar1", 1, 0.5)
         + "</sparPositions><sparSegments>" + segment("FlapSpar", "FlapSpar0", "FlapSpar1")
         + "</sparSegments></spars></structure>")
+
+
+def with_flap_structure(text, path):
+    """The file's text with flap_structure() in its flap, written to path."""
+    at = text.index("<path>", text.index('<trailingEdgeDevice uID="Flap">'))
+    path.write_text(text[:at] + flap_structure() + text[at:])
+    return path
+
+
+def test_the_structure_of_a_flap_in_its_own_coordinates(tmp_path):
+    # The flap of the test wing spans component segment eta 0.2 to 0.8 (y 1 to 4) aft of xsi 0.7
+    # (x 2.4 to 3). Its own spar at device xsi 0.5 (ξ 0.85, x 2.7) from its inner to its outer
+    # border, positioned with the component segment as reference (as the D150 and D250 files
+    # do), its own rib at device eta 0.5 (y 2.5) from its leading to its trailing edge, and a
+    # cell of its upper skin aft of its spar.
     with open(WITH_DEVICES) as original:
-        text = original.read()
-    flap = '<trailingEdgeDevice uID="Flap">'
-    at = text.index("<path>", text.index(flap))
-    path = tmp_path / "flap-structure.xml"
-    path.write_text(text[:at] + structure + text[at:])
+        path = with_flap_structure(original.read(), tmp_path / "flap-structure.xml")
     answers = ask(path, {"op": "component_surface_area", "uid": "FlapSpar"}, {"op": "bounding_box", "uid": "FlapSpar"},
                   {"op": "component_surface_area", "uid": "FlapRib"}, {"op": "bounding_box", "uid": "FlapRib"},
                   {"op": "component_surface_area", "uid": "FlapCell"}, {"op": "component_type", "uid": "FlapSpar"})
