@@ -359,15 +359,18 @@ def test_a_profile_whose_points_are_out_of_order_is_an_error_naming_it(tmp_path)
         "/cpacs/vehicles/profiles/fuselageProfiles/fuselageProfile[1]/pointList: the points' outline crosses itself"), answer
 
 
-def approximated_cylinders(path, settings):
+def approximated_cylinders(path, settings, kinks=""):
     """Prisms 10 long of a circle of radius 1 given by 64 points with a ripple of 1 mm on every
-    other point, approximated by the settings given (the reference's approximationSettings)."""
+    other point, approximated by the settings given (the reference's approximationSettings),
+    with the kinkIndices given."""
     angles = [2 * math.pi * i / 64 for i in range(65)]
     radius = [1.0 + (0.001 if i % 2 else 0.0) for i in range(65)]
     ys = ";".join(f"{r * math.sin(a):.17g}" for r, a in zip(radius, angles))
     zs = ";".join(f"{r * math.cos(a):.17g}" for r, a in zip(radius, angles))
+    kink_list = f"<kinkIndices>{kinks}</kinkIndices>" if kinks else ""
     profile = (f'<fuselageProfile uID="Rippled"><name>p</name><pointList><x>{";".join("0" * 65)}</x><y>{ys}</y>'
-               f"<z>{zs}</z><approximationSettings{settings}</approximationSettings></pointList></fuselageProfile>")
+               f"<z>{zs}</z>{kink_list}<approximationSettings{settings}</approximationSettings></pointList>"
+               "</fuselageProfile>")
     path.write_text(HEADER + fuselage("Smooth", "Rippled", 10.0) +
                     f"</fuselages></model></aircraft><profiles><fuselageProfiles>{profile}</fuselageProfiles>"
                     "</profiles></vehicles></cpacs>")
@@ -390,6 +393,20 @@ def test_approximation_settings_smooth_a_fuselage_profile(tmp_path):
     # Point 17 (1-based; a quarter turn, radius 1) is interpolated exactly.
     assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(pinned, [0, 1, 0])), pinned
     assert abs(math.hypot(between[1], between[2]) - 1.0005) < 5e-4, between
+
+
+def test_an_approximated_profile_counts_its_kinks_from_one(tmp_path):
+    # kinkIndices 17 beside approximationSettings is the 17th point (the schema's [1, npoints],
+    # as the reference reads them there beside the 1-based interpolatedPointsIndices): the
+    # quarter turn at radius 1, which the fit then passes through exactly. Counted from 0 it
+    # would be the next point, on the ripple (radius 1.001 at 2π · 17/64).
+    path = tmp_path / "kinked.xml"
+    approximated_cylinders(path, "><controlPointNumber>16</controlPointNumber>", kinks="17")
+    at_kink, = ask(path, {"op": "fuselage_point", "fuselage": 1, "segment": 1, "eta": 0, "zeta": 0.25})
+    assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(at_kink, [0, 1, 0])), at_kink
+    approximated_cylinders(path, "><controlPointNumber>16</controlPointNumber>", kinks="0")
+    answer = json.loads(airshape("query", str(path), stdin='{"op":"fuselage_volume","fuselage":1}\n').stdout)
+    assert answer["error"].endswith("pointList/kinkIndices: index 0 names no point of the list"), answer
 
 
 def test_approximation_settings_that_cannot_be_met_name_the_node(tmp_path):

@@ -92,12 +92,21 @@ std::vector<double> mappedLinearly(const std::vector<double>& parameters, const 
   return mapped;
 }
 
-/// The list's kinks as indices into the points read (repeats dropped).
-std::vector<int> kinksOf(const schema::CurvePointListXYZType& list, const std::vector<int>& listIndex) {
+/// The list's kinks as indices into the points read (repeats dropped). `firstIndex` is the
+/// index the list's first point has: 0 for an interpolated profile, as the reference reads
+/// kinkIndices there (the shared cases hold it to that), 1 for an approximated one, as the
+/// schema documents them ([1, npoints]) and the reference reads them beside the 1-based
+/// interpolatedPointsIndices.
+std::vector<int> kinksOf(const schema::CurvePointListXYZType& list, const std::vector<int>& listIndex,
+                         int firstIndex) {
   std::vector<int> kinks;
+  const std::string at = list.xpath + "/kinkIndices";
   if (list.kinkIndices)
-    for (int index : indicesOf(*list.kinkIndices, list.xpath + "/kinkIndices"))
-      kinks.push_back(pointIndexOf(index, listIndex, list.xpath + "/kinkIndices"));
+    for (int index : indicesOf(*list.kinkIndices, at)) {
+      if (index < firstIndex)
+        throw Error(ErrorCode::InvalidModel, "index " + std::to_string(index) + " names no point of the list", {}, at);
+      kinks.push_back(pointIndexOf(index - firstIndex, listIndex, at));
+    }
   return kinks;
 }
 
@@ -194,7 +203,8 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
   std::vector<int> listIndex;
   FuselageProfile profile;
   std::vector<gp_Pnt> points = readPoints(list, xpath, listIndex, profile.warnings);
-  std::vector<int> kinks = kinksOf(list, listIndex);
+  const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr;
+  std::vector<int> kinks = kinksOf(list, listIndex, settings != nullptr ? 1 : 0);
   std::map<int, double> pinned = pinnedParametersOf(list, listIndex);
   profile.points = points;
   profile.mirroredHalf = isMirroredHalf(definition);
@@ -221,7 +231,6 @@ FuselageProfile fromPointList(const schema::ProfileGeometryType& definition) {
       if (!((*mapped)[i] > (*mapped)[i - 1]))
         throw Error(ErrorCode::InvalidModel, "paramOnCurve does not increase along the points", {}, at);
   }
-  const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr;
   if (settings != nullptr) {  // fitted in the mapped parameters, so that its knots follow the map
     const model::ApproximationSettings request =
         model::approximationSettings(*settings, xpath + "/approximationSettings", static_cast<int>(points.size()));
