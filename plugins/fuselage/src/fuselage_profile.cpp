@@ -97,8 +97,7 @@ std::vector<double> mappedLinearly(const std::vector<double>& parameters, const 
 /// kinkIndices there (the shared cases hold it to that), 1 for an approximated one, as the
 /// schema documents them ([1, npoints]) and the reference reads them beside the 1-based
 /// interpolatedPointsIndices.
-std::vector<int> kinksOf(const schema::CurvePointListXYZType& list, const std::vector<int>& listIndex,
-                         int firstIndex) {
+std::vector<int> kinksOf(const schema::CurvePointListXYZType& list, const std::vector<int>& listIndex, int firstIndex) {
   std::vector<int> kinks;
   const std::string at = list.xpath + "/kinkIndices";
   if (list.kinkIndices)
