@@ -72,6 +72,44 @@ NamedShape joined(const std::vector<const NamedShape*>& parts, const std::string
   return model;
 }
 
+/// A model's host and its parts: the host's shape first, then its built structure.
+using ModelParts = std::pair<std::string, std::vector<const NamedShape*>>;
+
+/// The wanted models with their parts, in the order of their hosts; structure that fails to
+/// build is left out and said in `leftOut`, a host left with nothing to join is no model.
+std::vector<ModelParts> modelsToJoin(const Configuration& configuration, const ExportOptions& options,
+                                     std::vector<std::string>& leftOut) {
+  std::vector<ModelParts> models;
+  for (const auto& [host, structure] : structureByHost(configuration)) {
+    if (!wanted(configuration, host, options)) continue;
+    std::vector<const NamedShape*> parts = {&configuration.shapes().namedShapeOf(configuration, host)};
+    for (const std::string& uid : structure) {
+      try {
+        parts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
+      } catch (const Error& error) {
+        leftOut.push_back(uid + ": " + error.message());
+      } catch (const Standard_Failure& failure) {
+        leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
+      }
+    }
+    if (parts.size() >= 2) models.emplace_back(host, std::move(parts));
+  }
+  return models;
+}
+
+/// The models' indices, the one with the most faces first: joined side by side, a large model
+/// started last would leave a core idle while it finishes alone (each fuse keeps both cores
+/// busy only in parts).
+std::vector<std::size_t> largestFirst(const std::vector<ModelParts>& models) {
+  std::vector<std::size_t> faces(models.size(), 0);
+  for (std::size_t k = 0; k < models.size(); ++k)
+    for (const NamedShape* part : models[k].second) faces[k] += part->faces.size();
+  std::vector<std::size_t> order(models.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return faces[a] > faces[b]; });
+  return order;
+}
+
 }  // namespace
 
 std::vector<std::size_t> structuralModelComponents(const Configuration& configuration, const ExportOptions& options) {
@@ -91,30 +129,8 @@ std::vector<std::size_t> structuralModelComponents(const Configuration& configur
 std::vector<SceneComponent> structuralModels(const Configuration& configuration, const ExportOptions& options,
                                              std::vector<std::string>& leftOut,
                                              const std::function<void(const std::string&)>& step) {
-  // Each model's parts: its host's faces and its built structure.
-  std::vector<std::pair<std::string, std::vector<const NamedShape*>>> models;
-  for (const auto& [host, structure] : structureByHost(configuration)) {
-    if (!wanted(configuration, host, options)) continue;
-    std::vector<const NamedShape*> parts = {&configuration.shapes().namedShapeOf(configuration, host)};
-    for (const std::string& uid : structure) {
-      try {
-        parts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
-      } catch (const Error& error) {
-        leftOut.push_back(uid + ": " + error.message());
-      } catch (const Standard_Failure& failure) {
-        leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
-      }
-    }
-    if (parts.size() >= 2) models.emplace_back(host, std::move(parts));
-  }
-  // Joined side by side, the models with the most faces first: one large model would otherwise
-  // leave a core idle while it finishes alone (each fuse keeps both cores busy only in parts).
-  std::vector<std::size_t> order(models.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::vector<std::size_t> faces(models.size(), 0);
-  for (std::size_t k = 0; k < models.size(); ++k)
-    for (const NamedShape* part : models[k].second) faces[k] += part->faces.size();
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return faces[a] > faces[b]; });
+  const std::vector<ModelParts> models = modelsToJoin(configuration, options, leftOut);
+  const std::vector<std::size_t> order = largestFirst(models);
   std::vector<SceneComponent> joinedModels(models.size());
   std::mutex reporting;
   parallelFor(order.size(), [&](std::size_t k) {
