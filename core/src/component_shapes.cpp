@@ -2,6 +2,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/graph/component_graph.h"
 #include "airshape/model/symmetry.h"
 
 namespace airshape {
@@ -13,7 +14,7 @@ const NamedShape& ComponentShapes::namedShapeOf(const Configuration& configurati
   if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
   const std::string& nodeType = configuration.components().components()[static_cast<std::size_t>(index)].nodeType;
   const auto builder = builders_.find(nodeType);
-  if (builder == builders_.end()) throw Error(ErrorCode::NotImplemented, "no builder yet for " + nodeType);
+  if (builder == builders_.end()) throw noShapeBuilt(uid, nodeType);
   return *configuration.cache().obtain<NamedShape>(
       "shape:" + uid, [&] { return std::make_shared<const NamedShape>(builder->second(configuration, uid)); });
 }
@@ -25,6 +26,12 @@ const NamedShape& ComponentShapes::mirroredShapeOf(const Configuration& configur
   return *configuration.cache().obtain<NamedShape>("mirrored-shape:" + uid, [&] {
     return std::make_shared<const NamedShape>(transformedNamedShape(original, model::mirrorIn(plane), " (mirrored)"));
   });
+}
+
+Error noShapeBuilt(const std::string& uid, const std::string& nodeType) {
+  if (nodeType == graph::kModelNodeType)
+    return Error(ErrorCode::InvalidArgument, "'" + uid + "' is the model (type plane): it has no shape");
+  return Error(ErrorCode::NotImplemented, "no builder yet for " + nodeType);
 }
 
 }  // namespace airshape

@@ -106,9 +106,12 @@ def test_errors_name_what_is_wrong():
                     {"op": "component_volume", "uid": "ExampleAircraft"},
                     {"op": "cross_section_area", "uid": "Fuselage", "point": [1, 0, 0], "normal": [0, 0, 0]},
                     {"op": "intersection_count", "uid1": "MainWing", "uid2": "MainWing"},
-                    {"op": "cross_section_area", "uid": "Fuselage", "point": [1, 0], "normal": [1, 0, 0]})
+                    {"op": "cross_section_area", "uid": "Fuselage", "point": [1, 0], "normal": [1, 0, 0]},
+                    {"op": "bounding_box", "uid": "ExampleAircraft"}, {"op": "component_faces", "uid": "ExampleAircraft"})
     assert wrong[0] == {"error": "no component with uID 'Nobody'"}
-    assert "is the model (type plane): it has no shape" in wrong[1]["error"]
+    # The model has no shape, whichever op asks for it (the box said "no builder yet for model").
+    for answer in (wrong[1], wrong[5], wrong[6]):
+        assert answer == {"error": "'ExampleAircraft' is the model (type plane): it has no shape"}, answer
     assert wrong[2] == {"error": "the normal must not be zero"}
     assert "same component" in wrong[3]["error"]
     assert wrong[4] == {"error": "argument 'point' must be [x, y, z]"}

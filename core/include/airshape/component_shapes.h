@@ -6,6 +6,7 @@
 
 #include <gp_Trsf.hxx>
 
+#include "airshape/error.h"
 #include "airshape/named_shape.h"
 
 namespace airshape {
@@ -77,5 +78,9 @@ class ComponentShapes {
   std::map<std::string, ShapeBuilder> detailedBuilders_;
   std::map<std::string, ComponentMotion> motions_;
 };
+
+/// Why a component of this node type has no shape to give: the model (the plane itself) has
+/// none; a type no loaded plugin builds says so. The Error to throw where a shape is asked for.
+Error noShapeBuilt(const std::string& uid, const std::string& nodeType);
 
 }  // namespace airshape

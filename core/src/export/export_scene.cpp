@@ -40,8 +40,7 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
     const long index = graph.find(uid);
     if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
     const graph::Component& component = graph.components()[static_cast<std::size_t>(index)];
-    if (configuration.shapes().find(component.nodeType) == nullptr)
-      throw Error(ErrorCode::NotImplemented, "no builder yet for " + component.nodeType + " '" + uid + "'");
+    if (configuration.shapes().find(component.nodeType) == nullptr) throw noShapeBuilt(uid, component.nodeType);
     wanted[static_cast<std::size_t>(index)] = true;
   }
   for (const auto& [uid, component] : posed) wanted[static_cast<std::size_t>(graph.find(uid))] = true;

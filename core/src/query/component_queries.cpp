@@ -26,8 +26,6 @@ const graph::Component& componentArgument(const Configuration& configuration, co
 
 /// The shape of a component that has geometry: not the model, built, and not empty.
 const TopoDS_Shape& measuredShape(const Configuration& configuration, const graph::Component& component) {
-  if (component.nodeType == graph::kModelNodeType)
-    throw Error(ErrorCode::InvalidArgument, "'" + component.uid + "' is the model (type plane): it has no shape");
   const TopoDS_Shape& shape = configuration.shapes().shapeOf(configuration, component.uid);
   Bnd_Box box;
   if (!shape.IsNull()) BRepBndLib::Add(shape, box);
