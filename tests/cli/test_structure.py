@@ -197,14 +197,17 @@ def test_an_explicit_rib_in_the_tip_section_is_the_tip(tmp_path):
     assert box["min"][1] == pytest.approx(5, abs=1e-6) and box["max"][0] == pytest.approx(3, abs=1e-6)
 
 
-def tilted_tip(path):
-    """The file with the wing's tip section turned 30° about x: its profile stands along
-    (0, −sin 30°, cos 30°)."""
-    path.write_text(path.read_text().replace(
-        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>',
-        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
-        "<rotation><x>30</x><y>0</y><z>0</z></rotation>", 1))
+def edited(path, old, new):
+    """The file with the first `old` in it replaced by `new`."""
+    path.write_text(path.read_text().replace(old, new, 1))
     return path
+
+
+def tilted_tip(path, degrees=30):
+    """The file with the wing's tip section turned by `degrees` about x: at 30° its profile
+    stands along (0, −sin 30°, cos 30°)."""
+    tip = '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
+    return edited(path, tip, tip + f"<rotation><x>{degrees}</x><y>0</y><z>0</z></rotation>")
 
 
 def test_a_spar_web_twists_into_a_tilted_tip(tmp_path):
@@ -420,11 +423,7 @@ def test_a_cell_on_the_tip_reaches_a_tip_that_leans_outwards(tmp_path):
     # there, its farthest point at ξ 0.5 (h = 0.075), y = 5.0375.
     positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
     tip = cell("TipCell", 0.5, 1.0, "<xsi1>0.2</xsi1><xsi2>0.2</xsi2>", "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")
-    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"), cells(tip))
-    path.write_text(path.read_text().replace(
-        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>',
-        '<section uID="R2"><name>tip</name><transformation><scaling><x>2</x><y>2</y><z>2</z></scaling>'
-        "<rotation><x>-30</x><y>0</y><z>0</z></rotation>", 1))
+    path = tilted_tip(with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"), cells(tip)), -30)
     box, = (a["ok"] for a in ask(path, {"op": "bounding_box", "uid": "TipCell"}))
     assert box["max"][1] == pytest.approx(5 + 0.075 * 0.5, abs=1e-6)
     assert box["min"][0] == pytest.approx(1.4, abs=1e-3) and box["max"][0] == pytest.approx(2.2, abs=1e-3)
@@ -458,10 +457,9 @@ def test_a_cell_ends_on_the_web_of_its_spar(tmp_path):
     # Skin: the profile z = 0.3·ξ(1−ξ), x = 1 + 2ξ moved along (0, 5 cos 30°, 5 sin 30°).
     positions = position("S0", 0, 0.2) + position("S1", 1, 0.5)
     behind = cell("Behind", 0.0, 1.0, "<sparUID>Slanting</sparUID>", "<xsi1>0.8</xsi1><xsi2>0.8</xsi2>")
-    path = with_spars(tmp_path, positions, segment("Slanting", "S0", "S1"), cells(behind))
-    path.write_text(path.read_text().replace(
-        "<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>0</dihedralAngle>",
-        "<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>30</dihedralAngle>", 1))
+    path = edited(with_spars(tmp_path, positions, segment("Slanting", "S0", "S1"), cells(behind)),
+                  "<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>0</dihedralAngle>",
+                  "<length>5</length><sweepAngle>0</sweepAngle><dihedralAngle>30</dihedralAngle>")
     area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Behind"},
                                       {"op": "bounding_box", "uid": "Behind"}))
     lean = math.cos(math.radians(30))
@@ -541,11 +539,8 @@ def test_cell_sides_lean_with_the_leading_edge_from_root_to_tip(tmp_path):
     # beyond it.
     path = two_segment_wing(tmp_path, cells(cell("Kinked", 0.0, 0.2, "<xsi1>0.2</xsi1><xsi2>0.2</xsi2>",
                                                  "<xsi1>0.6</xsi1><xsi2>0.6</xsi2>")))
-    path.write_text(path.read_text().replace(
-        '<positioning uID="RP3"><name>p</name><length>4</length><sweepAngle>0</sweepAngle>'
-        "<dihedralAngle>0</dihedralAngle>",
-        '<positioning uID="RP3"><name>p</name><length>4</length><sweepAngle>0</sweepAngle>'
-        "<dihedralAngle>40</dihedralAngle>", 1))
+    kink = '<positioning uID="RP3"><name>p</name><length>4</length><sweepAngle>0</sweepAngle><dihedralAngle>'
+    edited(path, kink + "0</dihedralAngle>", kink + "40</dihedralAngle>")
     area, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Kinked"}))
     dihedral = math.radians(40)
     lean = 4 * math.sin(dihedral) / (1 + 4 * math.cos(dihedral))
