@@ -328,8 +328,10 @@ std::vector<gp_Vec> sideLines(const std::vector<gp_Pnt>& loop, const std::vector
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t before = (k + count - 1) % count;
     const bool sparKink = (k > 0 && k < outerFront && leadingSpar) || (k > outerFront + 1 && k < last && trailingSpar);
-    gp_Vec line = upright(k);
-    if (!sparKink) {
+    gp_Vec line;
+    if (sparKink) {
+      line = upright(k);
+    } else {
       const gp_Vec first = sideNormal(before, k), second = sideNormal(k, k);
       line = first.Crossed(second);
       if (line.Magnitude() < 1e-9 * first.Magnitude() * second.Magnitude()) line = across;  // sides in one plane
