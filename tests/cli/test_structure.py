@@ -500,7 +500,7 @@ def test_structure_conformance_does_not_regress():
     passed, output = conformance_passed("cases-structure.json")
     # Spar webs, ribs, cells, plane pressure bulkheads, fuselage and vessel walls, cross beams and struts are built
     # (docs/structure.md). This floor guards what works.
-    assert passed >= 493, output[-3000:]
+    assert passed >= 494, output[-3000:]
 
 
 def two_segment_wing(tmp_path, shells):
@@ -527,6 +527,27 @@ def two_segment_wing(tmp_path, shells):
     path = tmp_path / "two-segments.xml"
     path.write_text(text.replace("<controlSurfaces>", f"<structure>{shells}</structure><controlSurfaces>", 1))
     return path
+
+
+def test_a_spar_crosses_a_section_on_the_line_to_its_upper_trailing_edge(tmp_path):
+    # A blunt trailing edge 0.1 of the chord thick: the upper skin ends at z = 0.1 ξ (chord 2).
+    # The spar from (y 0, ξ 0.2) to (y 5, ξ 0.6) crosses the section at y = 1 at ξ 0.28, on the
+    # line from the leading edge to the upper trailing edge (the reference library's), z = 0.028,
+    # not on the chord (z = 0). A rib square to y at half the spar's length lies where that
+    # kinked line reaches half its length; through the chord it would be y = 2.5 exactly.
+    spar = segment("Diagonal", "D0", "D1")
+    rib = ribs("Rib", 0.5, 0.5, 1, reference="Diagonal", rib_start="leadingEdge", rib_end="trailingEdge")
+    path = two_segment_wing(tmp_path, rib + f"<spars><sparPositions>{position('D0', 0, 0.2)}{position('D1', 1, 0.6)}"
+                            f"</sparPositions><sparSegments>{spar}</sparSegments></spars>")
+    path.write_text(path.read_text().replace('<lowerB mapType="vector">0.15</lowerB>',
+                                             '<lowerB mapType="vector">0.15</lowerB>'
+                                             "<trailingEdgeThickness>0.1</trailingEdgeThickness>", 1))
+    box, = (a["ok"] for a in ask(path, {"op": "bounding_box", "uid": "Rib"}))
+    rise = 0.1 * 0.28
+    inner, outer = math.sqrt(0.16 ** 2 + 1 + rise ** 2), math.sqrt(0.64 ** 2 + 16 + rise ** 2)
+    expected = 1 + (0.5 * (inner + outer) - inner) / outer * 4
+    assert (box["min"][1] + box["max"][1]) / 2 == pytest.approx(expected, abs=1e-9)
+    assert expected < 2.5 - 1e-4
 
 
 def test_cell_sides_lean_with_the_leading_edge_from_root_to_tip(tmp_path):

@@ -144,9 +144,17 @@ Polyline StructureFrame::edgeLine(double xsi) const {
   // A device's edges within the wing are straight lines (the schema's controlSurface remarks).
   if (inDevice()) return Polyline({chordPoint("", 0.0, xsi), chordPoint("", 1.0, xsi)});
   const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
-  std::vector<gp_Pnt> points = {chordPoint(segments.front(), 0.0, xsi)};
-  for (const std::string& segment : segments) points.push_back(chordPoint(segment, 1.0, xsi));
+  auto edgePoint = [&](const std::string& segment, double eta) {
+    return xsi == 1.0 ? sectionTrailingEdge(segment, eta) : chordPoint(segment, eta, xsi);
+  };
+  std::vector<gp_Pnt> points = {edgePoint(segments.front(), 0.0)};
+  for (const std::string& segment : segments) points.push_back(edgePoint(segment, 1.0));
   return Polyline(points);
+}
+
+gp_Pnt StructureFrame::sectionTrailingEdge(const std::string& segmentUid, double eta) const {
+  if (inDevice()) return chordPoint(segmentUid, eta, 1.0);
+  return toWing(wing().pointRelativeTo(configuration_, componentSegmentUid_, segmentUid, eta, 1.0, Surface::Upper));
 }
 
 Polyline StructureFrame::midplaneLine(const gp_Pnt& from, const gp_Pnt& to) const {
@@ -155,7 +163,7 @@ Polyline StructureFrame::midplaneLine(const gp_Pnt& from, const gp_Pnt& to) cons
   std::vector<std::pair<double, gp_Pnt>> crossings;
   const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
   for (std::size_t k = 0; k + 1 < segments.size(); ++k) {
-    const gp_Pnt front = chordPoint(segments[k], 1.0, 0.0), back = chordPoint(segments[k], 1.0, 1.0);
+    const gp_Pnt front = chordPoint(segments[k], 1.0, 0.0), back = sectionTrailingEdge(segments[k], 1.0);
     const double a = gp_Vec(from, front).Dot(normal), b = gp_Vec(from, back).Dot(normal);
     if (a == b) continue;
     const gp_Pnt crossing = front.Translated(a / (a - b) * gp_Vec(front, back));

@@ -63,11 +63,13 @@ class StructureFrame {
   /// The direction in which eta grows at eta (wing frame, unit): the leading edge seen from
   /// the front (x dropped), along which the component segment's eta is measured.
   gp_Vec etaDirection(double eta) const;
-  /// The leading or trailing edge: straight from section to section, in the wing frame.
+  /// The leading or trailing edge: straight from section to section, in the wing frame (the
+  /// trailing edge through `sectionTrailingEdge`).
   Polyline leadingEdge() const { return edgeLine(0.0); }
   Polyline trailingEdge() const { return edgeLine(1.0); }
   /// The line between two chord surface points (wing frame): straight within a wing segment,
-  /// broken where it crosses a section's chord (its vertical plane meets the chord there).
+  /// broken where its vertical plane crosses a section's line from the leading edge to
+  /// `sectionTrailingEdge`.
   Polyline midplaneLine(const gp_Pnt& from, const gp_Pnt& to) const;
   /// The midplane line through a spar segment's positions, in the wing frame.
   Polyline sparLine(const SparSegment& spar) const;
@@ -101,6 +103,12 @@ class StructureFrame {
 
  private:
   Polyline edgeLine(double xsi) const;
+  /// A section's trailing edge point as the lines along the span take it: the upper skin's
+  /// (at a blunt trailing edge its upper corner, not the chord's end), as the reference
+  /// library draws its trailing edge and spar lines; D250's ribs set along its kinked mid spar
+  /// are where the reference puts them only so (5e-5 m off along the spar with the chord's end).
+  /// In a device: its chord's end.
+  gp_Pnt sectionTrailingEdge(const std::string& segmentUid, double eta) const;
   /// The component segment coordinates of a point in the frame's (eta, xsi).
   std::pair<double, double> componentSegmentCoordinates(double eta, double xsi) const;
 
