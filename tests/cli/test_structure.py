@@ -162,6 +162,26 @@ def test_ribs_to_the_wing_edges_in_closed_form(tmp_path):
     assert blunt_area == pytest.approx(3 * (0.2 + 2 * 0.02), rel=1e-9)
 
 
+def test_a_rib_at_a_spars_root_is_the_root_section_whatever_its_rotation(tmp_path):
+    # Both spars start in the root section (y = 0). A rib set at eta 0 of the front spar is the
+    # root section between the spars, as the reference library builds it, even turned by 0°
+    # from the y axis (a plane along the spars, which would never reach the rear spar).
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6))
+    spars = segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1")
+    along = "<ribRotationReference>globalY</ribRotationReference><z>0</z>"
+    path = with_spars(tmp_path, positions, spars, ribs("Ribs", 0, 0, 1, rotation=along))
+    area, box = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"},
+                                      {"op": "bounding_box", "uid": "Ribs"}))
+
+    def under(xi):
+        return xi ** 2 / 2 - xi ** 3 / 3
+
+    assert area == pytest.approx(2 * 0.6 * (under(0.6) - under(0.2)), rel=1e-9)
+    assert box["min"][1] == pytest.approx(0.0, abs=1e-6) and box["max"][1] == pytest.approx(0.0, abs=1e-6)
+    assert box["min"][0] == pytest.approx(1.4, abs=1e-6) and box["max"][0] == pytest.approx(2.2, abs=1e-6)
+
+
 def test_an_explicitly_positioned_rib_between_two_spars(tmp_path):
     positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
                  position("PosR1", 1, 0.6))

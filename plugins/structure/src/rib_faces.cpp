@@ -11,6 +11,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/model/placement.h"
 #include "faces_inside.h"
 #include "named_faces.h"
 #include "rib_cutter.h"
@@ -70,8 +71,8 @@ class RibSet {
   std::vector<RibPlacement> placements() const {
     const bool startsOnSpar = positioning_.startSparPositionUID.has_value();
     const bool endsOnSpar = positioning_.endSparPositionUID.has_value();
-    const double start = etaOnReference(endPoint(true), startsOnSpar);
-    const double end = etaOnReference(endPoint(false), endsOnSpar);
+    const double start = endShare(true, startsOnSpar);
+    const double end = endShare(false, endsOnSpar);
     const int count = numberOfRibs(start, end);
     const double offset = etaOffset(start, end, count);
     std::vector<RibPlacement> placements;
@@ -79,6 +80,10 @@ class RibSet {
       const double eta = start + offset * i;
       const bool onSpar = (i == 0 && startsOnSpar) || (std::abs(end - eta) <= 1e-7 && endsOnSpar);
       const gp_Pnt point = reference_.at(eta);
+      if (const auto section = endSectionAt(eta)) {
+        placements.push_back(sectionPlacement(point, *section));
+        continue;
+      }
       const auto [direction, up] = ribAxes(point, eta, onSpar);
       placements.push_back({point, direction, up});
     }
@@ -147,6 +152,30 @@ class RibSet {
     return {direction, up};
   }
 
+  /// The component segment's root (eta 0) or tip (1) when a rib at `share` of its reference
+  /// line lies in it: at an end of the line that lies in that section (a wing edge's, or a
+  /// spar's that starts or ends there). Such a rib is the section between its borders whatever
+  /// its rotation, as the reference library builds it (the guided D150 files' tail ribs at
+  /// their spars' roots are turned so that their planes would run along the spars).
+  std::optional<double> endSectionAt(double share) const {
+    constexpr double kAtEnd = 1e-7, kInSection = 1e-6;
+    if (frame_.inDevice() || (share > kAtEnd && share < 1.0 - kAtEnd)) return std::nullopt;
+    const double eta = frame_.etaOf(reference_.at(share < kAtEnd ? 0.0 : 1.0));
+    if (std::abs(eta) < kInSection) return 0.0;
+    if (std::abs(eta - 1.0) < kInSection) return 1.0;
+    return std::nullopt;
+  }
+
+  /// A rib in the root or tip section: its plane the section's, along the chord from its start
+  /// towards its end (forwards only from the trailing edge or to the leading edge).
+  RibPlacement sectionPlacement(const gp_Pnt& point, double section) const {
+    gp_Vec direction(frame_.chordPoint("", section, 0.0), frame_.chordPoint("", section, 1.0));
+    const bool forwards = (isWingEdge(positioning_.ribStart) && !isLeadingEdge(positioning_.ribStart)) ||
+                          (isWingEdge(positioning_.ribEnd) && isLeadingEdge(positioning_.ribEnd));
+    if (forwards) direction.Reverse();
+    return {point, direction.Normalized(), frame_.thicknessDirection(section, 0.5).Normalized()};
+  }
+
   /// The first (`start`) or the last rib's point as the schema gives it, or, in older files,
   /// where the reference line reaches the component segment eta `etaStart` or `etaEnd`.
   gp_Pnt endPoint(bool start) const {
@@ -184,6 +213,16 @@ class RibSet {
     if (!share)
       throw Error(ErrorCode::InvalidModel, "the reference line does not reach eta " + std::to_string(eta), {}, where);
     return reference_.at(*share);
+  }
+
+  /// The share of the reference line the first (`start`) or the last rib sits at: a point
+  /// given on the reference line itself is its own share (a rib through it may run along the
+  /// line); any other point gives the share where the rib through it crosses the line.
+  double endShare(bool start, bool onSpar) const {
+    const auto& curve = start ? positioning_.startCurvePoint : positioning_.endCurvePoint;
+    if (curve && curve->referenceUID == positioning_.ribReference)
+      return model::fraction(curve->eta, xpath() + (start ? "/startCurvePoint/eta" : "/endCurvePoint/eta"));
+    return etaOnReference(endPoint(start), onSpar);
   }
 
   /// The share of the reference line where the rib through a point crosses it.
