@@ -140,13 +140,13 @@ gp_Vec StructureFrame::etaDirection(double eta) const {
   return Polyline(seenFromFront).directionAt(std::clamp(eta, 0.0, 1.0));
 }
 
-Polyline StructureFrame::edgeLine(double xsi) const {
-  // A device's edges within the wing are straight lines (the schema's controlSurface remarks).
-  if (inDevice()) return Polyline({chordPoint("", 0.0, xsi), chordPoint("", 1.0, xsi)});
-  const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
+Polyline StructureFrame::edgeLine(bool trailing) const {
   auto edgePoint = [&](const std::string& segment, double eta) {
-    return xsi == 1.0 ? sectionTrailingEdge(segment, eta) : chordPoint(segment, eta, xsi);
+    return trailing ? sectionTrailingEdge(segment, eta) : chordPoint(segment, eta, 0.0);
   };
+  // A device's edges within the wing are straight lines (the schema's controlSurface remarks).
+  if (inDevice()) return Polyline({edgePoint("", 0.0), edgePoint("", 1.0)});
+  const std::vector<std::string> segments = wing().componentSegmentSegmentUids(configuration_, componentSegmentUid_);
   std::vector<gp_Pnt> points = {edgePoint(segments.front(), 0.0)};
   for (const std::string& segment : segments) points.push_back(edgePoint(segment, 1.0));
   return Polyline(points);

@@ -65,8 +65,8 @@ class StructureFrame {
   gp_Vec etaDirection(double eta) const;
   /// The leading or trailing edge: straight from section to section, in the wing frame (the
   /// trailing edge through `sectionTrailingEdge`).
-  Polyline leadingEdge() const { return edgeLine(0.0); }
-  Polyline trailingEdge() const { return edgeLine(1.0); }
+  Polyline leadingEdge() const { return edgeLine(false); }
+  Polyline trailingEdge() const { return edgeLine(true); }
   /// The line between two chord surface points (wing frame): straight within a wing segment,
   /// broken where its vertical plane crosses a section's line from the leading edge to
   /// `sectionTrailingEdge`.
@@ -102,7 +102,7 @@ class StructureFrame {
   const wing::WingServices& wing() const { return services_.wing; }
 
  private:
-  Polyline edgeLine(double xsi) const;
+  Polyline edgeLine(bool trailing) const;
   /// A section's trailing edge point as the lines along the span take it: the upper skin's
   /// (at a blunt trailing edge its upper corner, not the chord's end), as the reference
   /// library draws its trailing edge and spar lines; D250's ribs set along its kinked mid spar
