@@ -3,12 +3,15 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <boost/config.hpp>
 
 #include "airshape/error.h"
 #include "airshape/export/exporter.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/parallel_for.h"
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
 #include "open_configuration.h"
@@ -107,14 +110,22 @@ void printProgress(const exporting::ExportProgress& progress) {
   std::cerr << progress.step << ", " << std::fixed << std::setprecision(2) << progress.seconds << " s\n";
 }
 
-/// The one-screen summary: each solid written with its volume and area.
+/// The one-screen summary: each solid written with its volume and area. The solids are
+/// measured on every core: a wing with its cut-outs has trimmed faces, which take OCCT's
+/// adaptive integration (CPACS_30_aircraft_flaps.xml with every device deflected: 0.43 s of
+/// its 1.7 s export on one core, 0.21-0.25 s on two).
 void printSummary(const exporting::ExportScene& scene) {
+  std::vector<std::pair<double, double>> measures(scene.components.size());
+  parallelFor(scene.components.size(), [&](std::size_t index) {
+    const TopoDS_Shape& shape = scene.components[index].shape.shape;
+    measures[index] = {geometry::enclosedVolume(shape), geometry::areaOf(shape)};
+  });
   std::cout << std::left << std::setw(36) << "component" << std::right << std::setw(14) << "volume [m3]"
             << std::setw(14) << "area [m2]" << '\n';
-  for (const exporting::SceneComponent& component : scene.components)
-    std::cout << std::left << std::setw(36) << component.name << std::right << std::fixed << std::setprecision(4)
-              << std::setw(14) << geometry::enclosedVolume(component.shape.shape) << std::setw(14)
-              << geometry::areaOf(component.shape.shape) << '\n';
+  for (std::size_t index = 0; index < scene.components.size(); ++index)
+    std::cout << std::left << std::setw(36) << scene.components[index].name << std::right << std::fixed
+              << std::setprecision(4) << std::setw(14) << measures[index].first << std::setw(14)
+              << measures[index].second << '\n';
 }
 
 /// How many geometric elements of the file no loaded plugin builds yet.
