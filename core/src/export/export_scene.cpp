@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -116,6 +117,15 @@ SceneComponent copied(const std::string& name, const NamedShape& shape) {
   }
 }
 
+/// Says a step after building (`count` components built) on the export's progress, if any.
+std::function<void(const std::string&)> stepReporter(const ExportOptions& options, std::size_t count,
+                                                     Clock::time_point start) {
+  return [&options, count, start](const std::string& what) {
+    if (options.progress)
+      options.progress({count, count, std::chrono::duration<double>(Clock::now() - start).count(), what});
+  };
+}
+
 /// A solid of the scene: its name (the uID, or "<uID> (mirrored)"), its component's type.
 struct SceneSolid {
   std::string name;
@@ -145,9 +155,12 @@ std::optional<NamedShape> detailedShape(const Configuration& configuration, cons
 
 std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const std::vector<std::size_t>& selected,
                                     const std::vector<bool>& failed, const std::map<std::string, PosedComponent>& posed,
-                                    const ExportOptions& options, std::vector<std::string>& notes) {
-  std::set<std::string> changed;  // posed, or hosting a posed one
-  for (const auto& [uid, component] : posed) changed.insert({uid, component.host});
+                                    const ExportOptions& options, std::vector<std::string>& notes,
+                                    const std::function<void(const std::string&)>& step) {
+  std::set<std::string> hosts;  // of a posed component
+  for (const auto& [uid, component] : posed) hosts.insert(component.host);
+  std::set<std::string> changed = hosts;  // posed, or hosting a posed one
+  for (const auto& [uid, component] : posed) changed.insert(uid);
   std::vector<SceneSolid> solids;
   for (std::size_t index : selected) {
     if (failed[index]) continue;
@@ -166,6 +179,7 @@ std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const st
     }
     const NamedShape shape =
         asBuilt ? configuration.shapes().namedShapeOf(configuration, uid) : posedSolid(configuration, uid, posed);
+    if (hosts.count(uid) > 0) step("cut its moving parts out of " + uid);
     solids.push_back({uid, shape, component.typeName});
     if (!options.mirror || !hasMirror(configuration, uid)) continue;
     const std::string plane = model::resolvedSymmetry(configuration, uid);
@@ -183,11 +197,7 @@ ExportScene structuralScene(const Configuration& configuration, const ExportOpti
   const std::vector<std::size_t> components = structuralModelComponents(configuration, options);
   buildSelected(configuration, components, options, start);
   ExportScene scene{std::filesystem::path(configuration.source()).stem().string(), {}, {}, {}};
-  const auto step = [&](const std::string& what) {
-    if (options.progress)
-      options.progress(
-          {components.size(), components.size(), std::chrono::duration<double>(Clock::now() - start).count(), what});
-  };
+  const auto step = stepReporter(options, components.size(), start);
   for (const SceneComponent& model : structuralModels(configuration, options, scene.leftOut, step))
     scene.components.push_back(copied(model.name, model.shape));
   return scene;
@@ -210,11 +220,10 @@ ExportScene buildScene(const Configuration& configuration, const ExportOptions& 
     scene.leftOut.push_back(configuration.components().components()[index].uid + ": " + why);
   }
 
-  const auto solids = sceneSolids(configuration, selected, failed, posed, options, scene.notes);
+  const auto step = stepReporter(options, selected.size(), start);
+  const auto solids = sceneSolids(configuration, selected, failed, posed, options, scene.notes, step);
   if (options.fused) {
-    if (options.progress)
-      options.progress(
-          {selected.size(), selected.size(), std::chrono::duration<double>(Clock::now() - start).count(), "fusing"});
+    step("fusing");
     std::vector<const NamedShape*> shapes;
     for (const SceneSolid& solid : solids) shapes.push_back(&solid.shape);
     scene.components.push_back(copied(scene.name + " (fused)", fuseNamedShapes(shapes)));
