@@ -134,6 +134,26 @@ double integralOverSpans(const Geom_BSplineCurve& curve, F f) {
   return sum;
 }
 
+TEST(Measures, ASkinOfThousandsOfShortSpansIsMeasuredExactly) {
+  // The prism's skin between two wavy profiles of 2000 points, 2 apart: S_t × S_v = C'(t) ×
+  // (2, 0, 0), so its area is twice the profile's length, integrated here independently. On
+  // so many spans a short Gauss rule per span is taken, checked by a shorter one.
+  const std::vector<gp_Pnt> start = wavyProfile(30.0, 2000), end = wavyProfile(32.0, 2000);
+  const auto parameters = chordParameters(start, 0.5);
+  std::vector<Handle(Geom_BSplineCurve)> profiles = {interpolateCurve(start, parameters, 3, true),
+                                                     interpolateCurve(end, parameters, 3, true)};
+  const std::vector<double> sites = {0.0, 1.0};
+  const Handle(Geom_BSplineSurface) loft = skinCurves(profiles, sites, skinningSpace(sites, 1, false));
+  const LoftPiece piece = loftPiece(loft, 0.0, 1.0, true);
+  const double length = integralOverSpans(*profiles.front(), [&](double t) {
+    gp_Pnt p;
+    gp_Vec d;
+    profiles.front()->D1(t, p, d);
+    return d.Magnitude();
+  });
+  EXPECT_NEAR(areaOf(piece.skin), 2.0 * length, 1e-12 * 2.0 * length);
+}
+
 TEST(Measures, ASolidOfRevolutionIsMeasuredExactly) {
   // The nose cone turned about x: the volume π∫ z² x' dt (a polynomial on each span) and the
   // area 2π∫ z |C'| dt, integrated here independently. OCCT's adaptive integration, which

@@ -108,54 +108,76 @@ double coarsePatchVolume(const RectangularPatch& patch, const gp_XYZ& origin) {
          3.0;
 }
 
+/// |S_u × S_v|: the area integrand.
+struct AreaIntegrand {
+  double operator()(const gp_Pnt&, const gp_Vec& du, const gp_Vec& dv) const { return du.Crossed(dv).Magnitude(); }
+};
+
 /// ∫∫ |S_u × S_v| over one cell by the product rule of `uRule` and `vRule`.
 double cellArea(const GeomAdaptor_Surface& evaluator, const GaussRule& uRule, const GaussRule& vRule, double u0,
                 double u1, double v0, double v1) {
-  return cellIntegral(evaluator, uRule, vRule, u0, u1, v0, v1,
-                      [](const gp_Pnt&, const gp_Vec& du, const gp_Vec& dv) { return du.Crossed(dv).Magnitude(); });
+  return cellIntegral(evaluator, uRule, vRule, u0, u1, v0, v1, AreaIntegrand{});
 }
 
-/// The Gauss rules an area is taken with: 2p + 4 points per direction of degree p, and two
-/// fewer to check it.
+/// The Gauss rules an area is taken with, per direction of degree p: 2p + 4 points, and two
+/// fewer to check it; where the direction has many knot spans (a guided fuselage's skin has two
+/// thousand round it), each span is so short that p + 1 points, checked by p, are as exact,
+/// at a sixth of the evaluations.
 struct AreaRules {
+  static constexpr std::size_t kManySpans = 16;
   GaussRule u, v, uCheck, vCheck;
   explicit AreaRules(const RectangularPatch& patch)
-      : u(2 * patch.uDegree + 4),
-        v(2 * patch.vDegree + 4),
-        uCheck(2 * patch.uDegree + 2),
-        vCheck(2 * patch.vDegree + 2) {}
+      : u(points(patch.uDegree, patch.uBreaks)),
+        v(points(patch.vDegree, patch.vBreaks)),
+        uCheck(checkPoints(patch.uDegree, patch.uBreaks)),
+        vCheck(checkPoints(patch.vDegree, patch.vBreaks)) {}
+  static bool many(const std::vector<double>& breaks) { return breaks.size() > kManySpans; }
+  static int points(int degree, const std::vector<double>& breaks) {
+    return many(breaks) ? degree + 1 : 2 * degree + 4;
+  }
+  static int checkPoints(int degree, const std::vector<double>& breaks) {
+    return many(breaks) ? degree : 2 * degree + 2;
+  }
 };
 
-/// A cell's area, refined where the two rules disagree: |S_u × S_v| is smooth on a knot span
-/// unless S_u and S_v nearly line up somewhere in it (a strongly cambered airfoil ruled over a
-/// long span), where the fixed rule is off by 6e-8 of the area and OCCT's adaptive one too.
-/// Such a cell is halved both ways, at most kDeepest times.
+/// A cell's area, refined where the two rules disagree by more than `tolerance` (an absolute
+/// area): |S_u × S_v| is smooth on a knot span unless S_u and S_v nearly line up somewhere in it
+/// (a strongly cambered airfoil ruled over a long span), where the fixed rule is off by 6e-8 of
+/// the area and OCCT's adaptive one too, or at a degenerate corner (a wing tip). Such a cell is
+/// halved both ways, at most kDeepest times (at six, D250's winglet segment was 2.4e-10 off
+/// the limit; at eight it is there).
 double refinedCellArea(const GeomAdaptor_Surface& evaluator, const AreaRules& rules, double u0, double u1, double v0,
-                       double v1, int depth = 0) {
-  constexpr int kDeepest = 6;
-  constexpr double kAgreement = 1e-13;
+                       double v1, double tolerance, int depth = 0) {
+  constexpr int kDeepest = 8;
   const double area = cellArea(evaluator, rules.u, rules.v, u0, u1, v0, v1);
   if (depth == kDeepest) return area;
   const double check = cellArea(evaluator, rules.uCheck, rules.vCheck, u0, u1, v0, v1);
-  if (std::abs(area - check) <= kAgreement * std::abs(area)) return area;
+  if (std::abs(area - check) <= tolerance) return area;
   const double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
-  return refinedCellArea(evaluator, rules, u0, u, v0, v, depth + 1) +
-         refinedCellArea(evaluator, rules, u, u1, v0, v, depth + 1) +
-         refinedCellArea(evaluator, rules, u0, u, v, v1, depth + 1) +
-         refinedCellArea(evaluator, rules, u, u1, v, v1, depth + 1);
+  return refinedCellArea(evaluator, rules, u0, u, v0, v, tolerance, depth + 1) +
+         refinedCellArea(evaluator, rules, u, u1, v0, v, tolerance, depth + 1) +
+         refinedCellArea(evaluator, rules, u0, u, v, v1, tolerance, depth + 1) +
+         refinedCellArea(evaluator, rules, u, u1, v, v1, tolerance, depth + 1);
 }
 
 /// ∫∫ |S_u × S_v| du dv over the patch, span by span. Not a polynomial, but smooth on almost
 /// every knot span: there a Gauss rule of 2p + 4 points per direction leaves errors far below
-/// 1e-9, and the others are refined.
+/// 1e-9, and the others are refined until their two rules agree to 1e-13 of the whole patch's
+/// area (of a coarse estimate of it): a tolerance of each span's own area would refine tiny
+/// spans at a degenerate edge, where the integrand has a square root's kink, down to rounding.
 double patchArea(const RectangularPatch& patch) {
+  constexpr double kAgreement = 1e-13;
+  constexpr int kCoarseIntervals = 8;
   const GeomAdaptor_Surface evaluator(patch.surface);
   const AreaRules rules(patch);
+  const double estimate = integrateBetweenBreaks(patch, coarseBreaks(patch.uBreaks, kCoarseIntervals),
+                                                 coarseBreaks(patch.vBreaks, kCoarseIntervals), 2, 2, AreaIntegrand{});
+  const double tolerance = kAgreement * std::abs(estimate);
   double area = 0.0;
   for (std::size_t i = 0; i + 1 < patch.uBreaks.size(); ++i)
     for (std::size_t j = 0; j + 1 < patch.vBreaks.size(); ++j)
       area += refinedCellArea(evaluator, rules, patch.uBreaks[i], patch.uBreaks[i + 1], patch.vBreaks[j],
-                              patch.vBreaks[j + 1]);
+                              patch.vBreaks[j + 1], tolerance);
   return area;
 }
 
