@@ -22,6 +22,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
+#include "airshape/geometry/faces_near.h"
 #include "airshape/geometry/tangent_contact.h"
 #include "airshape/geometry/traced_section.h"
 #include "airshape/query/arguments.h"
@@ -120,6 +121,30 @@ std::optional<std::vector<TopoDS_Wire>> tracedLines(const TopoDS_Shape& ruled, c
   return lines;
 }
 
+/// The boxes of a shape's faces, each widened by a ten-thousandth of the shape's size (room
+/// for rounding): tighter round a thin part (a pylon) than the shape's one box.
+geometry::Region faceBoxes(const TopoDS_Shape& shape) {
+  Bnd_Box whole;
+  BRepBndLib::Add(shape, whole, false);
+  if (whole.IsVoid()) return {};
+  const double margin = 1e-4 * std::sqrt(whole.SquareExtent());
+  geometry::Region boxes;
+  for (TopExp_Explorer face(shape, TopAbs_FACE); face.More(); face.Next()) {
+    Bnd_Box box;
+    BRepBndLib::Add(face.Current(), box, false);
+    box.Enlarge(margin);
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+/// Each shape's faces cut down to where the other's faces are (geometry/faces_near.h): so that
+/// the Boolean section samples a pylon's few faces against the part of a nacelle's cowl beside
+/// it, not its whole circumference (26 s -> 0.2 s).
+std::pair<TopoDS_Shape, TopoDS_Shape> partsWhereTheyMayMeet(const TopoDS_Shape& first, const TopoDS_Shape& second) {
+  return {geometry::facesNear(first, faceBoxes(second)), geometry::facesNear(second, faceBoxes(first))};
+}
+
 /// The lines' edges.
 std::vector<TopoDS_Edge> edgesOf(const std::vector<TopoDS_Wire>& lines) {
   std::vector<TopoDS_Edge> edges;
@@ -135,7 +160,10 @@ std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const Topo
                                            const std::string& names) {
   std::optional<std::vector<TopoDS_Wire>> wires = tracedLines(first, second);
   if (!wires) wires = tracedLines(second, first);
-  if (!wires) wires = chained(sectionEdges(first, second, names));
+  if (!wires) {
+    const auto [nearFirst, nearSecond] = partsWhereTheyMayMeet(first, second);
+    wires = chained(sectionEdges(nearFirst, nearSecond, names));
+  }
   // A wing's root laid on a fuselage's side touches it along a line the section misses.
   if (const auto touching = geometry::withTangentContacts(edgesOf(*wires), first, second, kContactTolerance))
     wires = chained(*touching);
