@@ -302,7 +302,7 @@ void FuselageGeometry::cutIntoSegments(const std::vector<std::string>& segmentXp
       throw Error(ErrorCode::InvalidModel, "the segment's two profiles coincide", {}, segmentXpaths[k]);
     segments_.push_back(segment);
   }
-  segmentPieces_.resize(segments_.size());
+  for (std::size_t k = 0; k < segments_.size(); ++k) segmentPieces_.push_back(std::make_unique<CachedPiece>());
 }
 
 double FuselageGeometry::loftParameterOf(std::size_t section, double zeta) const {
@@ -329,10 +329,10 @@ TopoDS_Face FuselageGeometry::skinFace(std::size_t from, std::size_t to) const {
 }
 
 const geometry::LoftPiece& FuselageGeometry::segmentPiece(std::size_t segment) const {
-  std::lock_guard<std::mutex> lock(piecesMutex_);
-  auto& built = segmentPieces_[segment];
-  if (!built) built = std::make_unique<geometry::LoftPiece>(piece(segment, segment + 1));
-  return *built;
+  CachedPiece& cached = *segmentPieces_[segment];
+  std::call_once(cached.built,
+                 [&] { cached.piece = std::make_unique<geometry::LoftPiece>(piece(segment, segment + 1)); });
+  return *cached.piece;
 }
 
 double FuselageGeometry::vAt(std::size_t segment, double eta) const {
@@ -368,13 +368,18 @@ double FuselageGeometry::segmentSurfaceArea(std::size_t segment) const {
   return geometry::areaOf(segmentPiece(segment).skin);
 }
 
+double FuselageGeometry::sumOverSegments(const std::function<double(std::size_t segment)>& measure) const {
+  std::vector<double> measures(segments_.size(), 0.0);
+  parallelFor(segments_.size(), [&](std::size_t k) { measures[k] = measure(k); });
+  double total = 0.0;  // added in the segments' order, whichever core measured which
+  for (double value : measures) total += value;
+  return total;
+}
+
 double FuselageGeometry::volume() const {
   if (segments_.empty()) return 0.0;
-  if (!patchRows_.empty()) {  // a ring of patches per segment: the segments' solids
-    double total = 0.0;
-    for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentVolume(k);
-    return total;
-  }
+  if (!patchRows_.empty())  // a ring of patches per segment: the segments' solids
+    return sumOverSegments([this](std::size_t k) { return segmentVolume(k); });
   // One skin face over the whole loft and its two caps: quicker than the named solid.
   const geometry::LoftPiece whole = piece(0, segments_.size());
   if (!whole.solid.IsNull()) return geometry::volumeOf(whole.solid);
@@ -384,11 +389,7 @@ double FuselageGeometry::volume() const {
 }
 
 double FuselageGeometry::surfaceArea() const {
-  if (!patchRows_.empty()) {
-    double total = 0.0;
-    for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentSurfaceArea(k);
-    return total;
-  }
+  if (!patchRows_.empty()) return sumOverSegments([this](std::size_t k) { return segmentSurfaceArea(k); });
   return segments_.empty() ? 0.0 : geometry::areaOf(skinFace(0, segments_.size()));
 }
 

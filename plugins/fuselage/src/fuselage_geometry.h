@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -106,8 +107,16 @@ class FuselageGeometry {
   std::string xpath_;  ///< where the fuselage is defined, for errors
   std::vector<FuselageSegment> segments_;
   std::vector<std::string> segmentUids_;
-  mutable std::mutex piecesMutex_;
-  mutable std::vector<std::unique_ptr<geometry::LoftPiece>> segmentPieces_;
+  /// The sum of a measure of every segment, the segments measured on every core (each
+  /// guided segment is its own ring of patches, sewn into its own solid).
+  double sumOverSegments(const std::function<double(std::size_t segment)>& measure) const;
+
+  /// A segment's piece, built on first use, once, whichever thread asks first.
+  struct CachedPiece {
+    std::once_flag built;
+    std::unique_ptr<geometry::LoftPiece> piece;
+  };
+  std::vector<std::unique_ptr<CachedPiece>> segmentPieces_;
 };
 
 }  // namespace airshape::fuselage
