@@ -1,0 +1,49 @@
+// Distances from points near a surface, as `airshape gordon --report` measures its inputs
+// against the surface: the nearest grid samples (searched block by block) refined by Newton.
+// (Points far off its edges get an upper bound; the report projects those exactly.)
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <GeomLProp_SLProps.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+#include "airshape/geometry/surface_projection.h"
+
+namespace airshape::geometry {
+namespace {
+
+/// A gently curved sheet over [0, 10] × [0, 1]: 40 × 4 cubic spans.
+Handle(Geom_BSplineSurface) curvedSheet() {
+  constexpr int kUPoles = 43, kVPoles = 7;
+  TColgp_Array2OfPnt poles(1, kUPoles, 1, kVPoles);
+  for (int i = 1; i <= kUPoles; ++i)
+    for (int j = 1; j <= kVPoles; ++j) {
+      const double x = 10.0 * (i - 1) / (kUPoles - 1), y = (j - 1) / (kVPoles - 1.0);
+      poles(i, j) = gp_Pnt(x, y, 0.3 * std::sin(0.6 * x) + 0.1 * y * y);
+    }
+  TColStd_Array1OfReal uKnots(1, 41), vKnots(1, 5);
+  TColStd_Array1OfInteger uMultiplicities(1, 41), vMultiplicities(1, 5);
+  for (int i = 1; i <= 41; ++i) uKnots(i) = i - 1, uMultiplicities(i) = (i == 1 || i == 41) ? 4 : 1;
+  for (int i = 1; i <= 5; ++i) vKnots(i) = i - 1, vMultiplicities(i) = (i == 1 || i == 5) ? 4 : 1;
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMultiplicities, vMultiplicities, 3, 3);
+}
+
+TEST(SurfaceProjector, APointOffAlongTheNormalIsThatFarFromTheSurface) {
+  const Handle(Geom_BSplineSurface) sheet = curvedSheet();
+  const SurfaceProjector projector(sheet, 120);
+  for (double u = 0.3; u < 40.0; u += 1.7)
+    for (double v = 0.2; v < 4.0; v += 0.45) {
+      GeomLProp_SLProps properties(sheet, u, v, 1, 1e-9);
+      ASSERT_TRUE(properties.IsNormalDefined());
+      for (double offset : {0.0, 1e-4, -0.02, 0.05}) {
+        const gp_Pnt point = properties.Value().Translated(offset * gp_Vec(properties.Normal()));
+        EXPECT_NEAR(projector.distance(point), std::abs(offset), 1e-10) << "u " << u << " v " << v;
+      }
+    }
+}
+
+}  // namespace
+}  // namespace airshape::geometry
