@@ -30,6 +30,9 @@ namespace airshape::geometry {
 namespace {
 
 constexpr double kIntegrationAccuracy = 1e-9;
+/// Intervals per direction of a coarse integration (a sign, a scale): a few dozen points per
+/// face where a fuselage's skin has hundreds of spans.
+constexpr int kCoarseIntervals = 8;
 
 /// The faces of a shape, each as often and with the orientation the shape uses it.
 std::vector<TopoDS_Face> facesOf(const TopoDS_Shape& shape) {
@@ -137,7 +140,6 @@ double patchVolume(const RectangularPatch& patch, const gp_XYZ& origin, Accuracy
 /// per direction, whatever the knots): a few dozen points per face where a fuselage's skin
 /// has hundreds of spans.
 double coarsePatchVolume(const RectangularPatch& patch, const gp_XYZ& origin) {
-  constexpr int kCoarseIntervals = 8;
   return integrateBetweenBreaks(patch, coarseBreaks(patch.uBreaks, kCoarseIntervals),
                                 coarseBreaks(patch.vBreaks, kCoarseIntervals), 2, 2, VolumeIntegrand{origin}) /
          3.0;
@@ -196,13 +198,12 @@ double refinedCellArea(const GeomAdaptor_Surface& evaluator, const AreaRules& ru
 }
 
 /// ∫∫ |S_u × S_v| du dv over the patch, span by span. Not a polynomial, but smooth on almost
-/// every knot span: there a Gauss rule of 2p + 4 points per direction leaves errors far below
-/// 1e-9, and the others are refined until their two rules agree to 1e-13 of the whole patch's
-/// area (of a coarse estimate of it): a tolerance of each span's own area would refine tiny
-/// spans at a degenerate edge, where the integrand has a square root's kink, down to rounding.
+/// every knot span: there the rules of AreaRules leave errors far below 1e-9, and the others
+/// are refined until their two rules agree to 1e-13 of the whole patch's area (of a coarse
+/// estimate of it): a tolerance of each span's own area would refine tiny spans at a
+/// degenerate edge, where the integrand has a square root's kink, down to rounding.
 double patchArea(const RectangularPatch& patch) {
   constexpr double kAgreement = 1e-13;
-  constexpr int kCoarseIntervals = 8;
   const GeomAdaptor_Surface evaluator(patch.surface);
   const AreaRules rules(patch);
   const double estimate = integrateBetweenBreaks(patch, coarseBreaks(patch.uBreaks, kCoarseIntervals),
