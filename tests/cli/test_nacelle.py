@@ -67,6 +67,19 @@ def test_one_section_nacelles_are_bodies_of_revolution():
     assert math.isclose(box["max"][1] - 20, 20 - box["min"][1], abs_tol=1e-6)
 
 
+def test_a_section_across_the_engine_is_a_ring_round_its_centre_cowl():
+    # Across the axis, half way along the chord, "Low" is a ring (its hole taken off) and "Spun",
+    # the same 10 m further aft, the same ring with the centre cowl's disc of radius 0.1 in its
+    # hole (added again).
+    ring, spun, outer = ask(
+        ENGINES, {"op": "cross_section_area", "uid": "Low", "point": [2, 20, 0], "normal": [1, 0, 0]},
+        {"op": "cross_section_area", "uid": "Spun", "point": [12, 20, 0], "normal": [-1, 0, 0]},
+        {"op": "bounding_box", "uid": "Low"})
+    assert math.isclose(spun - ring, math.pi * 0.1 ** 2, rel_tol=1e-6)
+    radius = (outer["max"][2] - outer["min"][2]) / 2
+    assert 0 < ring < 0.5 * math.pi * radius ** 2
+
+
 def test_sections_lofted_around_the_engine():
     path = ENGINES
     revolved, lofted, box, revolved_box, pulled = ask(

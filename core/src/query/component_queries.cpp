@@ -1,12 +1,19 @@
 #include "component_queries.h"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Bnd_Box.hxx>
+#include <ElSLib.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -74,8 +81,64 @@ Json componentSurfaceArea(Configuration& configuration, const Json& query) {
   return geometry::areaOf(measuredShape(configuration, componentArgument(configuration, query, "uid")));
 }
 
+/// Points along a closed line in the plane's own 2D coordinates: 32 per edge.
+std::vector<gp_Pnt2d> outlineIn(const gp_Pln& plane, const TopoDS_Wire& loop) {
+  constexpr int kPointsPerEdge = 32;
+  std::vector<gp_Pnt2d> outline;
+  for (TopExp_Explorer explorer(loop, TopAbs_EDGE); explorer.More(); explorer.Next()) {
+    const BRepAdaptor_Curve edge(TopoDS::Edge(explorer.Current()));
+    for (int i = 0; i < kPointsPerEdge; ++i) {
+      const gp_Pnt p =
+          edge.Value(edge.FirstParameter() + (edge.LastParameter() - edge.FirstParameter()) * i / kPointsPerEdge);
+      double x, y;
+      ElSLib::Parameters(plane, p, x, y);
+      outline.emplace_back(x, y);
+    }
+  }
+  return outline;
+}
+
+/// Whether a point lies inside a closed polygon (crossings of a ray along +x).
+bool inside(const gp_Pnt2d& point, const std::vector<gp_Pnt2d>& polygon) {
+  bool in = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const gp_Pnt2d &a = polygon[i], &b = polygon[j];
+    if ((a.Y() > point.Y()) != (b.Y() > point.Y()) &&
+        point.X() < a.X() + (b.X() - a.X()) * (point.Y() - a.Y()) / (b.Y() - a.Y()))
+      in = !in;
+  }
+  return in;
+}
+
+/// The area a solid's closed section lines enclose: each line's own area (Green's theorem,
+/// exact per knot span), added where the line lies inside an even number of the others and
+/// taken off where inside an odd number (the hole of a ring).
+double areaInside(const gp_Pln& plane, const std::vector<TopoDS_Wire>& loops) {
+  std::vector<std::vector<gp_Pnt2d>> outlines;
+  for (const TopoDS_Wire& loop : loops) outlines.push_back(outlineIn(plane, loop));
+  double area = 0.0;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    int depth = 0;
+    for (std::size_t j = 0; j < loops.size(); ++j)
+      if (j != i && !outlines[i].empty() && inside(outlines[i].front(), outlines[j])) ++depth;
+    const double own = std::abs(geometry::signedAreaEnclosed(loops[i], plane.Axis().Direction()));
+    area += depth % 2 == 0 ? own : -own;
+  }
+  return area;
+}
+
+/// How many solids a shape holds.
+int solidCount(const TopoDS_Shape& shape) {
+  int count = 0;
+  for (TopExp_Explorer solid(shape, TopAbs_SOLID); solid.More(); solid.Next()) ++count;
+  return count;
+}
+
 /// The area of the component's section by an infinite plane: the faces the plane and the
-/// shape have in common (none for a shape without solids).
+/// shape have in common (none for a shape without solids). For one solid, from the closed
+/// lines where the plane cuts it, without building the faces (OCCT's Boolean common also
+/// splits every face of the solid the plane crosses: 1.3 s on a guided fuselage of 800,000
+/// knot spans); where a line does not close, by the common.
 Json crossSectionArea(Configuration& configuration, const Json& query) {
   const TopoDS_Shape& shape = measuredShape(configuration, componentArgument(configuration, query, "uid"));
   const auto point = pointArgument(query, "point");
@@ -83,6 +146,8 @@ Json crossSectionArea(Configuration& configuration, const Json& query) {
   const gp_Vec direction(normal[0], normal[1], normal[2]);
   if (direction.Magnitude() == 0.0) throw Error(ErrorCode::InvalidArgument, "the normal must not be zero");
   const gp_Pln plane(gp_Pnt(point[0], point[1], point[2]), gp_Dir(direction));
+  if (solidCount(shape) == 1)
+    if (const auto loops = planeSectionLoops(shape, plane)) return areaInside(plane, *loops);
   BRepAlgoAPI_Common common(shape, BRepBuilderAPI_MakeFace(plane).Face());
   if (!common.IsDone() || common.HasErrors())
     throw Error(ErrorCode::InvalidModel, "the section of '" + stringArgument(query, "uid") + "' could not be computed");

@@ -174,6 +174,22 @@ std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const Topo
   return lines;
 }
 
+std::optional<std::vector<TopoDS_Wire>> planeSectionLoops(const TopoDS_Shape& shape, const gp_Pln& plane) {
+  BRepAlgoAPI_Section section(shape, plane, false);
+  section.Approximation(true);  // the curves a Boolean common would trim the plane with
+  section.ComputePCurveOn1(true);
+  section.ComputePCurveOn2(true);
+  section.SetNonDestructive(true);  // the components' shapes are shared, cached geometry
+  section.Build();
+  if (!section.IsDone() || section.HasErrors()) return std::nullopt;
+  std::vector<TopoDS_Edge> edges;
+  for (TopExp_Explorer explorer(section.Shape(), TopAbs_EDGE); explorer.More(); explorer.Next())
+    edges.push_back(TopoDS::Edge(explorer.Current()));
+  std::vector<TopoDS_Wire> loops = chained(edges);
+  if (!std::all_of(loops.begin(), loops.end(), closed)) return std::nullopt;
+  return loops;
+}
+
 Json intersectionCurves(Configuration& configuration, const Json& query) {
   const ComponentShapes& shapes = configuration.shapes();
   const TopoDS_Shape& first = shapes.shapeOf(configuration, stringArgument(query, "uid"));

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
+#include <gp_Pln.hxx>
 
 #include "airshape/query/query_registry.h"
 
@@ -26,5 +28,10 @@ Json intersectionCurves(Configuration& configuration, const Json& query);
 /// `names` says what was intersected, for the error when OCCT cannot compute it.
 std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const TopoDS_Shape& second,
                                            const std::string& names);
+
+/// The closed lines where a plane cuts a shape (OCCT's section with approximated curves,
+/// chained); nothing when OCCT fails or a line does not close (the plane touches the shape, or
+/// leaves a gap between two faces' curves).
+std::optional<std::vector<TopoDS_Wire>> planeSectionLoops(const TopoDS_Shape& shape, const gp_Pln& plane);
 
 }  // namespace airshape::query
