@@ -9,30 +9,19 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "airshape/geometry/faces_near.h"
+#include "sheet_of_many_spans.h"
 
 namespace airshape::geometry {
 namespace {
 
 /// A wavy sheet over [0, 10] × [0, 1]: 40 × 4 cubic spans, uniform knots.
 Handle(Geom_BSplineSurface) wavySheet() {
-  constexpr int kUPoles = 43, kVPoles = 7;
-  TColgp_Array2OfPnt poles(1, kUPoles, 1, kVPoles);
-  for (int i = 1; i <= kUPoles; ++i)
-    for (int j = 1; j <= kVPoles; ++j)
-      poles(i, j) = gp_Pnt(10.0 * (i - 1) / (kUPoles - 1), (j - 1) / (kVPoles - 1.0), 0.2 * std::sin(i + 2.0 * j));
-  TColStd_Array1OfReal uKnots(1, 41), vKnots(1, 5);
-  TColStd_Array1OfInteger uMultiplicities(1, 41), vMultiplicities(1, 5);
-  for (int i = 1; i <= 41; ++i) uKnots(i) = i - 1, uMultiplicities(i) = (i == 1 || i == 41) ? 4 : 1;
-  for (int i = 1; i <= 5; ++i) vKnots(i) = i - 1, vMultiplicities(i) = (i == 1 || i == 5) ? 4 : 1;
-  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMultiplicities, vMultiplicities, 3, 3);
+  return test::sheetOfManySpans([](double x, double y) { return 0.2 * std::sin(4.2 * x + 12.0 * y); });
 }
 
 std::vector<TopoDS_Face> facesOf(const TopoDS_Shape& shape) {

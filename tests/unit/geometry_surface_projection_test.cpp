@@ -6,29 +6,16 @@
 #include <gtest/gtest.h>
 #include <GeomLProp_SLProps.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 
 #include "airshape/geometry/surface_projection.h"
+#include "sheet_of_many_spans.h"
 
 namespace airshape::geometry {
 namespace {
 
 /// A gently curved sheet over [0, 10] × [0, 1]: 40 × 4 cubic spans.
 Handle(Geom_BSplineSurface) curvedSheet() {
-  constexpr int kUPoles = 43, kVPoles = 7;
-  TColgp_Array2OfPnt poles(1, kUPoles, 1, kVPoles);
-  for (int i = 1; i <= kUPoles; ++i)
-    for (int j = 1; j <= kVPoles; ++j) {
-      const double x = 10.0 * (i - 1) / (kUPoles - 1), y = (j - 1) / (kVPoles - 1.0);
-      poles(i, j) = gp_Pnt(x, y, 0.3 * std::sin(0.6 * x) + 0.1 * y * y);
-    }
-  TColStd_Array1OfReal uKnots(1, 41), vKnots(1, 5);
-  TColStd_Array1OfInteger uMultiplicities(1, 41), vMultiplicities(1, 5);
-  for (int i = 1; i <= 41; ++i) uKnots(i) = i - 1, uMultiplicities(i) = (i == 1 || i == 41) ? 4 : 1;
-  for (int i = 1; i <= 5; ++i) vKnots(i) = i - 1, vMultiplicities(i) = (i == 1 || i == 5) ? 4 : 1;
-  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMultiplicities, vMultiplicities, 3, 3);
+  return test::sheetOfManySpans([](double x, double y) { return 0.3 * std::sin(0.6 * x) + 0.1 * y * y; });
 }
 
 TEST(SurfaceProjector, APointOffAlongTheNormalIsThatFarFromTheSurface) {
