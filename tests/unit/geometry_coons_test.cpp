@@ -74,6 +74,38 @@ TEST(CoonsPatchRows, CellsSitSideBySide) {
   EXPECT_LT(rows[0]->Value(1.5, 1.0).Distance(gp_Pnt(2.5, 3, 0)), 1e-12);  // half of the second piece
 }
 
+TEST(CoonsPatchRows, EachCellKeepsItsOwnKnotsAlongTheRow) {
+  // Profiles with knots at 0.1 and 0.6; guides meet them at 0, 0.25 and 1: the first cell's
+  // pieces have a knot at 0.4 of their own parameter, the second's at 0.6 - 0.25 = 0.35 of
+  // its 0.75, 0.4667. Side by side the row carries each where its cell has it: knots 0, 0.4,
+  // 1, 1.4667, 2, not both in both cells.
+  std::vector<Handle(Geom_BSplineCurve)> profiles = {arc(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0), 0.3),
+                                                     arc(gp_Pnt(0, 3, 0), gp_Pnt(4, 3, 0), 0.3)};
+  for (auto& profile : profiles) {
+    profile->InsertKnot(0.1);
+    profile->InsertKnot(0.6);
+  }
+  std::vector<Handle(Geom_BSplineCurve)> guides = {arc(profiles[0]->Value(0.0), profiles[1]->Value(0.0), 0.0),
+                                                   arc(profiles[0]->Value(0.25), profiles[1]->Value(0.25), 0.0),
+                                                   arc(profiles[0]->Value(1.0), profiles[1]->Value(1.0), 0.0)};
+  KnownCrossings crossings;
+  crossings.profileParameters.resize(2, 3);
+  crossings.profileParameters << 0.0, 0.25, 1.0, 0.0, 0.25, 1.0;
+  crossings.guideParameters.resize(2, 3);
+  crossings.guideParameters << 0.0, 0.0, 0.0, 1.0, 1.0, 1.0;
+  const auto rows =
+      buildCoonsPatchRows(profiles, guides, crossings, [](std::size_t, std::size_t) { return PatchBlending::Rounded; });
+  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_EQ(rows[0]->NbUKnots(), 5);
+  EXPECT_NEAR(rows[0]->UKnot(2), 0.4, 1e-12);
+  EXPECT_NEAR(rows[0]->UKnot(4), 1.0 + 0.35 / 0.75, 1e-12);
+  for (double t : {0.05, 0.2, 0.4, 0.7, 0.95}) {  // the profile pieces, exactly
+    const double u = t < 0.25 ? t / 0.25 : 1.0 + (t - 0.25) / 0.75;
+    EXPECT_LT(rows[0]->Value(u, 0.0).Distance(profiles[0]->Value(t)), 1e-12);
+    EXPECT_LT(rows[0]->Value(u, 1.0).Distance(profiles[1]->Value(t)), 1e-12);
+  }
+}
+
 TEST(CoonsPatchRows, AnEmptyCellIsAnError) {
   // Two guides meeting the profiles at the same parameter leave an empty cell.
   std::vector<Handle(Geom_BSplineCurve)> profiles = {arc(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0), 0.0),

@@ -109,6 +109,31 @@ void startPeriodAt(Geom_BSplineSurface& surface, bool uDirection, double start) 
     surface.SetVKnots(knots);
 }
 
+/// Every surface raised to the highest degrees in both directions, and knots inserted until
+/// all share one knot vector in v, and in u too with `inU`.
+void makeSurfacesCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces, bool inU) {
+  if (surfaces.empty()) return;
+  int uDegree = 0, vDegree = 0;
+  for (const auto& surface : surfaces) {
+    uDegree = std::max(uDegree, surface->UDegree());
+    vDegree = std::max(vDegree, surface->VDegree());
+  }
+  double u0, u1, v0, v1;
+  surfaces.front()->Bounds(u0, u1, v0, v1);
+  KnotUnion uKnots, vKnots;
+  for (auto& surface : surfaces) {
+    startPeriodAt(*surface, true, u0);
+    startPeriodAt(*surface, false, v0);
+    surface->IncreaseDegree(uDegree, vDegree);
+    for (int i = 1; i <= surface->NbUKnots(); ++i) uKnots.add(surface->UKnot(i), surface->UMultiplicity(i));
+    for (int i = 1; i <= surface->NbVKnots(); ++i) vKnots.add(surface->VKnot(i), surface->VMultiplicity(i));
+  }
+  for (auto& surface : surfaces) {
+    if (inU) insertMissing(*surface, uKnots, true);
+    insertMissing(*surface, vKnots, false);
+  }
+}
+
 }  // namespace
 
 void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
@@ -143,27 +168,10 @@ void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves) {
   }
 }
 
-void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces) {
-  if (surfaces.empty()) return;
-  int uDegree = 0, vDegree = 0;
-  for (const auto& surface : surfaces) {
-    uDegree = std::max(uDegree, surface->UDegree());
-    vDegree = std::max(vDegree, surface->VDegree());
-  }
-  double u0, u1, v0, v1;
-  surfaces.front()->Bounds(u0, u1, v0, v1);
-  KnotUnion uKnots, vKnots;
-  for (auto& surface : surfaces) {
-    startPeriodAt(*surface, true, u0);
-    startPeriodAt(*surface, false, v0);
-    surface->IncreaseDegree(uDegree, vDegree);
-    for (int i = 1; i <= surface->NbUKnots(); ++i) uKnots.add(surface->UKnot(i), surface->UMultiplicity(i));
-    for (int i = 1; i <= surface->NbVKnots(); ++i) vKnots.add(surface->VKnot(i), surface->VMultiplicity(i));
-  }
-  for (auto& surface : surfaces) {
-    insertMissing(*surface, uKnots, true);
-    insertMissing(*surface, vKnots, false);
-  }
+void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces) { makeSurfacesCompatible(surfaces, true); }
+
+void makeCompatibleAlongV(std::vector<Handle(Geom_BSplineSurface)>& surfaces) {
+  makeSurfacesCompatible(surfaces, false);
 }
 
 }  // namespace airshape::geometry

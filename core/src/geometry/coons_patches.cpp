@@ -107,26 +107,34 @@ void normaliseParameters(Geom_BSplineSurface& surface) {
   surface.SetVKnots(vKnots);
 }
 
-/// The patches of one row side by side in u (cell l over [l, l+1]), joined C0.
+/// The patches of one row side by side in u (cell l over [l, l+1]), joined C0. They share
+/// their v knots and degrees; each keeps its own u knots (made compatible in u too, every cell
+/// carried every other's: a guided fuselage's rings had 1,900 u knots, mostly a millionth apart,
+/// instead of 130).
 Handle(Geom_BSplineSurface) sideBySide(std::vector<Handle(Geom_BSplineSurface)> patches) {
-  makeCompatible(patches);  // one degree and one knot vector in u and in v
+  makeCompatibleAlongV(patches);
   const Geom_BSplineSurface& first = *patches.front();
-  const int uDegree = first.UDegree(), columns = first.NbUPoles(), rows = first.NbVPoles();
-  const int cells = static_cast<int>(patches.size());
-  TColgp_Array2OfPnt poles(1, cells * (columns - 1) + 1, 1, rows);
-  for (int c = 0; c < cells; ++c)
-    for (int i = (c == 0 ? 1 : 2); i <= columns; ++i)
-      for (int j = 1; j <= rows; ++j) poles(c * (columns - 1) + i, j) = patches[c]->Pole(i, j);
-  const int uKnotCount = first.NbUKnots();
-  TColStd_Array1OfReal uKnots(1, cells * (uKnotCount - 1) + 1);
-  TColStd_Array1OfInteger uMults(1, cells * (uKnotCount - 1) + 1);
-  for (int c = 0; c < cells; ++c)
-    for (int j = (c == 0 ? 1 : 2); j <= uKnotCount; ++j) {
-      const int index = c * (uKnotCount - 1) + j;
-      uKnots(index) = c + first.UKnot(j);
-      uMults(index) = first.UMultiplicity(j);
-      if (j == 1 || j == uKnotCount) uMults(index) = (index == 1 || index == uKnots.Upper()) ? uDegree + 1 : uDegree;
+  const int uDegree = first.UDegree(), rows = first.NbVPoles();
+  int columns = 1, knotCount = 1;
+  for (const auto& patch : patches) columns += patch->NbUPoles() - 1, knotCount += patch->NbUKnots() - 1;
+  TColgp_Array2OfPnt poles(1, columns, 1, rows);
+  TColStd_Array1OfReal uKnots(1, knotCount);
+  TColStd_Array1OfInteger uMults(1, knotCount);
+  int column = 0, knot = 0;
+  for (std::size_t c = 0; c < patches.size(); ++c) {
+    const Geom_BSplineSurface& patch = *patches[c];
+    for (int i = (c == 0 ? 1 : 2); i <= patch.NbUPoles(); ++i) {
+      ++column;
+      for (int j = 1; j <= rows; ++j) poles(column, j) = patch.Pole(i, j);
     }
+    for (int j = (c == 0 ? 1 : 2); j <= patch.NbUKnots(); ++j) {
+      ++knot;
+      uKnots(knot) = static_cast<double>(c) + patch.UKnot(j);
+      const bool cellEnd = j == 1 || j == patch.NbUKnots();
+      const bool rowEnd = knot == 1 || knot == knotCount;
+      uMults(knot) = cellEnd ? (rowEnd ? uDegree + 1 : uDegree) : patch.UMultiplicity(j);
+    }
+  }
   TColStd_Array1OfReal vKnots(1, first.NbVKnots());
   TColStd_Array1OfInteger vMults(1, first.NbVKnots());
   first.VKnots(vKnots);

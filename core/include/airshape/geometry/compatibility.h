@@ -15,4 +15,8 @@ void makeCompatible(std::vector<Handle(Geom_BSplineCurve)>& curves);
 /// The same for surfaces, in both parameter directions.
 void makeCompatible(std::vector<Handle(Geom_BSplineSurface)>& surfaces);
 
+/// The same in v only (and the degrees in both directions): surfaces to be joined side by side
+/// in u keep their own u knots, which the others need not carry.
+void makeCompatibleAlongV(std::vector<Handle(Geom_BSplineSurface)>& surfaces);
+
 }  // namespace airshape::geometry
