@@ -28,6 +28,19 @@ Handle(Geom_BSplineCurve) arc(const gp_Pnt& a, const gp_Pnt& b, double lift, dou
   return new Geom_BSplineCurve(poles, knots, multiplicities, 3);
 }
 
+/// The rounded rows of two profiles and three guides that meet them at the profiles'
+/// parameters 0, 0.25 and 1 and at their own ends.
+std::vector<Handle(Geom_BSplineSurface)> roundedRows(const std::vector<Handle(Geom_BSplineCurve)>& profiles,
+                                                     const std::vector<Handle(Geom_BSplineCurve)>& guides) {
+  KnownCrossings crossings;
+  crossings.profileParameters.resize(2, 3);
+  crossings.profileParameters << 0.0, 0.25, 1.0, 0.0, 0.25, 1.0;
+  crossings.guideParameters.resize(2, 3);
+  crossings.guideParameters << 0.0, 0.0, 0.0, 1.0, 1.0, 1.0;
+  return buildCoonsPatchRows(profiles, guides, crossings,
+                             [](std::size_t, std::size_t) { return PatchBlending::Rounded; });
+}
+
 TEST(CoonsPatch, BoundariesAtTheirNormalisedParameters) {
   const gp_Pnt a(0, 0, 0), b(2, 0, 0), c(2, 1, 0), d(0, 1, 0);
   const auto bottom = arc(a, b, 0.2, 3.0, 5.0), right = arc(b, c, 1.0), top = arc(d, c, -0.1), left = arc(a, d, 0.0);
@@ -55,13 +68,7 @@ TEST(CoonsPatchRows, CellsSitSideBySide) {
   std::vector<Handle(Geom_BSplineCurve)> guides = {arc(gp_Pnt(0, 0, 0), gp_Pnt(0, 3, 0), 0.0),
                                                    arc(gp_Pnt(1, 0, 0), gp_Pnt(1, 3, 0), 0.5),
                                                    arc(gp_Pnt(4, 0, 0), gp_Pnt(4, 3, 0), 0.0)};
-  KnownCrossings crossings;
-  crossings.profileParameters.resize(2, 3);
-  crossings.profileParameters << 0.0, 0.25, 1.0, 0.0, 0.25, 1.0;
-  crossings.guideParameters.resize(2, 3);
-  crossings.guideParameters << 0.0, 0.0, 0.0, 1.0, 1.0, 1.0;
-  const auto rows =
-      buildCoonsPatchRows(profiles, guides, crossings, [](std::size_t, std::size_t) { return PatchBlending::Rounded; });
+  const auto rows = roundedRows(profiles, guides);
   ASSERT_EQ(rows.size(), 1u);
   double u0, u1, v0, v1;
   rows[0]->Bounds(u0, u1, v0, v1);
@@ -88,13 +95,7 @@ TEST(CoonsPatchRows, EachCellKeepsItsOwnKnotsAlongTheRow) {
   std::vector<Handle(Geom_BSplineCurve)> guides = {arc(profiles[0]->Value(0.0), profiles[1]->Value(0.0), 0.0),
                                                    arc(profiles[0]->Value(0.25), profiles[1]->Value(0.25), 0.0),
                                                    arc(profiles[0]->Value(1.0), profiles[1]->Value(1.0), 0.0)};
-  KnownCrossings crossings;
-  crossings.profileParameters.resize(2, 3);
-  crossings.profileParameters << 0.0, 0.25, 1.0, 0.0, 0.25, 1.0;
-  crossings.guideParameters.resize(2, 3);
-  crossings.guideParameters << 0.0, 0.0, 0.0, 1.0, 1.0, 1.0;
-  const auto rows =
-      buildCoonsPatchRows(profiles, guides, crossings, [](std::size_t, std::size_t) { return PatchBlending::Rounded; });
+  const auto rows = roundedRows(profiles, guides);
   ASSERT_EQ(rows.size(), 1u);
   ASSERT_EQ(rows[0]->NbUKnots(), 5);
   EXPECT_NEAR(rows[0]->UKnot(2), 0.4, 1e-12);
