@@ -140,7 +140,7 @@ geometry::Region faceBoxes(const TopoDS_Shape& shape) {
 
 /// Each shape's faces cut down to where the other's faces are (geometry/faces_near.h): so that
 /// the Boolean section samples a pylon's few faces against the part of a nacelle's cowl beside
-/// it, not its whole circumference (26 s -> 0.2 s).
+/// it, not its whole circumference (simpletest-pylon-nacelle: 26 s -> 6 s).
 std::pair<TopoDS_Shape, TopoDS_Shape> partsWhereTheyMayMeet(const TopoDS_Shape& first, const TopoDS_Shape& second) {
   return {geometry::facesNear(first, faceBoxes(second)), geometry::facesNear(second, faceBoxes(first))};
 }

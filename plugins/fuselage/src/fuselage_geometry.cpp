@@ -383,9 +383,8 @@ double FuselageGeometry::volume() const {
   // One skin face over the whole loft and its two caps: quicker than the named solid.
   const geometry::LoftPiece whole = piece(0, segments_.size());
   if (!whole.solid.IsNull()) return geometry::volumeOf(whole.solid);
-  double total = 0.0;  // sewing can fail on one face with many degenerate spans; segments do not
-  for (std::size_t k = 0; k < segments_.size(); ++k) total += segmentVolume(k);
-  return total;
+  // Sewing can fail on one face with many degenerate spans; segments do not.
+  return sumOverSegments([this](std::size_t k) { return segmentVolume(k); });
 }
 
 double FuselageGeometry::surfaceArea() const {
