@@ -1,7 +1,6 @@
 #include "airshape/geometry/surface_projection.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 
