@@ -128,6 +128,13 @@ void printSummary(const exporting::ExportScene& scene) {
               << measures[index].second << '\n';
 }
 
+/// "a, b, c"
+std::string joined(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
 /// How many geometric elements of the file no loaded plugin builds yet.
 std::size_t withoutBuilder(const Configuration& configuration) {
   std::size_t count = 0;
@@ -184,6 +191,10 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   for (const std::string& output : options.outputs) {
     const exporting::Format format = exporting::formatOfPath(output);
     const Clock::time_point writing = Clock::now();
+    if (const std::vector<std::string> lines = exporting::componentsLeftOutOf(scene, format);
+        !lines.empty() && lines.size() < scene.components.size())
+      std::cerr << "export: note: " << output << " leaves out " << joined(lines) << ": lines, which "
+                << exporting::formatName(format) << " cannot hold (.vtp, .step, .iges and .brep can)\n";
     exporting::writeScene(scene, output, format, options.exportOptions);
     if (!options.quiet)
       std::cerr << "export: wrote " << output << " (" << exporting::formatName(format) << ", "

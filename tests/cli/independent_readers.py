@@ -74,6 +74,25 @@ for i in range(cells.GetNumberOfArrays()):
 print(json.dumps({"cells": data.GetNumberOfCells(), "points": data.GetNumberOfPoints(), "arrays": arrays}))
 """
 
+VTK_LINE_LENGTHS = """
+import json, math, sys, vtk
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+data = reader.GetOutput()
+component = data.GetCellData().GetAbstractArray("component")
+lengths = {}
+for k in range(data.GetNumberOfCells()):
+    cell = data.GetCell(k)
+    if cell.GetCellType() not in (vtk.VTK_LINE, vtk.VTK_POLY_LINE):
+        continue
+    points = cell.GetPoints()
+    length = sum(math.dist(points.GetPoint(i - 1), points.GetPoint(i)) for i in range(1, points.GetNumberOfPoints()))
+    name = component.GetValue(k)
+    lengths[name] = lengths.get(name, 0.0) + length
+print(json.dumps(lengths))
+"""
+
 
 def _require_module(module):
     found = subprocess.run(["/usr/bin/python3", "-c", f"import {module}"], capture_output=True)
@@ -122,6 +141,12 @@ def vtk_polydata(path):
     """Cell count, point count and the distinct values of each cell array of a .vtp file."""
     _require_module("vtk")
     return _run_python(VTK_ARRAYS, path)
+
+
+def vtk_line_lengths(path):
+    """The summed length of the line cells of a .vtp file, by their "component" value."""
+    _require_module("vtk")
+    return _run_python(VTK_LINE_LENGTHS, path)
 
 
 def admesh_report(path):

@@ -9,7 +9,7 @@ import re
 import pytest
 
 from conftest import EXAMPLE, SOURCE, airshape, query_answers, shared_path
-from independent_readers import admesh_report, gltf_report, gmsh_volumes, stl_volume, vtk_polydata
+from independent_readers import admesh_report, gltf_report, gmsh_volumes, stl_volume, vtk_line_lengths, vtk_polydata
 
 AIRLINER = os.path.join(SOURCE, "examples", "generic-airliner.xml")
 FORMATS = ("step", "iges", "brep", "stl", "vtp", "glb", "gltf", "obj")
@@ -90,6 +90,33 @@ def test_every_format_reopens_with_names_and_volumes(tmp_path, name):
 
     groups = re.findall(r"^g .*/(.+)$", open(paths["obj"]).read(), re.M)
     assert set(groups) == uids
+
+
+def test_lines_go_to_vtk_polydata_and_formats_of_triangles_say_they_leave_them_out(tmp_path):
+    # The front door frame is the fuselage's circle of radius 2 at x = 7; the side stringer
+    # runs along the skin. In VTK PolyData both are polylines named by their uIDs, the frame's
+    # a little shorter than its circle (chords).
+    lines = ["Frame_Door_Front", "Stringer_Side"]
+    vtp = tmp_path / "lines.vtp"
+    result = airshape("export", AIRLINER, "--components", ",".join(lines), "-q", "-o", str(vtp))
+    assert result.returncode == 0, result.stderr
+    lengths = vtk_line_lengths(vtp)
+    assert sorted(lengths) == lines
+    assert 4 * math.pi * (1 - 1e-3) < lengths["Frame_Door_Front"] <= 4 * math.pi + 1e-9
+    assert lengths["Stringer_Side"] > 20
+
+    # STL holds triangles only: lines alone are a clear error and no file, lines among solids
+    # a note naming them.
+    stl = tmp_path / "lines.stl"
+    result = airshape("export", AIRLINER, "--components", ",".join(lines), "-q", "-o", str(stl))
+    assert result.returncode == 2
+    assert "STL holds triangles only" in result.stderr and ".vtp" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not stl.exists()
+    result = airshape("export", AIRLINER, "--components", ",".join(["Wing"] + lines), "-o", str(stl))
+    assert result.returncode == 0, result.stderr
+    assert f"{stl} leaves out Frame_Door_Front, Stringer_Side: lines, which STL cannot hold" in result.stderr
+    assert stl_volume(stl)[1] > 0
 
 
 def test_mirrored_halves_and_chosen_components(tmp_path):

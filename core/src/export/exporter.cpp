@@ -10,6 +10,7 @@
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -44,6 +45,10 @@ void quietenKernelMessages() {
 bool isTriangulated(Format format) {
   return format != Format::Step && format != Format::Iges && format != Format::Brep;
 }
+
+bool holdsLines(Format format) { return !isTriangulated(format) || format == Format::Vtp; }
+
+bool hasFaces(const TopoDS_Shape& shape) { return TopExp_Explorer(shape, TopAbs_FACE).More(); }
 
 void writeFormat(const ExportScene& scene, const std::string& path, Format format, const std::string& target) {
   switch (format) {
@@ -113,7 +118,20 @@ std::string knownExtensions() {
   return list;
 }
 
+std::vector<std::string> componentsLeftOutOf(const ExportScene& scene, Format format) {
+  std::vector<std::string> leftOut;
+  if (holdsLines(format)) return leftOut;
+  for (const SceneComponent& component : scene.components)
+    if (!hasFaces(component.shape.shape)) leftOut.push_back(component.name);
+  return leftOut;
+}
+
 void writeScene(const ExportScene& scene, const std::string& path, Format format, const ExportOptions& options) {
+  if (!scene.components.empty() && componentsLeftOutOf(scene, format).size() == scene.components.size())
+    throw Error(ErrorCode::InvalidArgument,
+                formatName(format) + " holds triangles only, and every component to write is lines (frames, " +
+                    "stringers, beams): write .vtp, .step, .iges or .brep, or sweep their profiles with --profiles",
+                path);
   quietenKernelMessages();
   if (isTriangulated(format)) triangulate(scene, options);
   writeFileSafely(path, [&](const std::string& temporaryPath) {

@@ -29,11 +29,19 @@ double automaticDeflection(const TopoDS_Shape& shape) {
 }
 
 /// Whether every face has a triangulation.
-
 bool isTriangulated(const TopoDS_Shape& shape) {
   for (TopExp_Explorer face(shape, TopAbs_FACE); face.More(); face.Next()) {
     TopLoc_Location location;
     if (BRep_Tool::Triangulation(TopoDS::Face(face.Current()), location).IsNull()) return false;
+  }
+  return true;
+}
+
+/// Whether every edge outside the faces (a frame's or a stringer's line) has its polyline.
+bool linesDiscretised(const TopoDS_Shape& shape) {
+  for (TopExp_Explorer edge(shape, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next()) {
+    TopLoc_Location location;
+    if (BRep_Tool::Polygon3D(TopoDS::Edge(edge.Current()), location).IsNull()) return false;
   }
   return true;
 }
@@ -55,7 +63,9 @@ void triangulateFinerWhereNeeded(const SceneComponent& component, IMeshTools_Par
 
 void triangulate(const ExportScene& scene, const ExportOptions& options) {
   for (const SceneComponent& component : scene.components) {
-    if (isTriangulated(component.shape.shape)) continue;  // by an earlier output of the same scene
+    // Meshed already by an earlier output of the same scene? (The mesher gives lines outside
+    // faces their polylines too.)
+    if (isTriangulated(component.shape.shape) && linesDiscretised(component.shape.shape)) continue;
     IMeshTools_Parameters parameters;
     parameters.Deflection =
         options.linearDeflection > 0 ? options.linearDeflection : automaticDeflection(component.shape.shape);

@@ -5,10 +5,10 @@
 
 namespace airshape::exporting {
 
-/// Triangulates every face of every component of a scene (the triangulation is stored in
-/// the scene's own copies of the faces), with the options' deflections; components already
-/// triangulated (for an earlier output) are left as they are. Throws Error
-/// naming the face when one cannot be triangulated.
+/// Triangulates every face of every component of a scene and gives each edge outside the
+/// faces (a frame's line) its polyline (both stored in the scene's own copies of the shapes),
+/// with the options' deflections; components already meshed (for an earlier output) are left
+/// as they are. Throws Error naming the face when one cannot be triangulated.
 void triangulate(const ExportScene& scene, const ExportOptions& options);
 
 }  // namespace airshape::exporting

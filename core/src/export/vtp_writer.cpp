@@ -1,10 +1,12 @@
-// VTK XML PolyData (.vtp): every triangle of every face, with two per-cell string arrays,
-// "component" (the uID) and "face" (the face's name), so that a post-processor can pick
-// out a component or a wing's upper side.
+// VTK XML PolyData (.vtp): every triangle of every face and every line outside the faces (a
+// frame's, a stringer's, as a polyline), with two per-cell string arrays, "component" (the
+// uID) and "face" (the face's name; "line" for a line), so that a post-processor can pick out
+// a component or a wing's upper side.
 #include <fstream>
 #include <sstream>
 
 #include <BRep_Tool.hxx>
+#include <Poly_Polygon3D.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
@@ -17,12 +19,35 @@ namespace airshape::exporting {
 
 namespace {
 
-/// Triangles with their per-cell names, as VTK wants them laid out.
-struct PolyData {
-  std::ostringstream points, connectivity, offsets;
+/// Cells of one kind (VTK's lines or polygons) with their per-cell names.
+struct Cells {
+  std::ostringstream connectivity, offsets;
   std::vector<const std::string*> componentOfCell, faceOfCell;
-  std::size_t pointCount = 0;
+  std::size_t connected = 0;  ///< entries in connectivity so far
+
+  void add(const std::vector<std::size_t>& points, const std::string& component, const std::string& face) {
+    for (std::size_t point : points) connectivity << point << ' ';
+    connectivity << '\n';
+    connected += points.size();
+    offsets << connected << '\n';
+    componentOfCell.push_back(&component);
+    faceOfCell.push_back(&face);
+  }
 };
+
+/// Points, lines and triangles, as VTK wants them laid out.
+struct PolyData {
+  std::ostringstream points;
+  std::size_t pointCount = 0;
+  Cells lines, polygons;
+
+  std::size_t addPoint(const gp_Pnt& p) {
+    points << p.X() << ' ' << p.Y() << ' ' << p.Z() << '\n';
+    return pointCount++;
+  }
+};
+
+const std::string kLineName = "line";
 
 /// The name of each named face, found by the face itself (orientation aside).
 std::vector<std::string> faceNames(const NamedShape& shape, TopTools_DataMapOfShapeInteger& indexOfFace) {
@@ -40,22 +65,26 @@ void addFace(const TopoDS_Face& face, const std::string& component, const std::s
   if (mesh.IsNull()) return;
   const gp_Trsf placement = location.Transformation();
   const std::size_t first = data.pointCount;
-  data.points.precision(17);
-  for (int i = 1; i <= mesh->NbNodes(); ++i) {
-    const gp_Pnt p = mesh->Node(i).Transformed(placement);
-    data.points << p.X() << ' ' << p.Y() << ' ' << p.Z() << '\n';
-  }
-  data.pointCount += static_cast<std::size_t>(mesh->NbNodes());
+  for (int i = 1; i <= mesh->NbNodes(); ++i) data.addPoint(mesh->Node(i).Transformed(placement));
   const bool reversed = face.Orientation() == TopAbs_REVERSED;
   for (int i = 1; i <= mesh->NbTriangles(); ++i) {
     int a, b, c;
     mesh->Triangle(i).Get(a, b, c);
     if (reversed) std::swap(b, c);
-    data.connectivity << first + a - 1 << ' ' << first + b - 1 << ' ' << first + c - 1 << '\n';
-    data.offsets << 3 * (data.componentOfCell.size() + 1) << '\n';
-    data.componentOfCell.push_back(&component);
-    data.faceOfCell.push_back(&faceName);
+    data.polygons.add({first + a - 1, first + b - 1, first + c - 1}, component, faceName);
   }
+}
+
+/// An edge outside the faces as one polyline (its points from the mesher).
+void addLine(const TopoDS_Edge& edge, const std::string& component, PolyData& data) {
+  TopLoc_Location location;
+  const Handle(Poly_Polygon3D) polyline = BRep_Tool::Polygon3D(edge, location);
+  if (polyline.IsNull()) return;
+  const gp_Trsf placement = location.Transformation();
+  std::vector<std::size_t> points;
+  for (int i = 1; i <= polyline->NbNodes(); ++i)
+    points.push_back(data.addPoint(polyline->Nodes().Value(i).Transformed(placement)));
+  data.lines.add(points, component, kLineName);
 }
 
 /// A VTK string array in ASCII: each string as its character codes, ended by 0.
@@ -68,29 +97,44 @@ void writeStringArray(std::ostream& out, const char* name, const std::vector<con
   out << "        </Array>\n";
 }
 
+/// Lines before polygons in the cell arrays, as VTK numbers the cells.
+std::vector<const std::string*> inCellOrder(const std::vector<const std::string*>& lines,
+                                            const std::vector<const std::string*>& polygons) {
+  std::vector<const std::string*> all(lines);
+  all.insert(all.end(), polygons.begin(), polygons.end());
+  return all;
+}
+
+void writeCells(std::ostream& out, const char* element, const Cells& cells) {
+  out << "      <" << element << ">\n"
+      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n"
+      << cells.connectivity.str()
+      << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
+      << cells.offsets.str() << "        </DataArray>\n      </" << element << ">\n";
+}
+
 void writeDocument(std::ostream& out, const PolyData& data) {
   out << "<?xml version=\"1.0\"?>\n"
          "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
          "  <PolyData>\n"
-      << "    <Piece NumberOfPoints=\"" << data.pointCount
-      << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\""
-      << data.componentOfCell.size() << "\">\n      <CellData>\n";
-  writeStringArray(out, "component", data.componentOfCell);
-  writeStringArray(out, "face", data.faceOfCell);
+      << "    <Piece NumberOfPoints=\"" << data.pointCount << "\" NumberOfVerts=\"0\" NumberOfLines=\""
+      << data.lines.componentOfCell.size() << "\" NumberOfStrips=\"0\" NumberOfPolys=\""
+      << data.polygons.componentOfCell.size() << "\">\n      <CellData>\n";
+  writeStringArray(out, "component", inCellOrder(data.lines.componentOfCell, data.polygons.componentOfCell));
+  writeStringArray(out, "face", inCellOrder(data.lines.faceOfCell, data.polygons.faceOfCell));
   out << "      </CellData>\n      <Points>\n"
          "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n"
-      << data.points.str()
-      << "        </DataArray>\n      </Points>\n      <Polys>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n"
-      << data.connectivity.str()
-      << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
-      << data.offsets.str() << "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+      << data.points.str() << "        </DataArray>\n      </Points>\n";
+  writeCells(out, "Lines", data.lines);
+  writeCells(out, "Polys", data.polygons);
+  out << "    </Piece>\n  </PolyData>\n</VTKFile>\n";
 }
 
 }  // namespace
 
 void writeVtp(const ExportScene& scene, const std::string& path, const std::string& target) {
   PolyData data;
+  data.points.precision(17);
   std::vector<std::vector<std::string>> names;  // kept alive: the cells point into them
   names.reserve(scene.components.size());
   for (const SceneComponent& component : scene.components) {
@@ -101,6 +145,8 @@ void writeVtp(const ExportScene& scene, const std::string& path, const std::stri
       const int index = indexOfFace.IsBound(face) ? indexOfFace.Find(face) : 0;
       addFace(face, component.name, names.back()[static_cast<std::size_t>(index)], data);
     }
+    for (TopExp_Explorer edge(component.shape.shape, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next())
+      addLine(TopoDS::Edge(edge.Current()), component.name, data);
   }
   std::ofstream out(path, std::ios::binary);
   writeDocument(out, data);

@@ -24,8 +24,15 @@ std::string formatName(Format format);
 /// The extensions formatOfPath knows, for help texts.
 std::string knownExtensions();
 
+/// The components of a scene that a format cannot hold: those made of lines alone (frames,
+/// stringers, cross beams without --profiles) in a format of triangles only (STL, glTF, GLB,
+/// OBJ, the viewer page). VTK PolyData, STEP, IGES and BREP hold lines.
+std::vector<std::string> componentsLeftOutOf(const ExportScene& scene, Format format);
+
 /// Writes a scene to `path` in `format`, safely (complete or not at all, see
-/// writeFileSafely). Throws Error(WriteFailed) naming the file when it cannot be written.
+/// writeFileSafely); components the format cannot hold are left out (componentsLeftOutOf).
+/// Throws Error(WriteFailed) naming the file when it cannot be written, and
+/// Error(InvalidArgument) when the format can hold none of the components.
 void writeScene(const ExportScene& scene, const std::string& path, Format format, const ExportOptions& options);
 
 /// Builds the scene of a configuration and writes it to `path` in the format its
