@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""Renders the pictures of docs/structure.md from our own exports: an OBJ file written by
-`airshape export` (one group per component), some components drawn opaque and coloured, the
-others as a faint ghost around them, orthographic, flat shaded, into a PNG. No renderer is
-needed: a small z-buffer rasteriser in NumPy.
+"""Renders the pictures of docs/structure.md from our own exports: a VTK PolyData file written
+by `airshape export` (its cells named by component), some components drawn opaque and
+coloured (faces flat shaded, lines as thick strokes), the others as a faint ghost around them,
+orthographic, into a PNG. No renderer is needed: a small z-buffer rasteriser in NumPy.
 
     scripts/render_pictures.py             (writes docs/images/structure-*.png)
 """
@@ -12,6 +12,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree as ElementTree
 import zlib
 
 import numpy as np
@@ -24,25 +25,44 @@ COLOURS = [(0.85, 0.33, 0.10), (0.00, 0.45, 0.74), (0.47, 0.67, 0.19), (0.93, 0.
 WIDTH, HEIGHT = 900, 420
 
 
-def read_obj(path):
-    """{group name: (n, 3, 3) triangles}."""
-    vertices, groups, current = [], {}, None
-    with open(path) as obj:
-        for line in obj:
-            parts = line.split()
-            if not parts:
-                continue
-            if parts[0] == "v":
-                vertices.append([float(x) for x in parts[1:4]])
-            elif parts[0] in ("g", "o"):
-                current = parts[1].rsplit("/", 1)[-1]
-                groups.setdefault(current, [])
-            elif parts[0] == "f":
-                corners = [int(p.split("/")[0]) - 1 for p in parts[1:]]
-                for k in range(1, len(corners) - 1):
-                    groups[current].append([corners[0], corners[k], corners[k + 1]])
-    points = np.array(vertices)
-    return {name: points[np.array(faces)] for name, faces in groups.items() if faces}
+class Component:
+    """A component's triangles ((n, 3, 3) points) and line segments ((m, 2, 3) points)."""
+
+    def __init__(self):
+        self.triangles, self.segments = [], []
+
+
+def read_vtp(path):
+    """{component uID: Component} of an ASCII .vtp file as `airshape export` writes it."""
+    piece = ElementTree.parse(path).getroot().find("PolyData/Piece")
+
+    def numbers(element, name, kind):
+        array = next(a for a in piece.find(element).iter("DataArray") if a.get("Name") == name)
+        return np.array(array.text.split(), dtype=kind)
+
+    points = numbers("Points", "Points", float).reshape(-1, 3)
+    codes = next(a for a in piece.find("CellData") if a.get("Name") == "component").text.split()
+    names, current = [], []
+    for code in codes:  # each string as its character codes, ended by 0
+        if code == "0":
+            names.append("".join(current))
+            current = []
+        else:
+            current.append(chr(int(code)))
+    components, cell = {}, 0
+    for element in ("Lines", "Polys"):
+        connectivity = numbers(element, "connectivity", int)
+        start = 0
+        for end in numbers(element, "offsets", int):
+            corners = points[connectivity[start:end]]
+            component = components.setdefault(names[cell], Component())
+            if element == "Lines":
+                component.segments.extend(np.stack([corners[:-1], corners[1:]], axis=1))
+            else:
+                component.triangles.append(corners)
+            start, cell = end, cell + 1
+    return {name: (np.array(c.triangles).reshape(-1, 3, 3), np.array(c.segments).reshape(-1, 2, 3))
+            for name, c in components.items()}
 
 
 def view(triangles, azimuth, elevation):
@@ -52,14 +72,21 @@ def view(triangles, azimuth, elevation):
     return triangles @ (tilt @ turn).T  # screen x, depth y, screen z
 
 
-def render(groups, opaque, azimuth=-35, elevation=25):
-    placed = {name: view(t, azimuth, elevation) for name, t in groups.items()}
-    every = np.concatenate(list(placed.values())).reshape(-1, 3)
+def render(groups, opaque, azimuth=-35, elevation=25, colour_of=None):
+    """`opaque` components drawn in colour (by their place in the list, or `colour_of[name]`,
+    an index into COLOURS), the others as a ghost."""
+    placed = {name: (view(triangles, azimuth, elevation), view(segments, azimuth, elevation))
+              for name, (triangles, segments) in groups.items()}
+    every = np.concatenate([part.reshape(-1, 3) for shapes in placed.values() for part in shapes])
     low, high = every.min(axis=0), every.max(axis=0)
     scale = 0.9 * min(WIDTH / (high[0] - low[0]), HEIGHT / (high[2] - low[2]))
+    margin = (WIDTH - (high[0] - low[0]) * scale) / 2, (HEIGHT - (high[2] - low[2]) * scale) / 2
     image = np.ones((HEIGHT, WIDTH, 3))
     depth = np.full((HEIGHT, WIDTH), np.inf)
     light = np.array([0.3, -0.8, 0.5]) / np.linalg.norm([0.3, -0.8, 0.5])
+
+    def on_screen(points):
+        return (points[..., 0] - low[0]) * scale + margin[0], HEIGHT - ((points[..., 2] - low[2]) * scale + margin[1])
 
     def draw(triangles, colour, alpha):
         for tri in triangles:
@@ -67,8 +94,7 @@ def render(groups, opaque, azimuth=-35, elevation=25):
             if np.linalg.norm(normal) == 0:
                 continue
             shade = 0.35 + 0.65 * abs(normal @ light) / np.linalg.norm(normal)
-            xs = (tri[:, 0] - low[0]) * scale + 0.05 * WIDTH
-            ys = HEIGHT - ((tri[:, 2] - low[2]) * scale + 0.05 * HEIGHT)
+            xs, ys = on_screen(tri)
             x0, x1 = int(max(xs.min(), 0)), int(min(xs.max() + 1, WIDTH))
             y0, y1 = int(max(ys.min(), 0)), int(min(ys.max() + 1, HEIGHT))
             if x0 >= x1 or y0 >= y1:
@@ -90,9 +116,28 @@ def render(groups, opaque, azimuth=-35, elevation=25):
                 mask = inside & (z < region)
                 image[y0:y1, x0:x1][mask] = (1 - alpha) * image[y0:y1, x0:x1][mask] + alpha * np.array(colour) * shade
 
+    def stroke(segments, colour, half_width=2):
+        """Line segments as strokes a few pixels wide, in front of what they lie on."""
+        for segment in segments:
+            xs, ys = on_screen(segment)
+            steps = max(2, int(2 * math.hypot(xs[1] - xs[0], ys[1] - ys[0])))
+            for share in np.linspace(0.0, 1.0, steps):
+                x, y = xs[0] + share * (xs[1] - xs[0]), ys[0] + share * (ys[1] - ys[0])
+                z = segment[0, 1] + share * (segment[1, 1] - segment[0, 1]) - 1e-3 * (high[1] - low[1])
+                x0, x1 = max(int(x) - half_width, 0), min(int(x) + half_width + 1, WIDTH)
+                y0, y1 = max(int(y) - half_width, 0), min(int(y) + half_width + 1, HEIGHT)
+                if x0 >= x1 or y0 >= y1:
+                    continue
+                mask = z < depth[y0:y1, x0:x1]
+                depth[y0:y1, x0:x1][mask] = z
+                image[y0:y1, x0:x1][mask] = colour
+
     for k, name in enumerate(opaque):
-        draw(placed[name], COLOURS[k % len(COLOURS)], 1.0)
-    for name, triangles in placed.items():
+        triangles, segments = placed[name]
+        colour = COLOURS[(colour_of or {}).get(name, k) % len(COLOURS)]
+        draw(triangles, colour, 1.0)
+        stroke(segments, colour)
+    for name, (triangles, _) in placed.items():
         if name not in opaque:
             draw(triangles, (0.5, 0.5, 0.55), 0.18)
     return image
@@ -108,14 +153,50 @@ def write_png(image, path):
                   chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
+def clipped(polygon, x, keep_above):
+    """The part of a convex polygon (three or more points in order) on one side of the plane at
+    station x."""
+    inside = (lambda p: p[0] >= x) if keep_above else (lambda p: p[0] <= x)
+    kept = []
+    for k, point in enumerate(polygon):
+        previous = polygon[k - 1]
+        if inside(point) != inside(previous):
+            share = (x - previous[0]) / (point[0] - previous[0])
+            kept.append(previous + share * (point - previous))
+        if inside(point):
+            kept.append(point)
+    return kept
+
+
+def cropped(groups, x_from, x_to):
+    """Each component's triangles and line segments cut to the stations between x_from and x_to."""
+    def cut_triangles(triangles):
+        pieces = []
+        for triangle in triangles:
+            polygon = clipped(clipped(list(triangle), x_from, True), x_to, False)
+            pieces.extend([polygon[0], polygon[k], polygon[k + 1]] for k in range(1, len(polygon) - 1))
+        return np.array(pieces).reshape(-1, 3, 3)
+
+    def cut_segments(segments):
+        pieces = []
+        for a, b in segments:
+            low, high = (a, b) if a[0] <= b[0] else (b, a)
+            if high[0] < x_from or low[0] > x_to:
+                continue
+            at = lambda x: low + (x - low[0]) / (high[0] - low[0]) * (high - low) if high[0] > low[0] else low
+            pieces.append([at(x_from) if low[0] < x_from else low, at(x_to) if high[0] > x_to else high])
+        return np.array(pieces).reshape(-1, 2, 3)
+    return {name: (cut_triangles(triangles), cut_segments(segments)) for name, (triangles, segments) in groups.items()}
+
+
 def exported(source, components, deflection, profiles=False):
-    """The groups of an OBJ export of some components of a file (frames and stringers with their
-    profiles swept, with `profiles`)."""
+    """The components of a VTK PolyData export of some components of a file (frames and
+    stringers with their profiles swept, with `profiles`)."""
     with tempfile.TemporaryDirectory() as folder:
-        obj = os.path.join(folder, "structure.obj")
+        vtp = os.path.join(folder, "structure.vtp")
         subprocess.run([AIRSHAPE, "export", source, "--components", ",".join(components), "--deflection",
-                        str(deflection), "-q", "-o", obj] + (["--profiles"] if profiles else []), check=True)
-        return read_obj(obj)
+                        str(deflection), "-q", "-o", vtp] + (["--profiles"] if profiles else []), check=True)
+        return read_vtp(vtp)
 
 
 def main():
@@ -141,6 +222,17 @@ def main():
     groups = exported(AIRLINER, ["Wing", "Wing_InnerTank", "Wing_OuterTank"], 0.02)
     write_png(render(groups, ["Wing_InnerTank", "Wing_OuterTank"], azimuth=-20, elevation=50),
               os.path.join(images, "structure-tanks.png"))
+    # The cargo floor's cross beams (orange), struts (blue) and long floor beams (green), lines,
+    # in the fuselage between x = 5 and 11.
+    floor = {"Cargo_Floor_Beam_Front": 0, "Cargo_Floor_Beam_Rear": 0, "Cargo_Strut_Front_Left": 1,
+             "Cargo_Strut_Front_Right": 1, "Cargo_Floor_Rail_Left": 2, "Cargo_Floor_Rail_Right": 2}
+    groups = exported(AIRLINER, ["Fuselage"] + list(floor), 0.05)
+    write_png(render(cropped(groups, 5.0, 11.0), list(floor), azimuth=-50, elevation=20, colour_of=floor),
+              os.path.join(images, "structure-floor.png"))
+    # The two stringers (lines) and the cabin divider, a wall, in the whole fuselage.
+    groups = exported(AIRLINER, ["Fuselage", "Stringer_Side", "Stringer_Low", "Cabin_Divider"], 0.05)
+    write_png(render(groups, ["Stringer_Side", "Stringer_Low", "Cabin_Divider"], azimuth=-60, elevation=15),
+              os.path.join(images, "structure-stringers-wall.png"))
     return 0
 
 

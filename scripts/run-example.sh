@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, and runs airshape on the example airliner:
 # checks it, builds every element (wings, fuselage, flaps, slats, ailerons, spoiler, spars,
-# ribs, engine, pylon, tank, duct) and says what became of each, writes the aircraft with its
+# ribs, frames, stringers, floor beams, a wall, engine, pylon, tank, duct) and says what became of each, writes the aircraft with its
 # mirrored halves as STEP, STL, glTF and a page for any browser (open
 # examples/generic-airliner.html) next to it with a summary (volumes, areas, time), and asks a
 # few queries.
