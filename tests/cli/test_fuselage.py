@@ -409,6 +409,30 @@ def test_an_approximated_profile_counts_its_kinks_from_one(tmp_path):
     assert answer["error"].endswith("pointList/kinkIndices: index 0 names no point of the list"), answer
 
 
+def test_an_approximated_profile_whose_fit_parts_its_seam_is_closed(tmp_path):
+    # A D of the unit half disc (top, down the right quarter, along the flat bottom with its
+    # corners as kinks, up the left quarter in fewer, uneven points), 12 poles: the corrections
+    # part the fit's ends at the top by some 5 cm, as the reference's fit of such a profile
+    # does, and a straight piece closes it, so that the fuselage is a closed solid of nearly
+    # the half disc's area.
+    right = [(math.sin(a), math.cos(a)) for a in (0.5 * math.pi * i / 20 for i in range(21))]
+    bottom = [(1 - 2 * i / 20, 0.0) for i in range(1, 21)]
+    left = [(-math.cos(a), math.sin(a)) for a in (0.5 * math.pi * (i / 7) ** 1.5 for i in range(1, 8))]
+    points = right + bottom + left
+    ys = ";".join(f"{y:.17g}" for y, _ in points)
+    zs = ";".join(f"{z:.17g}" for _, z in points)
+    profile = (f'<fuselageProfile uID="DProfile"><name>p</name><pointList><x>{";".join("0" * len(points))}</x><y>{ys}</y>'
+               f"<z>{zs}</z><kinkIndices>21;41</kinkIndices><approximationSettings><controlPointNumber>12"
+               "</controlPointNumber></approximationSettings></pointList></fuselageProfile>")
+    path = tmp_path / "d.xml"
+    path.write_text(HEADER + fuselage("D", "DProfile", 10.0) + "</fuselages></model></aircraft><profiles><fuselageProfiles>"
+                    f"{profile}</fuselageProfiles></profiles></vehicles></cpacs>")
+    built = airshape("build", str(path))
+    assert "valid solid" in built.stdout, built.stdout + built.stderr
+    volume, = ask(path, {"op": "fuselage_volume", "fuselage": 1})
+    assert math.isclose(volume, 0.5 * math.pi * 10, rel_tol=0.01), volume
+
+
 def test_approximation_settings_that_cannot_be_met_name_the_node(tmp_path):
     path = tmp_path / "approximated.xml"
     approximated_cylinders(path, "><controlPointNumber>2</controlPointNumber>")

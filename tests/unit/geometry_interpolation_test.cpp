@@ -144,6 +144,38 @@ TEST(Approximation, CorrectedParametersFitCloserAndKeepTheConstraints) {
   }
 }
 
+TEST(Approximation, ASeamAtTheEndPointsFollowsTheirCorrectedParameters) {
+  // A closed outline, a circle squashed on one side, its points spread unevenly: the
+  // corrections move the parameters of the first and the last point (both samples) off the
+  // range's ends. Closed at the range's ends the curve's ends meet, C2; closed at the end
+  // points, as the reference fits fuselage profiles, its conditions hold at their corrected
+  // parameters and the curve's own ends part.
+  std::vector<gp_Pnt> points;
+  for (int i = 0; i <= 48; ++i) {
+    const double a = 2.0 * M_PI * std::pow(i / 48.0, 1.3);
+    points.emplace_back(0.0, std::sin(a) * (std::sin(a) > 0 ? 1.0 : 0.6), std::cos(a));
+  }
+  points.back() = points.front();
+  const std::vector<double> parameters = chordParameters(points, 0.5);
+  InterpolationConstraints seam;
+  seam.seamContinuity = 2;
+  seam.freeSeam = true;
+  const KnotVector space = uniformKnots(0, 1, 12, 3);
+  const auto atEnds = fitPointsCorrectingParameters(space, parameters, points, {}, FitError::Largest, seam, 5);
+  EXPECT_LT(atEnds->StartPoint().Distance(atEnds->EndPoint()), 1e-12);
+  const auto atPoints =
+      fitPointsCorrectingParameters(space, parameters, points, {}, FitError::Largest, seam, 5, SeamAt::EndPoints);
+  EXPECT_GT(atPoints->StartPoint().Distance(atPoints->EndPoint()), 1e-4);
+  // Uncorrected, both are the same closed curve: the end points sit at the range's ends.
+  const auto plain =
+      fitPointsCorrectingParameters(space, parameters, points, {}, FitError::Largest, seam, 0, SeamAt::EndPoints);
+  for (int k = 0; k <= 10; ++k)
+    EXPECT_LT(
+        plain->Value(k / 10.0).Distance(
+            fitPointsCorrectingParameters(space, parameters, points, {}, FitError::Largest, seam, 0)->Value(k / 10.0)),
+        1e-12);
+}
+
 TEST(Approximation, TooFewSamplesIsAnError) {
   const KnotVector space = uniformKnots(0, 1, 10, 3);
   PoleMatrix points(3, 3);

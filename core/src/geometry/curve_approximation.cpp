@@ -72,10 +72,12 @@ PoleMatrix ApproximationSolver::solve(const KnotVector& space, const std::vector
         addConstraintEntry(it.row(), it.col(), it.value());
     rightSide.block(poles, 0, pinned, 3) = constraints.points;
   }
+  const double seamStart = constraints.seamStartSample ? parameters.at(*constraints.seamStartSample) : space.first();
+  const double seamEnd = constraints.seamEndSample ? parameters.at(*constraints.seamEndSample) : space.last();
   for (int derivative = firstSeamDerivative; derivative <= constraints.seamContinuity; ++derivative) {
     // The derivative (the point, for derivative 0) at the start minus the one at the end is zero.
-    const Eigen::MatrixXd start = basisMatrix(space, {space.first()}, derivative);
-    const Eigen::MatrixXd end = basisMatrix(space, {space.last()}, derivative);
+    const Eigen::MatrixXd start = basisMatrix(space, {seamStart}, derivative);
+    const Eigen::MatrixXd end = basisMatrix(space, {seamEnd}, derivative);
     for (Eigen::Index pole = 0; pole < poles; ++pole)
       addConstraintEntry(pinned + derivative - firstSeamDerivative, pole, start(0, pole) - end(0, pole));
   }
@@ -157,9 +159,10 @@ Handle(Geom_BSplineCurve)
   return curve;
 }
 
-Handle(Geom_BSplineCurve) fitPointsCorrectingParameters(const KnotVector& space, const std::vector<double>& parameters,
-                                                        const std::vector<gp_Pnt>& points, const std::set<int>& pinned,
-                                                        FitError measure, const InterpolationConstraints& seam) {
+Handle(Geom_BSplineCurve)
+    fitPointsCorrectingParameters(const KnotVector& space, const std::vector<double>& parameters,
+                                  const std::vector<gp_Pnt>& points, const std::set<int>& pinned, FitError measure,
+                                  const InterpolationConstraints& seam, int maxCorrections, SeamAt seamAt) {
   std::vector<double> sampleParameters;
   std::vector<gp_Pnt> samples, kept;
   InterpolationConstraints constraints = seam;
@@ -170,7 +173,14 @@ Handle(Geom_BSplineCurve) fitPointsCorrectingParameters(const KnotVector& space,
     (isPinned ? kept : samples).push_back(points[i]);
   }
   constraints.points = toMatrix(kept);
-  return fitCorrectingParameters(space, sampleParameters, toMatrix(samples), constraints, measure);
+  // The list's end points stand for the curve's ends where they are samples (a pinned one
+  // keeps its parameter, the range's end).
+  const int last = static_cast<int>(points.size()) - 1;
+  if (seamAt == SeamAt::EndPoints && !samples.empty()) {
+    if (!pinned.count(0)) constraints.seamStartSample = 0;
+    if (!pinned.count(last)) constraints.seamEndSample = samples.size() - 1;
+  }
+  return fitCorrectingParameters(space, sampleParameters, toMatrix(samples), constraints, measure, maxCorrections);
 }
 
 }  // namespace airshape::geometry

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -19,7 +20,16 @@ struct InterpolationConstraints {
   PoleMatrix points = PoleMatrix(0, 3);
   int seamContinuity = 0;
   bool freeSeam = false;
+  /// Where the seam conditions compare the curve at its start and at its end: at the ends of
+  /// its range, or at the current parameter of a sample (an index into the samples), which
+  /// parameter corrections move off the range's end, so that the curve's own ends part.
+  std::optional<std::size_t> seamStartSample, seamEndSample;
 };
+
+/// Where a fit of a list of points compares a closed curve's ends (fitPointsCorrectingParameters):
+/// at the ends of its range, or, as the reference library fits approximated fuselage profiles,
+/// at the list's first and last point's current parameters (fixed where they are pinned).
+enum class SeamAt { RangeEnds, EndPoints };
 
 /// Least-squares approximation: the control points of `space` that minimise the squared
 /// distances to `points` (rows) at `parameters`, subject to passing exactly through the
@@ -47,9 +57,11 @@ Handle(Geom_BSplineCurve)
 
 /// fitCorrectingParameters on a list of points: those whose indices are `pinned` are passed
 /// through exactly at their parameters, the others are the samples whose parameters get
-/// corrected; `seam` closes the curve (its seamContinuity and freeSeam; no points of its own).
+/// corrected; `seam` closes the curve (its seamContinuity and freeSeam; no points of its own),
+/// comparing its ends where `seamAt` says.
 Handle(Geom_BSplineCurve) fitPointsCorrectingParameters(const KnotVector& space, const std::vector<double>& parameters,
                                                         const std::vector<gp_Pnt>& points, const std::set<int>& pinned,
-                                                        FitError measure, const InterpolationConstraints& seam = {});
+                                                        FitError measure, const InterpolationConstraints& seam = {},
+                                                        int maxCorrections = 10, SeamAt seamAt = SeamAt::RangeEnds);
 
 }  // namespace airshape::geometry
