@@ -92,7 +92,7 @@ def test_every_format_reopens_with_names_and_volumes(tmp_path, name):
     assert set(groups) == uids
 
 
-def test_lines_go_to_vtk_polydata_and_formats_of_triangles_say_they_leave_them_out(tmp_path):
+def test_lines_go_to_vtk_polydata_and_gltf_and_formats_of_triangles_say_they_leave_them_out(tmp_path):
     # The front door frame is the fuselage's circle of radius 2 at x = 7; the side stringer
     # runs along the skin. In VTK PolyData both are polylines named by their uIDs, the frame's
     # a little shorter than its circle (chords).
@@ -104,6 +104,22 @@ def test_lines_go_to_vtk_polydata_and_formats_of_triangles_say_they_leave_them_o
     assert sorted(lengths) == lines
     assert 4 * math.pi * (1 - 1e-3) < lengths["Frame_Door_Front"] <= 4 * math.pi + 1e-9
     assert lengths["Stringer_Side"] > 20
+
+    # glTF holds them as LINE_STRIP primitives of their components' nodes, with the solids'
+    # triangles or alone; the validator finds nothing wrong.
+    for name, components in (("lines", lines), ("mixed", ["Wing"] + lines)):
+        gltf = tmp_path / f"{name}.gltf"
+        result = airshape("export", AIRLINER, "--components", ",".join(components), "-q", "-o", str(gltf),
+                          "-o", str(tmp_path / f"{name}.glb"))
+        assert result.returncode == 0, result.stderr
+        for path in (gltf, tmp_path / f"{name}.glb"):
+            report = gltf_report(path)
+            assert (report["errors"], report["warnings"]) == (0, 0), report
+        document = json.load(open(gltf))
+        meshes = {node["name"]: document["meshes"][node["mesh"]] for node in document["nodes"] if "mesh" in node}
+        assert set(meshes) == set(components)
+        for uid in lines:
+            assert {primitive["mode"] for primitive in meshes[uid]["primitives"]} == {3}
 
     # STL holds triangles only: lines alone are a clear error and no file, lines among solids
     # a note naming them.

@@ -1,10 +1,14 @@
 // The triangulated formats: binary STL, glTF/GLB and OBJ (OCCT's writers; glTF and OBJ
-// through the XCAF document, one node per component, in xde_writers.cpp). VTK PolyData is
-// vtp_writer.cpp.
+// through the XCAF document, one node per component, in xde_writers.cpp; glTF's lines are
+// added by gltf_lines.cpp). VTK PolyData is vtp_writer.cpp.
+#include <algorithm>
+
 #include <StlAPI_Writer.hxx>
+#include <TopExp_Explorer.hxx>
 
 #include "airshape/error.h"
 #include "format_writers.h"
+#include "gltf_lines.h"
 #include "xde_module.h"
 
 namespace airshape::exporting {
@@ -16,7 +20,13 @@ void writeStl(const ExportScene& scene, const std::string& path, const std::stri
 }
 
 void writeGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary) {
-  writeWithXcaf(binary ? "glb" : "gltf", scene, path, target);
+  // OCCT's writer takes the triangles of faces (and writes nothing for a scene of lines alone);
+  // the lines follow.
+  const bool anyFace = std::any_of(scene.components.begin(), scene.components.end(), [](const SceneComponent& c) {
+    return TopExp_Explorer(c.shape.shape, TopAbs_FACE).More();
+  });
+  if (anyFace) writeWithXcaf(binary ? "glb" : "gltf", scene, path, target);
+  addLinesToGltf(scene, path, target, binary);
 }
 
 void writeObj(const ExportScene& scene, const std::string& path, const std::string& target) {
