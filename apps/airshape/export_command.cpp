@@ -194,7 +194,8 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
     if (const std::vector<std::string> lines = exporting::componentsLeftOutOf(scene, format);
         !lines.empty() && lines.size() < scene.components.size())
       std::cerr << "export: note: " << output << " leaves out " << joined(lines) << ": lines, which "
-                << exporting::formatName(format) << " cannot hold (.vtp, .glb, .gltf, .step, .iges and .brep can)\n";
+                << exporting::formatName(format)
+                << " cannot hold (.vtp, .glb, .gltf, .obj, .step, .iges and .brep can)\n";
     exporting::writeScene(scene, output, format, options.exportOptions);
     if (!options.quiet)
       std::cerr << "export: wrote " << output << " (" << exporting::formatName(format) << ", "

@@ -93,6 +93,15 @@ for k in range(data.GetNumberOfCells()):
 print(json.dumps(lengths))
 """
 
+VTK_OBJ_COUNTS = """
+import json, sys, vtk
+reader = vtk.vtkOBJReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+data = reader.GetOutput()
+print(json.dumps({"triangles": data.GetNumberOfPolys(), "lines": data.GetNumberOfLines()}))
+"""
+
 
 def _require_module(module):
     found = subprocess.run(["/usr/bin/python3", "-c", f"import {module}"], capture_output=True)
@@ -147,6 +156,12 @@ def vtk_line_lengths(path):
     """The summed length of the line cells of a .vtp file, by their "component" value."""
     _require_module("vtk")
     return _run_python(VTK_LINE_LENGTHS, path)
+
+
+def vtk_obj_counts(path):
+    """The polygons and the lines VTK's OBJ reader finds in a .obj file."""
+    _require_module("vtk")
+    return _run_python(VTK_OBJ_COUNTS, path)
 
 
 def admesh_report(path):

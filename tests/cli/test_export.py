@@ -9,7 +9,8 @@ import re
 import pytest
 
 from conftest import EXAMPLE, SOURCE, airshape, query_answers, shared_path
-from independent_readers import admesh_report, gltf_report, gmsh_volumes, stl_volume, vtk_line_lengths, vtk_polydata
+from independent_readers import (admesh_report, gltf_report, gmsh_volumes, stl_volume, vtk_line_lengths, vtk_obj_counts,
+                                 vtk_polydata)
 
 AIRLINER = os.path.join(SOURCE, "examples", "generic-airliner.xml")
 FORMATS = ("step", "iges", "brep", "stl", "vtp", "glb", "gltf", "obj")
@@ -92,7 +93,7 @@ def test_every_format_reopens_with_names_and_volumes(tmp_path, name):
     assert set(groups) == uids
 
 
-def test_lines_go_to_vtk_polydata_and_gltf_and_formats_of_triangles_say_they_leave_them_out(tmp_path):
+def test_lines_go_to_vtk_polydata_gltf_and_obj_and_stl_says_it_leaves_them_out(tmp_path):
     # The front door frame is the fuselage's circle of radius 2 at x = 7; the side stringer
     # runs along the skin. In VTK PolyData both are polylines named by their uIDs, the frame's
     # a little shorter than its circle (chords).
@@ -120,6 +121,13 @@ def test_lines_go_to_vtk_polydata_and_gltf_and_formats_of_triangles_say_they_lea
         assert set(meshes) == set(components)
         for uid in lines:
             assert {primitive["mode"] for primitive in meshes[uid]["primitives"]} == {3}
+
+    # OBJ holds them as `l` records in groups of their own, after the solids' triangles.
+    obj = tmp_path / "mixed.obj"
+    assert airshape("export", AIRLINER, "--components", ",".join(["Wing"] + lines), "-q", "-o", str(obj)).returncode == 0
+    counts = vtk_obj_counts(obj)
+    assert counts["triangles"] > 0 and counts["lines"] >= 2, counts
+    assert set(re.findall(r"^g .*/(.+)$", open(obj).read(), re.M)) == {"Wing"} | set(lines)
 
     # STL holds triangles only: lines alone are a clear error and no file, lines among solids
     # a note naming them.

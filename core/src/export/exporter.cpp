@@ -46,9 +46,9 @@ bool isTriangulated(Format format) {
   return format != Format::Step && format != Format::Iges && format != Format::Brep;
 }
 
-/// STL and OBJ hold triangles only; VTK PolyData and glTF (the viewer page's too) hold lines
-/// as polylines, the CAD formats as curves.
-bool holdsLines(Format format) { return format != Format::Stl && format != Format::Obj; }
+/// STL holds triangles only; VTK PolyData, glTF (the viewer page's too) and OBJ hold lines as
+/// polylines, the CAD formats as curves.
+bool holdsLines(Format format) { return format != Format::Stl; }
 
 bool hasFaces(const TopoDS_Shape& shape) { return TopExp_Explorer(shape, TopAbs_FACE).More(); }
 
@@ -132,8 +132,8 @@ void writeScene(const ExportScene& scene, const std::string& path, Format format
   if (!scene.components.empty() && componentsLeftOutOf(scene, format).size() == scene.components.size())
     throw Error(ErrorCode::InvalidArgument,
                 formatName(format) + " holds triangles only, and every component to write is lines (frames, " +
-                    "stringers, beams): write .vtp, .glb, .gltf, .step, .iges or .brep, or sweep their profiles with "
-                    "--profiles",
+                    "stringers, beams): write .vtp, .glb, .gltf, .obj, .step, .iges or .brep, or sweep their "
+                    "profiles with --profiles",
                 path);
   quietenKernelMessages();
   if (isTriangulated(format)) triangulate(scene, options);

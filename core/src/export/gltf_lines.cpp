@@ -13,13 +13,10 @@
 #include <sstream>
 #include <vector>
 
-#include <BRep_Tool.hxx>
-#include <Poly_Polygon3D.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
 #include <nlohmann/json.hpp>
 
 #include "format_writers.h"
+#include "mesh_lines.h"
 
 namespace airshape::exporting {
 
@@ -128,19 +125,13 @@ GltfFile emptyGltf(const ExportScene& scene) {
   return file;
 }
 
-/// A shape's lines, each the mesher's polyline of an edge outside the faces, turned y up
-/// (glTF) from z up (CPACS) as OCCT turns the triangles.
+/// A shape's lines turned y up (glTF) from z up (CPACS), as OCCT turns the triangles.
 std::vector<std::vector<std::array<float, 3>>> linesOf(const TopoDS_Shape& shape) {
   std::vector<std::vector<std::array<float, 3>>> lines;
-  for (TopExp_Explorer edge(shape, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next()) {
-    TopLoc_Location location;
-    const Handle(Poly_Polygon3D) polyline = BRep_Tool::Polygon3D(TopoDS::Edge(edge.Current()), location);
-    if (polyline.IsNull() || polyline->NbNodes() < 2) continue;
+  for (const std::vector<gp_Pnt>& polyline : polylinesOf(shape)) {
     std::vector<std::array<float, 3>> line;
-    for (int i = 1; i <= polyline->NbNodes(); ++i) {
-      const gp_Pnt p = polyline->Nodes().Value(i).Transformed(location.Transformation());
+    for (const gp_Pnt& p : polyline)
       line.push_back({static_cast<float>(p.X()), static_cast<float>(p.Z()), static_cast<float>(-p.Y())});
-    }
     lines.push_back(std::move(line));
   }
   return lines;
@@ -195,12 +186,6 @@ int lineMaterial(GltfFile& file) {
 }
 
 }  // namespace
-
-bool hasLines(const ExportScene& scene) {
-  return std::any_of(scene.components.begin(), scene.components.end(), [](const SceneComponent& component) {
-    return TopExp_Explorer(component.shape.shape, TopAbs_EDGE, TopAbs_FACE).More();
-  });
-}
 
 void addLinesToGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary) {
   if (!hasLines(scene)) return;

@@ -15,7 +15,4 @@ namespace airshape::exporting {
 /// naming `target` when a file cannot be read back or written.
 void addLinesToGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary);
 
-/// Whether a scene holds lines (edges outside faces).
-bool hasLines(const ExportScene& scene);
-
 }  // namespace airshape::exporting

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include <BRep_Tool.hxx>
-#include <Poly_Polygon3D.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
@@ -14,6 +13,7 @@
 
 #include "airshape/error.h"
 #include "format_writers.h"
+#include "mesh_lines.h"
 
 namespace airshape::exporting {
 
@@ -75,16 +75,13 @@ void addFace(const TopoDS_Face& face, const std::string& component, const std::s
   }
 }
 
-/// An edge outside the faces as one polyline (its points from the mesher).
-void addLine(const TopoDS_Edge& edge, const std::string& component, PolyData& data) {
-  TopLoc_Location location;
-  const Handle(Poly_Polygon3D) polyline = BRep_Tool::Polygon3D(edge, location);
-  if (polyline.IsNull()) return;
-  const gp_Trsf placement = location.Transformation();
-  std::vector<std::size_t> points;
-  for (int i = 1; i <= polyline->NbNodes(); ++i)
-    points.push_back(data.addPoint(polyline->Nodes().Value(i).Transformed(placement)));
-  data.lines.add(points, component, kLineName);
+/// A component's lines (edges outside faces), each one polyline.
+void addLines(const TopoDS_Shape& shape, const std::string& component, PolyData& data) {
+  for (const std::vector<gp_Pnt>& line : polylinesOf(shape)) {
+    std::vector<std::size_t> points;
+    for (const gp_Pnt& p : line) points.push_back(data.addPoint(p));
+    data.lines.add(points, component, kLineName);
+  }
 }
 
 /// A VTK string array in ASCII: each string as its character codes, ended by 0.
@@ -145,8 +142,7 @@ void writeVtp(const ExportScene& scene, const std::string& path, const std::stri
       const int index = indexOfFace.IsBound(face) ? indexOfFace.Find(face) : 0;
       addFace(face, component.name, names.back()[static_cast<std::size_t>(index)], data);
     }
-    for (TopExp_Explorer edge(component.shape.shape, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next())
-      addLine(TopoDS::Edge(edge.Current()), component.name, data);
+    addLines(component.shape.shape, component.name, data);
   }
   std::ofstream out(path, std::ios::binary);
   writeDocument(out, data);

@@ -25,8 +25,8 @@ std::string formatName(Format format);
 std::string knownExtensions();
 
 /// The components of a scene that a format cannot hold: those made of lines alone (frames,
-/// stringers, cross beams without --profiles) in a format of triangles only (STL, OBJ). VTK
-/// PolyData, glTF (and so the viewer page), STEP, IGES and BREP hold lines.
+/// stringers, cross beams without --profiles) in STL, which holds triangles only. VTK
+/// PolyData, glTF (and so the viewer page), OBJ, STEP, IGES and BREP hold lines.
 std::vector<std::string> componentsLeftOutOf(const ExportScene& scene, Format format);
 
 /// Writes a scene to `path` in `format`, safely (complete or not at all, see
