@@ -219,6 +219,25 @@ def test_control_surfaces_of_a_wing(tmp_path):
         config.export(str(tmp_path / "bad.brep"), deflect={"Rect": 1})
 
 
+def test_a_further_deflected_export_reuses_the_wings_cut_until_an_edit(tmp_path):
+    # The cut-outs lie where the devices are at rest: the wing's cut is made once for any
+    # deflections, the same file comes out whatever was exported before, and an edit forgets it.
+    config = airshape.Configuration.open(WITH_DEVICES)
+    def cuts():
+        return sum(count for key, count in config.cache_statistics()["builds_by_key"].items()
+                   if key.startswith("cut-outs of Rect"))
+    config.export(str(tmp_path / "max.brep"), components=["Rect"], deflect={"all": "max"})
+    config.export(str(tmp_path / "min.brep"), components=["Rect"], deflect={"all": "min"})
+    assert cuts() == 1
+    fresh = airshape.Configuration.open(WITH_DEVICES)
+    fresh.export(str(tmp_path / "min-fresh.brep"), components=["Rect"], deflect={"all": "min"})
+    assert (tmp_path / "min.brep").read_bytes() == (tmp_path / "min-fresh.brep").read_bytes()
+    config.set("/cpacs/vehicles/aircraft/model/wings/wing[@uID='Rect']/componentSegments/componentSegment/controlSurfaces"
+               "/trailingEdgeDevices/trailingEdgeDevice[@uID='Flap']/outerShape/innerBorder/xsiLE/xsi", 0.65)
+    config.export(str(tmp_path / "edited.brep"), components=["Rect"], deflect={"all": "min"})
+    assert cuts() == 2
+
+
 WITH_STRUCTURE = os.path.join(SOURCE, "tests", "data", "wing-cst-structure.xml")
 
 

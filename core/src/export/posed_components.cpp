@@ -1,6 +1,7 @@
 #include "posed_components.h"
 
 #include <algorithm>
+#include <memory>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -80,6 +81,38 @@ std::map<std::string, PosedComponent> ownPoses(const Configuration& configuratio
   return posed;
 }
 
+/// A component with the cut-outs of the moving parts it hosts (`guests`) cut out of it, by one
+/// Boolean operation.
+NamedShape withCutOuts(const Configuration& configuration, const std::string& uid,
+                       const std::vector<std::string>& guests) {
+  const NamedShape& built = configuration.shapes().namedShapeOf(configuration, uid);
+  std::vector<NamedShape> cutOuts;
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(built.shape);
+  for (const std::string& moving : guests) {
+    cutOuts.push_back(motionOf(configuration, moving)->cutOut(configuration, moving));
+    addTools(cutOuts.back().shape, tools);
+  }
+  NamedShape solid = built;
+  if (!cutOuts.empty()) {
+    BRepAlgoAPI_Cut cut;
+    cut.SetArguments(arguments);
+    cut.SetTools(tools);
+    cut.SetRunParallel(true);
+    // Oriented boxes pass over more of the pairs of a cutter's plane faces and the wing's
+    // skins that cannot meet: 12 % fewer instructions on the flaps file's main wing, and the
+    // same solids (BREP byte for byte) for every device of the shared files.
+    cut.SetUseOBB(true);
+    cut.Build();
+    if (!cut.IsDone() || cut.HasErrors())
+      throw Error(ErrorCode::InvalidModel, "the cut-outs of its moving parts could not be cut out of '" + uid + "'");
+    std::vector<const NamedShape*> inputs{&built};
+    for (const NamedShape& cutOut : cutOuts) inputs.push_back(&cutOut);
+    solid = namedBooleanResult(cut, inputs);
+  }
+  return solid;
+}
+
 }  // namespace
 
 std::map<std::string, PosedComponent> resolvePoses(const Configuration& configuration, const std::vector<Pose>& poses) {
@@ -101,32 +134,22 @@ std::map<std::string, PosedComponent> resolvePoses(const Configuration& configur
 
 NamedShape posedSolid(const Configuration& configuration, const std::string& uid,
                       const std::map<std::string, PosedComponent>& posed) {
-  const NamedShape& built = configuration.shapes().namedShapeOf(configuration, uid);
-  std::vector<NamedShape> cutOuts;
-  TopTools_ListOfShape arguments, tools;
-  arguments.Append(built.shape);
+  std::vector<std::string> guests;
+  std::string key = "cut-outs of " + uid + " for";
   for (const auto& [moving, component] : posed)
     if (component.host == uid) {
-      cutOuts.push_back(motionOf(configuration, moving)->cutOut(configuration, moving));
-      addTools(cutOuts.back().shape, tools);
+      guests.push_back(moving);
+      key += " " + moving;
     }
-  NamedShape solid = built;
-  if (!cutOuts.empty()) {
-    BRepAlgoAPI_Cut cut;
-    cut.SetArguments(arguments);
-    cut.SetTools(tools);
-    cut.SetRunParallel(true);
-    // Oriented boxes pass over more of the pairs of a cutter's plane faces and the wing's
-    // skins that cannot meet: 12 % fewer instructions on the flaps file's main wing, and the
-    // same solids (BREP byte for byte) for every device of the shared files.
-    cut.SetUseOBB(true);
-    cut.Build();
-    if (!cut.IsDone() || cut.HasErrors())
-      throw Error(ErrorCode::InvalidModel, "the cut-outs of its moving parts could not be cut out of '" + uid + "'");
-    std::vector<const NamedShape*> inputs{&built};
-    for (const NamedShape& cutOut : cutOuts) inputs.push_back(&cutOut);
-    solid = namedBooleanResult(cut, inputs);
-  }
+  // The cut-outs lie where the parts are at rest, so the cut is the same whatever their
+  // deflections: kept for the configuration (under a whole-model key, which any edit forgets),
+  // a further export at other deflections moves the parts and reuses it (0.8 s of the flaps
+  // file's main wing). A uID with a colon would make the key look like a component's.
+  const NamedShape solid = guests.empty() || key.find(':') != std::string::npos
+                               ? withCutOuts(configuration, uid, guests)
+                               : *configuration.cache().obtain<NamedShape>(key, [&] {
+                                   return std::make_shared<const NamedShape>(withCutOuts(configuration, uid, guests));
+                                 });
   const auto moving = posed.find(uid);
   return moving == posed.end() ? solid : transformedNamedShape(solid, moving->second.motion);
 }
