@@ -190,9 +190,12 @@ int lineMaterial(GltfFile& file) {
 void addLinesToGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary) {
   if (!hasLines(scene)) return;
   const std::filesystem::path file(path);
-  GltfFile gltf = !std::filesystem::exists(file) ? emptyGltf(scene)
-                  : binary                       ? readGlb(file, target)
-                                                 : readGltf(file, target);
+  GltfFile gltf;
+  try {
+    gltf = !std::filesystem::exists(file) ? emptyGltf(scene) : binary ? readGlb(file, target) : readGltf(file, target);
+  } catch (const Json::exception&) {
+    throw cannotWrite("glTF (the file written could not be read back)", target);
+  }
   std::optional<int> material;
   for (const SceneComponent& component : scene.components) {
     const auto lines = linesOf(component.shape.shape);
