@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from conftest import EXAMPLE, airshape, conformance_passed
+from conftest import EXAMPLE, airshape, conformance_passed, shared_path
 from independent_readers import gmsh_solids, gmsh_volumes, vtk_polydata
 
 with open(EXAMPLE) as example:
@@ -181,6 +181,47 @@ def test_the_wing_with_deflected_devices_exports_as_named_solids(tmp_path):
             "Spoiler/upper", "Flap/cut-out", "RS/upper"} <= faces
     box = ask_rectangular({"op": "control_surface_bounding_box", "uid": "Flap", "control_parameter": 1})[0]
     assert box["min"][2] == pytest.approx(-0.6 * math.sin(math.radians(20)), abs=1e-6)
+
+
+def test_the_wing_loses_the_union_of_devices_that_overlap(tmp_path):
+    # The spoiler made to reach xsi 0.8 overlaps the flap (aft of 0.7) over its span (eta 0.3 ..
+    # 0.6, 1.5 m): the wing loses the flap, the spoiler's upper half from 0.5 to 0.8, less their
+    # common upper half from 0.7 to 0.8, once. (Cut by both cut-outs as two tools at once, OCCT
+    # kept most of the flap.)
+    text = open(WITH_DEVICES).read()
+    spoiler = text.index('<spoiler uID="Spoiler">')
+    reaching = text[:spoiler] + text[spoiler:].replace("<xsi>0.65</xsi>", "<xsi>0.8</xsi>", 2)
+    path = tmp_path / "overlapping.xml"
+    path.write_text(reaching)
+    volumes = export_summary(airshape("export", str(path), "--deflect", "Flap=1,Spoiler=0.5", "--components", "Rect",
+                                      "-o", str(tmp_path / "deflected.brep")))
+    def upper_half(xi_from, xi_to):
+        return 1.5 * (section_area_aft(xi_from) - section_area_aft(xi_to)) / 2
+    flap, spoiler = 3.0 * section_area_aft(0.7), upper_half(0.5, 0.8)
+    assert volumes["Spoiler"] == pytest.approx(spoiler, abs=1e-4)
+    assert volumes["Rect"] == pytest.approx(1.0 - (flap + spoiler - upper_half(0.7, 0.8)), abs=2e-4)
+
+
+def test_spoilers_over_flaps_take_out_no_less_than_either_alone(tmp_path):
+    # CPACS_30_aircraft_flaps.xml's five spoilers overlap its two flaps. Cut by every device,
+    # the wing loses at least what the flaps, slats and aileron alone take and at least what the
+    # spoilers alone take, and at most both together. (Cut by them as eleven tools at once, OCCT
+    # kept 21.574 -> 22.986 m³: less than the flaps alone took out.)
+    source = shared_path("data", "cpacs", "CPACS_30_aircraft_flaps.xml")
+    prefix = "D150_VAMP_W1_CompSeg1_"
+    groups = {"all": "all=max",
+              "flaps": ",".join(f"{prefix}{d}=max" for d in ("innerFlap", "outerFlap", "aileron", "innerLED",
+                                                              "outerLED1", "outerLED2")),
+              "spoilers": ",".join(f"{prefix}Spoiler{k}=max" for k in range(4, 9))}
+    wing = {}
+    for name, poses in groups.items():
+        volumes = export_summary(airshape("export", source, "--deflect", poses, "--components", "D150_VAMP_W1", "-o",
+                                          str(tmp_path / f"{name}.brep")))
+        wing[name] = volumes["D150_VAMP_W1"]
+    clean, = [json.loads(line)["ok"] for line in airshape(
+        "query", source, stdin='{"op":"component_volume","uid":"D150_VAMP_W1"}\n').stdout.splitlines()]
+    assert wing["all"] < min(wing["flaps"], wing["spoilers"]) - 0.1
+    assert wing["all"] >= wing["flaps"] + wing["spoilers"] - clean - 1e-4
 
 
 def test_without_deflect_the_export_is_unchanged_and_bad_poses_are_one_line(tmp_path):
