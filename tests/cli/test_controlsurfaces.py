@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from conftest import EXAMPLE, airshape, conformance_passed, shared_path
+from conftest import EXAMPLE, SOURCE, airshape, conformance_passed, shared_path
 from independent_readers import gmsh_solids, gmsh_volumes, vtk_polydata
 
 with open(EXAMPLE) as example:
@@ -222,6 +222,19 @@ def test_spoilers_over_flaps_take_out_no_less_than_either_alone(tmp_path):
         "query", source, stdin='{"op":"component_volume","uid":"D150_VAMP_W1"}\n').stdout.splitlines()]
     assert wing["all"] < min(wing["flaps"], wing["spoilers"]) - 0.1
     assert wing["all"] >= wing["flaps"] + wing["spoilers"] - clean - 1e-4
+
+
+def test_all_deflects_the_devices_of_the_components_exported(tmp_path):
+    # The example airliner's devices are all on its main wing: exporting the tails with
+    # `all=max` writes the tails alone; a device named on its own is written wherever it lies.
+    airliner = os.path.join(SOURCE, "examples", "generic-airliner.xml")
+    def written(*arguments):
+        return set(export_summary(airshape("export", airliner, *arguments, "-o", str(tmp_path / "out.brep"),
+                                           "--force")))
+    assert written("--deflect", "all=max", "--components", "HTP,VTP") == {"HTP", "VTP"}
+    assert written("--deflect", "all=max", "--components", "Wing") == {
+        "Wing", "InnerFlap", "OuterFlap", "Aileron", "Slat", "Spoiler"}
+    assert written("--deflect", "all=max,InnerFlap=1", "--components", "HTP") == {"HTP", "InnerFlap"}
 
 
 def test_without_deflect_the_export_is_unchanged_and_bad_poses_are_one_line(tmp_path):

@@ -1,5 +1,6 @@
 #include "airshape/export/export_scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -44,7 +45,16 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
     if (configuration.shapes().find(component.nodeType) == nullptr) throw noShapeBuilt(uid, component.nodeType);
     wanted[static_cast<std::size_t>(index)] = true;
   }
-  for (const auto& [uid, component] : posed) wanted[static_cast<std::size_t>(graph.find(uid))] = true;
+  // Posed parts are written as solids of their own: those named in the poses, and with `all`
+  // those of the selected components (all of them when none is selected).
+  const auto selectedOrInSelected = [&](const PosedComponent& component) {
+    if (options.components.empty() || component.named) return true;
+    for (const std::string& uid : component.within)
+      if (std::find(options.components.begin(), options.components.end(), uid) != options.components.end()) return true;
+    return false;
+  };
+  for (const auto& [uid, component] : posed)
+    if (selectedOrInSelected(component)) wanted[static_cast<std::size_t>(graph.find(uid))] = true;
   std::vector<std::size_t> selected;
   for (std::size_t index : graph.buildOrder())
     if (wanted[index] && configuration.shapes().find(graph.components()[index].nodeType) != nullptr)

@@ -72,7 +72,7 @@ std::map<std::string, PosedComponent> ownPoses(const Configuration& configuratio
   auto pose = [&](const std::string& uid, const Pose& at) {
     const ComponentMotion& motion = *motionOf(configuration, uid);
     const double parameter = parameterOf(configuration, motion, uid, at);
-    posed[uid] = {uid, parameter, motion.at(configuration, uid, parameter), {}};
+    posed[uid] = {uid, parameter, motion.at(configuration, uid, parameter), {}, {}, at.uid != "all"};
   };
   for (const Pose& at : poses)
     if (at.uid == "all")
@@ -129,8 +129,9 @@ std::map<std::string, PosedComponent> resolvePoses(const Configuration& configur
   std::map<std::string, PosedComponent> posed = ownPoses(configuration, poses);
   std::map<std::string, gp_Trsf> own;
   for (const auto& [uid, component] : posed) own[uid] = component.motion;
-  for (auto& [uid, component] : posed)
-    for (const std::string& ancestor : ancestorsOf(configuration, uid)) {
+  for (auto& [uid, component] : posed) {
+    component.within = ancestorsOf(configuration, uid);
+    for (const std::string& ancestor : component.within) {
       const auto moving = own.find(ancestor);
       if (moving != own.end()) {
         component.motion.PreMultiply(moving->second);
@@ -139,6 +140,7 @@ std::map<std::string, PosedComponent> resolvePoses(const Configuration& configur
         component.host = ancestor;
       }
     }
+  }
   return posed;
 }
 

@@ -25,6 +25,10 @@ struct PosedComponent {
   /// The component that loses its cut-out: the nearest one it lies in that is posed too, or
   /// else the exported component it lies in (a flap's wing).
   std::string host;
+  /// The components it lies in, nearest first (a tab's flap, component segment, wing).
+  std::vector<std::string> within;
+  /// Whether the poses name it on its own (not only by `all`).
+  bool named = false;
 };
 
 /// The components the poses name, each with its control parameter, motion and host, by uID.
