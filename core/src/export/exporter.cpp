@@ -10,13 +10,13 @@
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 #include <Standard_Failure.hxx>
-#include <TopExp_Explorer.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/output_file.h"
 #include "airshape/viewer/page.h"
 #include "format_writers.h"
+#include "mesh_lines.h"
 #include "scene_mesh.h"
 
 namespace airshape::exporting {
@@ -49,8 +49,6 @@ bool isTriangulated(Format format) {
 /// STL holds triangles only; VTK PolyData, glTF (the viewer page's too) and OBJ hold lines as
 /// polylines, the CAD formats as curves.
 bool holdsLines(Format format) { return format != Format::Stl; }
-
-bool hasFaces(const TopoDS_Shape& shape) { return TopExp_Explorer(shape, TopAbs_FACE).More(); }
 
 void writeFormat(const ExportScene& scene, const std::string& path, Format format, const std::string& target) {
   switch (format) {

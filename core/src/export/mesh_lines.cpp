@@ -15,6 +15,13 @@ bool hasLines(const ExportScene& scene) {
   });
 }
 
+bool hasFaces(const TopoDS_Shape& shape) { return TopExp_Explorer(shape, TopAbs_FACE).More(); }
+
+bool hasFaces(const ExportScene& scene) {
+  return std::any_of(scene.components.begin(), scene.components.end(),
+                     [](const SceneComponent& component) { return hasFaces(component.shape.shape); });
+}
+
 std::vector<std::vector<gp_Pnt>> polylinesOf(const TopoDS_Shape& shape) {
   std::vector<std::vector<gp_Pnt>> lines;
   for (TopExp_Explorer edge(shape, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next()) {

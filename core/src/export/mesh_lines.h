@@ -12,6 +12,10 @@ namespace airshape::exporting {
 /// Whether a scene holds lines: edges outside faces (frames, stringers, beams).
 bool hasLines(const ExportScene& scene);
 
+/// Whether a shape has faces (not lines alone), and whether any component of a scene has.
+bool hasFaces(const TopoDS_Shape& shape);
+bool hasFaces(const ExportScene& scene);
+
 /// A shape's lines as the mesher left them (triangulate() gives each edge outside the faces
 /// its polyline): one list of points per edge, placed.
 std::vector<std::vector<gp_Pnt>> polylinesOf(const TopoDS_Shape& shape);

@@ -1,30 +1,16 @@
 // The triangulated formats: binary STL, glTF/GLB and OBJ (OCCT's writers; glTF and OBJ
 // through the XCAF document, one node per component, in xde_writers.cpp; their lines are
 // added by gltf_lines.cpp and obj_lines.cpp). VTK PolyData is vtp_writer.cpp.
-#include <algorithm>
-
 #include <StlAPI_Writer.hxx>
-#include <TopExp_Explorer.hxx>
 
 #include "airshape/error.h"
 #include "format_writers.h"
 #include "gltf_lines.h"
+#include "mesh_lines.h"
 #include "obj_lines.h"
 #include "xde_module.h"
 
 namespace airshape::exporting {
-
-namespace {
-
-/// OCCT's glTF and OBJ writers take the triangles of faces, and write nothing for a scene of
-/// lines alone; the lines follow (gltf_lines.h, obj_lines.h).
-bool anyFace(const ExportScene& scene) {
-  return std::any_of(scene.components.begin(), scene.components.end(), [](const SceneComponent& component) {
-    return TopExp_Explorer(component.shape.shape, TopAbs_FACE).More();
-  });
-}
-
-}  // namespace
 
 void writeStl(const ExportScene& scene, const std::string& path, const std::string& target) {
   StlAPI_Writer writer;
@@ -33,12 +19,14 @@ void writeStl(const ExportScene& scene, const std::string& path, const std::stri
 }
 
 void writeGltf(const ExportScene& scene, const std::string& path, const std::string& target, bool binary) {
-  if (anyFace(scene)) writeWithXcaf(binary ? "glb" : "gltf", scene, path, target);
+  // OCCT's writer takes the triangles of faces, and writes nothing for a scene of lines
+  // alone; the lines follow.
+  if (hasFaces(scene)) writeWithXcaf(binary ? "glb" : "gltf", scene, path, target);
   addLinesToGltf(scene, path, target, binary);
 }
 
 void writeObj(const ExportScene& scene, const std::string& path, const std::string& target) {
-  if (anyFace(scene)) writeWithXcaf("obj", scene, path, target);
+  if (hasFaces(scene)) writeWithXcaf("obj", scene, path, target);
   addLinesToObj(scene, path, target);
 }
 
