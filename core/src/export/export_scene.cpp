@@ -18,6 +18,7 @@
 #include "airshape/fused_shape.h"
 #include "airshape/graph/parallel_build.h"
 #include "airshape/model/symmetry.h"
+#include "airshape/parallel_for.h"
 #include "posed_components.h"
 #include "structural_model.h"
 
@@ -163,6 +164,29 @@ std::optional<NamedShape> detailedShape(const Configuration& configuration, cons
   return std::nullopt;
 }
 
+/// The selected components that host posed ones, each with its moving parts' cut-outs cut
+/// out (and posed itself, if it moves), keyed by uID. The cuts are independent Boolean
+/// operations: made on every core, so that a tail's cut runs beside the main wing's.
+std::map<std::string, NamedShape> cutHosts(const Configuration& configuration, const std::vector<std::size_t>& selected,
+                                           const std::vector<bool>& failed, const std::set<std::string>& hosts,
+                                           const std::map<std::string, PosedComponent>& posed,
+                                           const std::function<void(const std::string&)>& step) {
+  std::vector<std::string> uids;
+  for (std::size_t index : selected)
+    if (!failed[index] && hosts.count(configuration.components().components()[index].uid) > 0)
+      uids.push_back(configuration.components().components()[index].uid);
+  std::vector<NamedShape> shapes(uids.size());
+  std::mutex reporting;
+  parallelFor(uids.size(), [&](std::size_t index) {
+    shapes[index] = posedSolid(configuration, uids[index], posed);
+    const std::lock_guard<std::mutex> lock(reporting);
+    step("cut its moving parts out of " + uids[index]);
+  });
+  std::map<std::string, NamedShape> cut;
+  for (std::size_t index = 0; index < uids.size(); ++index) cut.emplace(uids[index], std::move(shapes[index]));
+  return cut;
+}
+
 std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const std::vector<std::size_t>& selected,
                                     const std::vector<bool>& failed, const std::map<std::string, PosedComponent>& posed,
                                     const ExportOptions& options, std::vector<std::string>& notes,
@@ -171,6 +195,7 @@ std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const st
   for (const auto& [uid, component] : posed) hosts.insert(component.host);
   std::set<std::string> changed = hosts;  // posed, or hosting a posed one
   for (const auto& [uid, component] : posed) changed.insert(uid);
+  const std::map<std::string, NamedShape> cut = cutHosts(configuration, selected, failed, hosts, posed, step);
   std::vector<SceneSolid> solids;
   for (std::size_t index : selected) {
     if (failed[index]) continue;
@@ -187,9 +212,10 @@ std::vector<SceneSolid> sceneSolids(const Configuration& configuration, const st
                           component.typeName});
       continue;
     }
-    const NamedShape shape =
-        asBuilt ? configuration.shapes().namedShapeOf(configuration, uid) : posedSolid(configuration, uid, posed);
-    if (hosts.count(uid) > 0) step("cut its moving parts out of " + uid);
+    const auto host = cut.find(uid);
+    const NamedShape shape = asBuilt             ? configuration.shapes().namedShapeOf(configuration, uid)
+                             : host != cut.end() ? host->second
+                                                 : posedSolid(configuration, uid, posed);
     solids.push_back({uid, shape, component.typeName});
     if (!options.mirror || !hasMirror(configuration, uid)) continue;
     const std::string plane = model::resolvedSymmetry(configuration, uid);
