@@ -53,10 +53,16 @@ Handle(Geom2d_BSplineCurve)
 }
 
 bool coversAllLines(const std::vector<CrossingPiece>& pieces) {
-  if (pieces.empty() || pieces.front().points.front().t > 1e-12 || pieces.back().points.back().t < 1.0 - 1e-12)
+  // The largest gap in t that counts as none, at the ends as between pieces. A crossing that
+  // begins on the seam of a skin all round (a frame's first ray through a fuselage face's seam)
+  // is found at the seam's start, held there for a few 1e-9 of t (within the patch's bounds'
+  // slack) while the crossing runs on from the seam's end: that piece, held at one place, is left
+  // out (piecesOf), and the first piece kept begins a few 1e-9 in.
+  constexpr double kNoGap = 1e-8;
+  if (pieces.empty() || pieces.front().points.front().t > kNoGap || pieces.back().points.back().t < 1.0 - kNoGap)
     return false;
   for (std::size_t k = 1; k < pieces.size(); ++k)
-    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > 1e-9) return false;
+    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > kNoGap) return false;
   return true;
 }
 

@@ -3,6 +3,12 @@
 // skin folds back over itself and the crossing is left to the Boolean operation.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <cmath>
+
 #include "airshape/geometry/bspline_patch.h"
 #include "airshape/geometry/ruled_crossing.h"
 #include "test_wing_skins.h"
@@ -62,6 +68,41 @@ TEST(RuledCrossing, LeavesOutLinesThatMeetTheSkinOnlyAtItsCorner) {
   const auto pieces = geometry::ruledCrossing(geometry::skinPatches(test::upperSkin())->patches, pastTheCorner, 1e-8);
   ASSERT_TRUE(pieces.has_value());
   EXPECT_TRUE(pieces->empty());
+}
+
+TEST(RuledCrossing, CoversAllLinesFromTheSeamOfASkinAllRound) {
+  // A skin all round (one face of a cylinder about z, its seam at x > 0) and rays from its axis
+  // turning from the seam the way its parameter runs back: as a frame's rays start on the seam
+  // of a fuselage's face. The first ray meets the skin at the seam's start and its end alike;
+  // the crossing must still cover every ray, the first too.
+  const Handle(Geom_Surface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 2.0);
+  const Handle(Geom_BSplineSurface) round =
+      GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(cylinder, 0.0, 2.0 * M_PI, 0.0, 1.0));
+  const TopoDS_Face skin = BRepBuilderAPI_MakeFace(round, 1e-9).Face();
+  const geometry::RuledLines backFromTheSeam{gp_Pnt(0, 0, 0.5), gp_Pnt(0, 0, 0.5), gp_Vec(1, 0, 0), gp_Vec(0, -1, 0),
+                                             true};
+  const auto pieces = geometry::ruledCrossing(geometry::skinPatches(skin)->patches, backFromTheSeam, 1e-9);
+  ASSERT_TRUE(pieces.has_value());
+  ASSERT_FALSE(pieces->empty());
+  EXPECT_TRUE(geometry::coversAllLines(*pieces));
+  EXPECT_NEAR(pieces->front().points.front().point.Distance(gp_Pnt(2, 0, 0.5)), 0.0, 1e-7);
+  EXPECT_NEAR(pieces->back().points.back().point.Distance(gp_Pnt(0, -2, 0.5)), 0.0, 1e-7);
+}
+
+TEST(RuledCrossing, CoversAllLinesOnlyWithoutGapsBeyondRounding) {
+  auto piece = [](double from, double to) {
+    geometry::CrossingPiece made{0, {}, nullptr};
+    made.points.resize(2);
+    made.points[0].t = from;
+    made.points[1].t = to;
+    return made;
+  };
+  EXPECT_TRUE(geometry::coversAllLines({piece(0.0, 0.5), piece(0.5, 1.0)}));
+  EXPECT_TRUE(geometry::coversAllLines({piece(5e-9, 0.5), piece(0.5 + 5e-9, 1.0 - 5e-9)}));
+  EXPECT_FALSE(geometry::coversAllLines({piece(1e-6, 1.0)}));
+  EXPECT_FALSE(geometry::coversAllLines({piece(0.0, 0.4), piece(0.5, 1.0)}));
+  EXPECT_FALSE(geometry::coversAllLines({piece(0.0, 0.999)}));
+  EXPECT_FALSE(geometry::coversAllLines({}));
 }
 
 }  // namespace
