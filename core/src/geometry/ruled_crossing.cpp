@@ -33,6 +33,32 @@ PatchPoint ontoBound(const Patch& patch, PatchPoint point, double tolerance) {
   return point;
 }
 
+namespace {
+
+/// The same place of a patch closed on itself (a skin all round) from the other end of its
+/// parameters: for a point on the seam, the point at the opposite bound where that lies within
+/// the tolerance of it (none, one, or one across each parameter).
+std::vector<PatchPoint> acrossSeam(const Patch& patch, const PatchPoint& point, double tolerance) {
+  std::vector<PatchPoint> twins;
+  auto across = [&](double PatchPoint::*parameter, double low, double high) {
+    PatchPoint twin = point;
+    const double slack = 1e-4 * (high - low);  // as ontoBound's
+    if (std::abs(point.*parameter - low) <= slack)
+      twin.*parameter = high;
+    else if (std::abs(point.*parameter - high) <= slack)
+      twin.*parameter = low;
+    else
+      return;
+    twin.point = patch.surface->Value(twin.u, twin.v);
+    if (twin.point.Distance(point.point) <= tolerance) twins.push_back(twin);
+  };
+  across(&PatchPoint::u, patch.u0, patch.u1);
+  across(&PatchPoint::v, patch.v0, patch.v1);
+  return twins;
+}
+
+}  // namespace
+
 Handle(Geom2d_BSplineCurve)
     curveThroughPoints(const std::vector<gp_Pnt2d>& points, const std::vector<double>& parameters) {
   const int n = static_cast<int>(points.size());
@@ -53,16 +79,10 @@ Handle(Geom2d_BSplineCurve)
 }
 
 bool coversAllLines(const std::vector<CrossingPiece>& pieces) {
-  // The largest gap in t that counts as none, at the ends as between pieces. A crossing that
-  // begins on the seam of a skin all round (a frame's first ray through a fuselage face's seam)
-  // is found at the seam's start, held there for a few 1e-9 of t (within the patch's bounds'
-  // slack) while the crossing runs on from the seam's end: that piece, held at one place, is left
-  // out (piecesOf), and the first piece kept begins a few 1e-9 in.
-  constexpr double kNoGap = 1e-8;
-  if (pieces.empty() || pieces.front().points.front().t > kNoGap || pieces.back().points.back().t < 1.0 - kNoGap)
+  if (pieces.empty() || pieces.front().points.front().t > 1e-12 || pieces.back().points.back().t < 1.0 - 1e-12)
     return false;
   for (std::size_t k = 1; k < pieces.size(); ++k)
-    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > kNoGap) return false;
+    if (pieces[k].points.front().t - pieces[k - 1].points.back().t > 1e-9) return false;
   return true;
 }
 
@@ -212,6 +232,11 @@ std::optional<Hit> entry(const Side<Lines>& side, double lambda, double ahead, d
     else if (base.Distance(hit.at.point) < side.ignoredBeyond() * reach + tolerance)
       throw FoldedSkin();
   hits = atNearest;
+  // A point on the seam of a patch closed on itself is as much at one end of its parameters as
+  // at the other; the crossing may go on from either.
+  for (const Hit& hit : atNearest)
+    for (const PatchPoint& twin : acrossSeam(side.patch(hit.patch), hit.at, tolerance))
+      hits.push_back({hit.patch, twin});
   for (const Hit& hit : hits)
     if (side.on(hit.patch, ahead, hit.at)) return Hit{hit.patch, ontoBound(side.patch(hit.patch), hit.at, tolerance)};
   return Hit{hits.front().patch, ontoBound(side.patch(hits.front().patch), hits.front().at, tolerance)};

@@ -89,7 +89,7 @@ TEST(RuledCrossing, CoversAllLinesFromTheSeamOfASkinAllRound) {
   EXPECT_NEAR(pieces->back().points.back().point.Distance(gp_Pnt(0, -2, 0.5)), 0.0, 1e-7);
 }
 
-TEST(RuledCrossing, CoversAllLinesOnlyWithoutGapsBeyondRounding) {
+TEST(RuledCrossing, CoversAllLinesFromTheFirstToTheLastWithoutGapsBeyondRounding) {
   auto piece = [](double from, double to) {
     geometry::CrossingPiece made{0, {}, nullptr};
     made.points.resize(2);
@@ -98,9 +98,9 @@ TEST(RuledCrossing, CoversAllLinesOnlyWithoutGapsBeyondRounding) {
     return made;
   };
   EXPECT_TRUE(geometry::coversAllLines({piece(0.0, 0.5), piece(0.5, 1.0)}));
-  EXPECT_TRUE(geometry::coversAllLines({piece(5e-9, 0.5), piece(0.5 + 5e-9, 1.0 - 5e-9)}));
-  EXPECT_FALSE(geometry::coversAllLines({piece(1e-6, 1.0)}));
+  EXPECT_TRUE(geometry::coversAllLines({piece(0.0, 0.5), piece(0.5 + 5e-10, 1.0)}));
   EXPECT_FALSE(geometry::coversAllLines({piece(0.0, 0.4), piece(0.5, 1.0)}));
+  EXPECT_FALSE(geometry::coversAllLines({piece(1e-9, 1.0)}));
   EXPECT_FALSE(geometry::coversAllLines({piece(0.0, 0.999)}));
   EXPECT_FALSE(geometry::coversAllLines({}));
 }
