@@ -465,3 +465,7 @@ def test_ducts_are_lofted_as_fuselages_are(tmp_path):
     empty, wrong = (json.loads(line)["error"] for line in airshape("query", str(path), stdin=queries).stdout.splitlines())
     assert "ductAssembly[2]: the duct assembly names no ducts" in empty
     assert "ductAssembly[3]/ductUIDs: 'Hull' names no duct" in wrong
+    # An export writes each duct once, through the ducts, not again through their assemblies.
+    exported = airshape("export", str(path), "-o", str(tmp_path / "ducts.brep"))
+    assert exported.returncode == 0, exported.stderr
+    assert "Pipe " in exported.stdout and "Further " in exported.stdout and "Both " not in exported.stdout

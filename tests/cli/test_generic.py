@@ -108,6 +108,33 @@ def test_deck_components_in_their_deck_in_the_fuselage(tmp_path):
     assert kinds == [{"uid": "Seat", "type": "deck_component"}]
 
 
+def exported_names(result):
+    """The component names of an export's summary (after its header line)."""
+    lines = result.stdout.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("component"))
+    return [line.split()[0] for line in lines[start + 1:] if not line.startswith("total time")]
+
+
+def test_an_export_writes_a_systems_and_a_decks_components_once(tmp_path):
+    path = tmp_path / "systems.xml"
+    write_aircraft(path)
+    text = path.read_text()
+    for broken in (component("Wrong", "Body"), component("Weight", "MassOnly")):
+        text = text.replace(broken, "")
+    path.write_text(text)
+    everything = airshape("export", str(path), "-o", str(tmp_path / "all.brep"))
+    assert everything.returncode == 0, everything.stderr
+    names = exported_names(everything)
+    # The system and the deck are compounds of their components: written through those only.
+    assert "Plant" not in names and "Deck" not in names
+    assert all(uid in names for uid in ("Body", "Box", "Pyramid", "Round", "Egg", "Ring", "Seat"))
+    assert len(names) == len(set(names))
+    # Named, a system is written as one compound.
+    named = airshape("export", str(path), "--components", "Plant", "-o", str(tmp_path / "plant.brep"))
+    assert named.returncode == 0, named.stderr
+    assert exported_names(named) == ["Plant"]
+
+
 def test_an_external_step_object_placed_by_its_transformation(tmp_path):
     source = tmp_path / "systems.xml"
     write_aircraft(source)

@@ -35,10 +35,13 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<bool> wanted(graph.components().size(), false);
   // Every component on its own; parts (segments) and what lies inside its parent (devices at
-  // rest) are in their parents already.
+  // rest) are in their parents already, and groups (systems, decks, duct assemblies) in their
+  // components.
   if (options.components.empty())
-    for (std::size_t index = 0; index < wanted.size(); ++index)
-      wanted[index] = !graph.components()[index].part && !graph.components()[index].insideParent;
+    for (std::size_t index = 0; index < wanted.size(); ++index) {
+      const graph::Component& component = graph.components()[index];
+      wanted[index] = !component.part && !component.insideParent && !component.group;
+    }
   for (const std::string& uid : options.components) {
     const long index = graph.find(uid);
     if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");

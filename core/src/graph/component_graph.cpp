@@ -176,6 +176,8 @@ std::vector<ComponentLocation> catalogue() {
   addModelTanks(locations);
   for (ComponentLocation& location : locations) {
     location.listed = referenceRegisters(location);
+    location.group = location.nodeType == "genericSystem" || location.nodeType == "deck" ||
+                     location.pathInModel == "ducts/ductAssembly";
     location.inConfigurationBox = location.pathInModel == "fuselages/fuselage" ||
                                   location.pathInModel == "wings/wing" || location.pathInModel == "rotors/rotor" ||
                                   location.pathInModel == "enginePylons/enginePylon" ||
@@ -214,6 +216,7 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
   component.structure = location.structure;
   component.inConfigurationBox = location.inConfigurationBox;
   component.listed = location.listed;
+  component.group = location.group;
   if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
   component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
   component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);

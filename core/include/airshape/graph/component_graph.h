@@ -33,6 +33,10 @@ struct ComponentLocation {
   /// §1). Spoilers, wing fuel tanks, frames, stringers and a few more are built and measured
   /// like any component, but the reference has no component for them.
   bool listed = true;
+  /// A compound of components that are exported on their own (a system's and a deck's
+  /// components, a duct assembly's ducts): built, measured and listed like any component, but
+  /// exported only when named, so that an export writes no solid twice.
+  bool group = false;
 };
 
 /// The node type of the model element itself (type `plane`), which has no shape.
@@ -54,6 +58,7 @@ struct Component {
   bool structure = false;           ///< ComponentLocation::structure
   bool inConfigurationBox = false;  ///< ComponentLocation::inConfigurationBox
   bool listed = true;               ///< ComponentLocation::listed
+  bool group = false;               ///< ComponentLocation::group
   std::string parentUid;            ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
