@@ -16,12 +16,18 @@
 
 namespace airshape::geometry {
 
+namespace {
+/// How close to a patch's bound, as a share of its parameter range, a parameter may be to be
+/// taken at the bound (where the point there lies within the tolerance).
+constexpr double kNearBound = 1e-4;
+}  // namespace
+
 /// Moves a point lying within the tolerance of a patch's bound onto it, so that a curve ending
 /// there ends on the face's edge.
 PatchPoint ontoBound(const Patch& patch, PatchPoint point, double tolerance) {
   auto snap = [&](double& parameter, double low, double high) {
     for (const double bound : {low, high}) {
-      if (std::abs(parameter - bound) > 1e-4 * (high - low)) continue;
+      if (std::abs(parameter - bound) > kNearBound * (high - low)) continue;
       const double kept = parameter;
       parameter = bound;
       if (patch.surface->Value(point.u, point.v).Distance(point.point) > tolerance) parameter = kept;
@@ -42,7 +48,7 @@ std::vector<PatchPoint> acrossSeam(const Patch& patch, const PatchPoint& point, 
   std::vector<PatchPoint> twins;
   auto across = [&](double PatchPoint::*parameter, double low, double high) {
     PatchPoint twin = point;
-    const double slack = 1e-4 * (high - low);  // as ontoBound's
+    const double slack = kNearBound * (high - low);
     if (std::abs(point.*parameter - low) <= slack)
       twin.*parameter = high;
     else if (std::abs(point.*parameter - high) <= slack)
