@@ -223,3 +223,25 @@ def test_an_airfoil_that_zig_zags_at_its_leading_edge_is_lofted_with_a_warning(t
     swapped.write_text(AIRCRAFT.replace(";0.0599884;", ";-0.09;"))
     refused = airshape("build", str(swapped))
     assert refused.returncode == 1 and "more than the tolerated 1e-05): points out of order?" in refused.stdout
+
+
+def test_integers_written_as_decimals_are_read_as_integers(tmp_path):
+    # One CPACS editor writes every number as a decimal: <numberOfRibs>12.000000</numberOfRibs>.
+    airliner = os.path.join(os.path.dirname(EXAMPLE), "generic-airliner.xml")
+    with open(airliner) as source:
+        text = source.read()
+    assert "<numberOfRibs>12</numberOfRibs>" in text and "<ribNumber>10</ribNumber>" in text
+    decimals = tmp_path / "decimals.xml"
+    decimals.write_text(text.replace("<numberOfRibs>12</numberOfRibs>", "<numberOfRibs>12.000000</numberOfRibs>")
+                        .replace("<ribNumber>10</ribNumber>", "<ribNumber> 1.0e1 </ribNumber>"))
+    query = '{"op":"component_volume","uid":"Wing_OuterTank"}\n{"op":"component_surface_area","uid":"Wing_Ribs"}\n'
+    expected, got = airshape("query", airliner, stdin=query), airshape("query", str(decimals), stdin=query)
+    assert got.returncode == 0 and got.stderr == "", got.stderr  # read as integers, without a warning
+    assert got.stdout == expected.stdout and '"ok"' in got.stdout, (got.stdout, expected.stdout)
+    assert airshape("validate", str(decimals)).returncode == 0
+    # A decimal that is no integer stays an error naming its path.
+    fraction = tmp_path / "fraction.xml"
+    fraction.write_text(text.replace("<numberOfRibs>12</numberOfRibs>", "<numberOfRibs>12.5</numberOfRibs>"))
+    refused = airshape("validate", str(fraction))
+    assert refused.returncode == 1
+    assert re.search(r"ribsPositioning/numberOfRibs: '12\.5' is not an integer", refused.stdout), refused.stdout

@@ -35,6 +35,15 @@ TEST(ValueCodec, IntegerAndBoolean) {
   EXPECT_FALSE(IntegerCodec::parse("42", integer));
   EXPECT_EQ(integer, 42);
   EXPECT_TRUE(IntegerCodec::parse("4.2", integer));
+  EXPECT_EQ(integer, 42) << "a failed parse leaves the value";
+  EXPECT_FALSE(IntegerCodec::parse(" 1.000000 ", integer)) << "an integral decimal, as some editors write";
+  EXPECT_EQ(integer, 1);
+  EXPECT_FALSE(IntegerCodec::parse("-3.0e0", integer));
+  EXPECT_EQ(integer, -3);
+  EXPECT_TRUE(IntegerCodec::parse("1.5", integer));
+  EXPECT_TRUE(IntegerCodec::parse("1e300", integer)) << "beyond any integer";
+  EXPECT_TRUE(IntegerCodec::parse("NaN", integer));
+  EXPECT_EQ(integer, -3);
   bool flag = false;
   EXPECT_FALSE(BooleanCodec::parse("1", flag));
   EXPECT_TRUE(flag);

@@ -39,6 +39,17 @@ ParseError parseDouble(std::string_view text, double& out) {
   return std::nullopt;
 }
 
+// Some CPACS editors write every number as a decimal ("1.000000" for a rib number); an integral
+// decimal means that integer, as a reader of the file would take it.
+std::optional<long long> integralDecimal(std::string_view number) {
+  double value = 0.0;
+  const auto result = std::from_chars(number.data(), number.data() + number.size(), value);
+  if (number.empty() || result.ec != std::errc() || result.ptr != number.data() + number.size()) return std::nullopt;
+  constexpr double kLimit = 9.0e18;  // within long long, where every integral double is exact
+  if (!std::isfinite(value) || std::fabs(value) > kLimit || value != std::trunc(value)) return std::nullopt;
+  return static_cast<long long>(value);
+}
+
 }  // namespace
 
 std::string quoted(const std::string& text) {
@@ -86,10 +97,15 @@ ParseError IntegerCodec::parse(const std::string& text, Value& out) {
   const std::string_view number = withoutPlus(trimmed(text));
   long long value = 0;
   const auto result = std::from_chars(number.data(), number.data() + number.size(), value);
-  if (number.empty() || result.ec != std::errc() || result.ptr != number.data() + number.size())
-    return quoted(text) + " is not an integer";
-  out = value;
-  return std::nullopt;
+  if (!number.empty() && result.ec == std::errc() && result.ptr == number.data() + number.size()) {
+    out = value;
+    return std::nullopt;
+  }
+  if (const auto integral = integralDecimal(number)) {
+    out = *integral;
+    return std::nullopt;
+  }
+  return quoted(text) + " is not an integer";
 }
 
 std::string IntegerCodec::format(const Value& value) { return std::to_string(value); }
