@@ -79,6 +79,8 @@ BuildReport buildOne(const Configuration& configuration, const plugin::PluginHos
   if (configuration.shapes().find(component.nodeType) == nullptr) {
     const std::string plugin = host.pluginFor(component.nodeType);
     if (plugin.empty()) return {line.str() + "not supported: no loaded plugin builds " + component.nodeType, true};
+    if (const std::string* why = configuration.shapes().declined(component.nodeType))
+      return {line.str() + "not built: " + *why + " (plugin " + plugin + ")", true};
     return {line.str() + "no builder yet for " + component.typeName + " (plugin " + plugin + ")", true};
   }
   const auto start = std::chrono::steady_clock::now();

@@ -181,8 +181,8 @@ int runExport(const Arguments& arguments, plugin::PluginHost& host) {
   for (const std::string& leftOut : scene.leftOut) std::cerr << "export: left out " << leftOut << '\n';
   for (const std::string& note : scene.notes) std::cerr << "export: note: " << note << '\n';
   if (const std::size_t unbuilt = withoutBuilder(configuration); unbuilt > 0 && !options.quiet)
-    std::cerr << "export: " << unbuilt << " geometric elements have no builder yet and are not written ("
-              << "`airshape build " << options.input << "` lists them)\n";
+    std::cerr << "export: " << unbuilt << " geometric elements are not built and not written (`airshape build "
+              << options.input << "` says why for each)\n";
   printGeometryWarnings(configuration);
   if (const std::optional<std::string> why = nothingToWrite(scene, options)) {
     std::cerr << "export: " << *why << "; no file written\n";

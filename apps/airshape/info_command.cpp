@@ -8,13 +8,15 @@ namespace airshape::cli {
 
 namespace {
 
-/// Who builds a component: its plugin, that plugin with "(no builder yet)", "none loaded", or
-/// for the model, nobody (it has no shape).
+/// Who builds a component: its plugin, that plugin with "(no builder yet)" or "(not built: why)",
+/// "none loaded", or for the model, nobody (it has no shape).
 std::string builderOf(const graph::Component& component, const plugin::PluginHost& host) {
   if (component.nodeType == graph::kModelNodeType) return "- (the model: no shape)";
   const std::string plugin = host.pluginFor(component.nodeType);
   if (plugin.empty()) return "none loaded";
-  return host.shapes().find(component.nodeType) != nullptr ? plugin : plugin + " (no builder yet)";
+  if (host.shapes().find(component.nodeType) != nullptr) return plugin;
+  if (const std::string* why = host.shapes().declined(component.nodeType)) return plugin + " (not built: " + *why + ")";
+  return plugin + " (no builder yet)";
 }
 
 }  // namespace

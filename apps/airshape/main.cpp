@@ -28,7 +28,7 @@ const std::map<std::string, Command>& commands() {
        {runInfo, "airshape info FILE",
         "Prints the CPACS version and the geometric elements of every model in build order:\n"
         "each one's component type, uID, parent, model (after the first) and the plugin\n"
-        "that builds it (or 'no builder yet', or 'none loaded')."}},
+        "that builds it (or 'no builder yet', 'not built: <why>', or 'none loaded')."}},
       {"query",
        {runQuery, "airshape query FILE",
         "Answers JSON queries, one per line on stdin, one answer per line on\n"
@@ -46,7 +46,8 @@ const std::map<std::string, Command>& commands() {
         "Builds the solid of every component of every model that a plugin builds, in build\n"
         "order, and checks it (BRepCheck); prints one line per geometric element: validity,\n"
         "volume and time, what BRepCheck found in an invalid solid, why it failed, or\n"
-        "'no builder yet for <type> (plugin <name>)' / 'not supported: ...'. Warnings of\n"
+        "'no builder yet for <type> (plugin <name>)' / 'not built: <why>' / 'not supported: ...'.\n"
+        "Warnings of "
         "building go to stderr. Exit status 1 if any fails or is invalid, 0 otherwise (also\n"
         "when there is nothing to build), 2 when the file cannot be used."}},
       {"export",

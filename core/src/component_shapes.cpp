@@ -14,7 +14,7 @@ const NamedShape& ComponentShapes::namedShapeOf(const Configuration& configurati
   if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
   const std::string& nodeType = configuration.components().components()[static_cast<std::size_t>(index)].nodeType;
   const auto builder = builders_.find(nodeType);
-  if (builder == builders_.end()) throw noShapeBuilt(uid, nodeType);
+  if (builder == builders_.end()) throw noShapeBuilt(uid, nodeType, declined(nodeType));
   return *configuration.cache().obtain<NamedShape>(
       "shape:" + uid, [&] { return std::make_shared<const NamedShape>(builder->second(configuration, uid)); });
 }
@@ -28,9 +28,11 @@ const NamedShape& ComponentShapes::mirroredShapeOf(const Configuration& configur
   });
 }
 
-Error noShapeBuilt(const std::string& uid, const std::string& nodeType) {
+Error noShapeBuilt(const std::string& uid, const std::string& nodeType, const std::string* declinedBecause) {
   if (nodeType == graph::kModelNodeType)
     return Error(ErrorCode::InvalidArgument, "'" + uid + "' is the model (type plane): it has no shape");
+  if (declinedBecause != nullptr)
+    return Error(ErrorCode::NotImplemented, "'" + uid + "' is not built: " + *declinedBecause);
   return Error(ErrorCode::NotImplemented, "no builder yet for " + nodeType);
 }
 

@@ -56,7 +56,8 @@ def test_every_component_builds_or_fails_clearly(path):
     for line in result.stdout.splitlines()[1:]:
         if line.startswith(path + ": nothing to build: "):
             continue
-        assert "solid" in line or "faces" in line or "lines" in line or "no builder yet for" in line or "not supported: " in line or "FAILED" in line, line
+        assert "solid" in line or "faces" in line or "lines" in line or "no builder yet for" in line or "not built: " in line \
+            or "not supported: " in line or "FAILED" in line, line
         if "FAILED" in line:
             assert any(known in line for known in KNOWN), line
         known_invalid = any(path.endswith(name) and line.split()[1:2] == [uid] for name, uid in KNOWN_INVALID)

@@ -106,7 +106,7 @@ def test_every_geometric_element_is_listed_with_its_type_and_plugin(with_element
                  "generic_system Battery  parent: -", "system_component Cell  parent: Battery"):
         assert line in info.stdout, (line, info.stdout)
     assert "control_surface Flap  parent: MainWing_CS  plugin: controlsurfaces\n" in info.stdout
-    assert "plugin: none loaded" in info.stdout  # landing gear: no built-in plugin claims it
+    assert "landing_gear NoseGear  parent: Fuselage  plugin: landinggear (not built: " in info.stdout
     assert "names no geometric component" not in info.stderr  # a device's parentUID names its component segment
 
 
@@ -121,7 +121,7 @@ def test_build_says_for_every_element_what_became_of_it(with_elements):
     assert "spoiler[1]: the device has no outerShape with an inner and an outer border" in said["Spoiler"]
     assert "sparSegment[1]/sparPositionUIDs: a spar segment needs at least two spar positions" in said["FrontSpar"]
     assert "none of its components has a shape: no shape" in said["Battery"]  # "Cell" names no element
-    assert "not supported: no loaded plugin builds landingGear" in said["NoseGear"]
+    assert "not built: CPACS 3.5 gives its struts no frame" in said["NoseGear"]
 
 
 NOTHING = AIRCRAFT.replace(AIRCRAFT[AIRCRAFT.index("        <fuselages>"):AIRCRAFT.index("      </model>")], "")

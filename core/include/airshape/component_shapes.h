@@ -41,6 +41,15 @@ class ComponentShapes {
     return entry == builders_.end() ? nullptr : &entry->second;
   }
 
+  /// A node type its plugin knowingly leaves unbuilt, and why (one line: "the schema gives ...").
+  /// `build` and `info` say it for each such element; asking for its shape is an Error saying it.
+  void decline(const std::string& nodeType, std::string reason) { declined_[nodeType] = std::move(reason); }
+  /// Why a node type is left unbuilt, or nullptr when it is not declined.
+  const std::string* declined(const std::string& nodeType) const {
+    const auto entry = declined_.find(nodeType);
+    return entry == declined_.end() ? nullptr : &entry->second;
+  }
+
   /// A detailed shape for components whose shape is a simplification: frames and stringers
   /// are lines, and their detailed shape the profile swept along the line. Exports ask for it
   /// (ExportOptions::profiles); queries always measure the shape `add` builds.
@@ -77,10 +86,12 @@ class ComponentShapes {
   std::map<std::string, ShapeBuilder> builders_;
   std::map<std::string, ShapeBuilder> detailedBuilders_;
   std::map<std::string, ComponentMotion> motions_;
+  std::map<std::string, std::string> declined_;
 };
 
 /// Why a component of this node type has no shape to give: the model (the plane itself) has
-/// none; a type no loaded plugin builds says so. The Error to throw where a shape is asked for.
-Error noShapeBuilt(const std::string& uid, const std::string& nodeType);
+/// none; a type its plugin declines says why; a type no loaded plugin builds says so. The Error
+/// to throw where a shape is asked for.
+Error noShapeBuilt(const std::string& uid, const std::string& nodeType, const std::string* declinedBecause = nullptr);
 
 }  // namespace airshape

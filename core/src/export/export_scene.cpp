@@ -46,7 +46,8 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
     const long index = graph.find(uid);
     if (index < 0) throw Error(ErrorCode::InvalidArgument, "no geometric component with uID '" + uid + "'");
     const graph::Component& component = graph.components()[static_cast<std::size_t>(index)];
-    if (configuration.shapes().find(component.nodeType) == nullptr) throw noShapeBuilt(uid, component.nodeType);
+    if (configuration.shapes().find(component.nodeType) == nullptr)
+      throw noShapeBuilt(uid, component.nodeType, configuration.shapes().declined(component.nodeType));
     wanted[static_cast<std::size_t>(index)] = true;
   }
   // Posed parts are written as solids of their own: those named in the poses, and with `all`

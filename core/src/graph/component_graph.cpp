@@ -167,6 +167,10 @@ std::vector<ComponentLocation> catalogue() {
       {"ductSegment", "ducts/duct/segments/segment", "fuselage_segment", true},
       {"genericGeometryComponent", "genericGeometryComponents/genericGeometryComponent", "external_object"},
       {"landingGear", "landingGears/landingGear", "landing_gear"},
+      // A rotorcraft's gears (CPACS 3.5 rotorcraftModelType), kind by kind.
+      {"landingGear", "landingGear/noseGears/noseGear", "landing_gear"},
+      {"landingGear", "landingGear/mainGears/mainGear", "landing_gear"},
+      {"landingGear", "landingGear/skidGears/skidGear", "landing_gear"},
       {"genericSystem", "systems/genericSystems/genericSystem", "generic_system"},
       {"systemComponent", "systems/genericSystems/genericSystem/components/component", "system_component"},
   };

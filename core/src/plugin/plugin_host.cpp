@@ -220,6 +220,7 @@ void PluginHost::registerPlugin(LoadedPlugin loaded) {
     if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
     if (const ShapeBuilder* detailed = offered.findDetailed(type.name)) shapes_.addDetailed(type.name, *detailed);
     if (const ComponentMotion* motion = offered.findMotion(type.name)) shapes_.addMotion(type.name, *motion);
+    if (const std::string* why = offered.declined(type.name)) shapes_.decline(type.name, *why);
   }
   plugins_.push_back(std::move(loaded));
 }
