@@ -142,9 +142,11 @@ std::optional<std::string> nothingToBuild(const Configuration& configuration) {
 
 }  // namespace
 
-int runBuild(const Arguments& arguments, plugin::PluginHost& host) {
+int runBuild(const Arguments& given, plugin::PluginHost& host) {
+  Arguments arguments = given;
+  const std::vector<std::string> options = takeOptionFlags(arguments, host);
   const std::string path = singleFileArgument(arguments, "build");
-  const Configuration configuration = openConfiguration(path, host);
+  const Configuration configuration = openConfiguration({path, options}, host);
   const graph::ComponentGraph& graph = configuration.components();
   const std::vector<std::size_t> order = builtOnTheirOwn(graph);
   std::cout << path << ": building " << order.size() << " components\n";

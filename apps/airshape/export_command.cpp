@@ -170,11 +170,13 @@ std::optional<std::string> nothingToWrite(const exporting::ExportScene& scene, c
 
 }  // namespace
 
-int runExport(const Arguments& arguments, plugin::PluginHost& host) {
+int runExport(const Arguments& given, plugin::PluginHost& host) {
+  Arguments arguments = given;
+  const std::vector<std::string> buildOptions = takeOptionFlags(arguments, host);
   ExportCommandOptions options = parseExportOptions(arguments);
   checkOutputs(options);
   const Clock::time_point start = Clock::now();
-  const Configuration configuration = openConfiguration(options.input, host);
+  const Configuration configuration = openConfiguration({options.input, buildOptions}, host);
   if (!options.quiet) options.exportOptions.progress = printProgress;
   options.exportOptions.skipFailed = true;  // each failure is said; the exit status tells
   const exporting::ExportScene scene = exporting::buildScene(configuration, options.exportOptions);

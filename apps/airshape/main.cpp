@@ -12,6 +12,7 @@
 #include "airshape/plugin/plugin_host.h"
 #include "airshape/xml/read_ahead.h"
 #include "commands.h"
+#include "open_configuration.h"
 
 namespace airshape::cli {
 namespace {
@@ -30,7 +31,7 @@ const std::map<std::string, Command>& commands() {
         "each one's component type, uID, parent, model (after the first) and the plugin\n"
         "that builds it (or 'no builder yet', 'not built: <why>', or 'none loaded')."}},
       {"query",
-       {runQuery, "airshape query FILE",
+       {runQuery, "airshape query FILE [--duct-cutouts]",
         "Answers JSON queries, one per line on stdin, one answer per line on\n"
         "stdout: {\"ok\": result} or {\"error\": message}. See docs/query.md."}},
       {"validate",
@@ -42,7 +43,7 @@ const std::map<std::string, Command>& commands() {
         "Loads IN into the model and writes it back, every node preserved. OUT is written\n"
         "atomically; an existing OUT is replaced only with --force, IN only with --in-place."}},
       {"build",
-       {runBuild, "airshape build FILE",
+       {runBuild, "airshape build FILE [--duct-cutouts]",
         "Builds the solid of every component of every model that a plugin builds, in build\n"
         "order, and checks it (BRepCheck); prints one line per geometric element: validity,\n"
         "volume and time, what BRepCheck found in an invalid solid, why it failed, or\n"
@@ -54,7 +55,7 @@ const std::map<std::string, Command>& commands() {
        {runExportModule,
         "airshape export FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--fused]\n"
         "                 [--deflect UID=P[,UID=P...]] [--structure] [--profiles]\n"
-        "                 [--deflection LINEAR[,ANGULAR]] [--force] [--quiet]",
+        "                 [--deflection LINEAR[,ANGULAR]] [--duct-cutouts] [--force] [--quiet]",
         "Builds the components and writes them, in the format each OUT's extension names:\n"
         "  .step .stp   STEP AP214, an assembly with one product per component (named by uID),\n"
         "               face names as STEP names            .iges .igs  IGES, names and levels\n"
@@ -90,7 +91,7 @@ const std::map<std::string, Command>& commands() {
         "how far profiles and guides are apart where they cross; with --report also how far\n"
         "the input curves and crossings lie from the surface (sampled: several times slower)."}},
       {"view",
-       {runViewModule, "airshape view FILE [--port P] [--no-browser]",
+       {runViewModule, "airshape view FILE [--port P] [--no-browser] [--duct-cutouts]",
         "Serves the aircraft to a browser on 127.0.0.1 (a free port unless --port; the address\n"
         "is printed on stdout) and opens it in the desktop's browser unless --no-browser: the\n"
         "aircraft shaded, orbit/pan/zoom, the component tree (click: highlight and measures;\n"
@@ -112,6 +113,11 @@ void printUsage(std::ostream& out) {
          "failed), 2 the input or the arguments cannot be used.\n";
 }
 
+/// Whether a command opens a file to build from it, and so takes the plugins' build options.
+bool takesBuildOptions(const std::string& command) {
+  return command == "build" || command == "export" || command == "view" || command == "query";
+}
+
 int runHelp(const Arguments& arguments) {
   if (arguments.empty()) {
     printUsage(std::cout);
@@ -120,6 +126,12 @@ int runHelp(const Arguments& arguments) {
   const auto command = commands().find(arguments[0]);
   if (command == commands().end()) throw Error(ErrorCode::InvalidArgument, "no command '" + arguments[0] + "'");
   std::cout << "usage: " << command->second.usage << "\n\n" << command->second.help << '\n';
+  if (takesBuildOptions(arguments[0])) {
+    plugin::PluginHost host;
+    host.loadDefaultPlugins();
+    if (const std::string flags = optionFlagsHelp(host); !flags.empty())
+      std::cout << "\nBuild options of the loaded plugins (off unless given):\n" << flags;
+  }
   return kSuccess;
 }
 

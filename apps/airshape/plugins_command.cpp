@@ -3,6 +3,7 @@
 #include "airshape/error.h"
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
+#include "open_configuration.h"
 
 namespace airshape::cli {
 
@@ -23,6 +24,8 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
       if (op->owner == loaded.plugin->name()) std::cout << ' ' << op->name;
     std::cout << '\n';
   }
+  if (const std::string flags = optionFlagsHelp(host); !flags.empty())
+    std::cout << "\nbuild options (flags of build, export, view and query; off unless given):\n" << flags;
   std::cout << "\ncore query ops:";
   for (const query::Op* op : host.queries().ops())
     if (op->owner == "core") std::cout << ' ' << op->name;

@@ -8,9 +8,11 @@
 
 namespace airshape::cli {
 
-int runQuery(const Arguments& arguments, plugin::PluginHost& host) {
+int runQuery(const Arguments& given, plugin::PluginHost& host) {
+  Arguments arguments = given;
+  const std::vector<std::string> options = takeOptionFlags(arguments, host);
   const std::string path = singleFileArgument(arguments, "query");
-  Configuration configuration = openConfiguration(path, host);
+  Configuration configuration = openConfiguration({path, options}, host);
   // Answers only on standard output: a library's stray print would break the protocol.
   ProtectedOutput output;
   query::serveQueries(configuration, host.queries(), std::cin, output.answers());

@@ -35,13 +35,15 @@ namespace {
 std::atomic<bool> interrupted{false};
 
 struct ViewOptions {
-  std::string input;
+  CpacsInput input;
   int port = 0;
   bool openBrowser = true;
 };
 
-ViewOptions parseViewOptions(const Arguments& arguments) {
+ViewOptions parseViewOptions(const Arguments& given, const plugin::PluginHost& host) {
+  Arguments arguments = given;
   ViewOptions options;
+  options.input.options = takeOptionFlags(arguments, host);
   for (std::size_t i = 0; i < arguments.size(); ++i) {
     const std::string& argument = arguments[i];
     if (argument == "--port" && i + 1 < arguments.size()) {
@@ -53,13 +55,13 @@ ViewOptions parseViewOptions(const Arguments& arguments) {
       options.port = static_cast<int>(port);
     } else if (argument == "--no-browser") {
       options.openBrowser = false;
-    } else if (!argument.empty() && argument[0] != '-' && options.input.empty()) {
-      options.input = argument;
+    } else if (!argument.empty() && argument[0] != '-' && options.input.path.empty()) {
+      options.input.path = argument;
     } else {
       throw Error(ErrorCode::InvalidArgument, "view: unexpected argument '" + argument + "' (see airshape help view)");
     }
   }
-  if (options.input.empty())
+  if (options.input.path.empty())
     throw Error(ErrorCode::InvalidArgument, "usage: airshape view FILE [--port P] [--no-browser]");
   return options;
 }
@@ -114,9 +116,10 @@ std::string devicesOf(const Configuration& configuration, const std::map<std::st
 
 /// Builds every component with its mirrored half and keeps it as the model's next version.
 /// Throws Error when the file cannot be used or nothing in it can be built.
-void build(const std::string& path, plugin::PluginHost& host, ViewedModel& model) {
+void build(const CpacsInput& input, plugin::PluginHost& host, ViewedModel& model) {
+  const std::string& path = input.path;
   const auto start = std::chrono::steady_clock::now();
-  const Configuration configuration = openConfiguration(path, host);
+  const Configuration configuration = openConfiguration(input, host);
   exporting::ExportOptions options;
   options.mirror = true;  // the page turns mirrored halves on and off
   options.skipFailed = true;
@@ -137,9 +140,9 @@ void build(const std::string& path, plugin::PluginHost& host, ViewedModel& model
 }
 
 /// A build after an edit: a failure is kept as the model's error, the last geometry stays.
-void rebuild(const std::string& path, plugin::PluginHost& host, ViewedModel& model) {
+void rebuild(const CpacsInput& input, plugin::PluginHost& host, ViewedModel& model) {
   try {
-    build(path, host, model);
+    build(input, host, model);
   } catch (const std::exception& error) {
     model.error = error.what();
     std::cerr << "view: " << model.error << " (the page keeps the last geometry)\n";
@@ -147,7 +150,7 @@ void rebuild(const std::string& path, plugin::PluginHost& host, ViewedModel& mod
 }
 
 /// POST /deflect?uid=U&parameter=P: shows device U at control parameter P (rebuilt now).
-LocalHttpServer::Response deflect(const LocalHttpServer::Request& request, const std::string& path,
+LocalHttpServer::Response deflect(const LocalHttpServer::Request& request, const CpacsInput& input,
                                   plugin::PluginHost& host, ViewedModel& model) {
   const auto uid = LocalHttpServer::parameter(request.query, "uid");
   const auto text = LocalHttpServer::parameter(request.query, "parameter");
@@ -161,17 +164,17 @@ LocalHttpServer::Response deflect(const LocalHttpServer::Request& request, const
   if (parameter < (*device)["min"].get<double>() || parameter > (*device)["max"].get<double>())
     return {400, "text/plain; charset=utf-8", "deflect: " + *text + " is outside the range of '" + *uid + "'\n"};
   model.deflections[*uid] = parameter;
-  rebuild(path, host, model);
+  rebuild(input, host, model);
   return {200, "application/json", nlohmann::json({{"version", model.version}}).dump()};
 }
 
-LocalHttpServer::Response answer(const LocalHttpServer::Request& request, const std::string& path,
+LocalHttpServer::Response answer(const LocalHttpServer::Request& request, const CpacsInput& input,
                                  plugin::PluginHost& host, ViewedModel& model, const std::string& title, bool& quit) {
   if (request.method == "POST" && request.path == "/quit") {
     quit = true;
     return {200, "text/plain; charset=utf-8", "the airshape view server ends\n"};
   }
-  if (request.method == "POST" && request.path == "/deflect") return deflect(request, path, host, model);
+  if (request.method == "POST" && request.path == "/deflect") return deflect(request, input, host, model);
   if (request.method != "GET") return {405, "text/plain; charset=utf-8", "only GET, and POST /deflect or /quit\n"};
   if (request.path == "/" || request.path == "/index.html")
     return {200, "text/html; charset=utf-8", viewer::livePage({title, "[]"})};
@@ -203,13 +206,13 @@ void openInBrowser(const std::string& url) {
 }  // namespace
 
 int runView(const Arguments& arguments, plugin::PluginHost& host) {
-  const ViewOptions options = parseViewOptions(arguments);
+  const ViewOptions options = parseViewOptions(arguments, host);
   if (!viewer::available()) throw Error(ErrorCode::NotImplemented, viewer::kUnavailable);
   ViewedModel model;
-  FileStamp seen = stampOf(options.input);
+  FileStamp seen = stampOf(options.input.path);
   build(options.input, host, model);  // a file that never loads is refused like any command's
 
-  const std::string title = std::filesystem::path(options.input).filename().string();
+  const std::string title = std::filesystem::path(options.input.path).filename().string();
   LocalHttpServer server(options.port);
   const std::string url = "http://127.0.0.1:" + std::to_string(server.port()) + "/";
   std::cout << "airshape view: " << url << " (Ctrl-C ends)" << std::endl;
@@ -222,7 +225,7 @@ int runView(const Arguments& arguments, plugin::PluginHost& host) {
   while (!quit && !interrupted) {
     if (const auto request = server.next(250))
       server.respond(answer(*request, options.input, host, model, title, quit));
-    const FileStamp now = stampOf(options.input);
+    const FileStamp now = stampOf(options.input.path);
     if (now != seen) {
       seen = now;
       rebuild(options.input, host, model);

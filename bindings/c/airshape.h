@@ -51,6 +51,15 @@ void airshape_close(airshape_configuration* configuration);
  * result as JSON out. */
 airshape_status airshape_query(airshape_configuration* configuration, const char* query_json, char** result_json);
 
+/* Build options that the loaded plugins declare (docs/c-api.md), all off when a file is opened:
+   "duct_cutouts" cuts the duct assemblies out of the wings and fuselages they pass through.
+   Turning one on or off rebuilds what it changes on next use; an unknown name is
+   AIRSHAPE_INVALID_ARGUMENT. */
+airshape_status airshape_set_option(airshape_configuration* configuration, const char* name, int on);
+airshape_status airshape_get_option(airshape_configuration* configuration, const char* name, int* on);
+/* Shorthand for airshape_set_option(configuration, "duct_cutouts", on). */
+airshape_status airshape_set_duct_cutouts(airshape_configuration* configuration, int on);
+
 /* Editing by XPath (docs/python.md#editing): what depends on the edit is rebuilt on next use. */
 airshape_status airshape_get_value(airshape_configuration* configuration, const char* xpath, char** value);
 airshape_status airshape_set_value(airshape_configuration* configuration, const char* xpath, const char* value);

@@ -213,6 +213,33 @@ airshape_status airshape_set_value(airshape_configuration* configuration, const 
   });
 }
 
+airshape_status airshape_set_option(airshape_configuration* configuration, const char* name, int on) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(name, "name");
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    configuration->configuration.setOption(name, on != 0);
+  });
+}
+
+airshape_status airshape_get_option(airshape_configuration* configuration, const char* name, int* on) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(name, "name");
+    require(on, "on");
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    bool declared = false;
+    for (const airshape::ComponentCutOuts& cutOuts : configuration->configuration.shapes().cutOuts())
+      declared = declared || cutOuts.option == name;
+    if (!declared) throw Error(ErrorCode::InvalidArgument, std::string("no build option '") + name + "'");
+    *on = configuration->configuration.option(name) ? 1 : 0;
+  });
+}
+
+airshape_status airshape_set_duct_cutouts(airshape_configuration* configuration, int on) {
+  return airshape_set_option(configuration, "duct_cutouts", on);
+}
+
 airshape_status airshape_insert_xml(airshape_configuration* configuration, const char* parent_xpath, const char* xml,
                                     int position) {
   return guarded([&] {

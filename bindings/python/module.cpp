@@ -1,6 +1,7 @@
 // The compiled part of the Python package `airshape` (_airshape): a configuration with its
 // query ops, editing, saving and exporting. The pythonic objects (wings, fuselages, the
 // editing proxies) are in airshape/__init__.py on top of it.
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -210,5 +211,25 @@ PYBIND11_MODULE(_airshape, m) {
            py::arg("profiles") = false,
            "Writes STEP, IGES, BREP, STL, VTP, glTF/GLB or OBJ by extension; poses: UID=P,... devices deflected; "
            "profiles: frames and stringers with their structural profiles swept along them.")
+      .def(
+          "set_option",
+          [](PyConfiguration& self, const std::string& name, bool on) {
+            const std::lock_guard<std::mutex> guard(self.lock);
+            self.configuration.setOption(name, on);
+          },
+          py::arg("name"), py::arg("on"),
+          "Turns a build option the plugins declare on or off (duct_cutouts); what it changes is rebuilt.")
+      .def(
+          "option", [](PyConfiguration& self, const std::string& name) { return self.configuration.option(name); },
+          py::arg("name"), "Whether a build option is on.")
+      .def(
+          "options",
+          [](PyConfiguration& self) {
+            std::map<std::string, std::string> declared;
+            for (const airshape::ComponentCutOuts& cutOuts : self.configuration.shapes().cutOuts())
+              declared[cutOuts.option] = cutOuts.description;
+            return declared;
+          },
+          "The build options the loaded plugins declare, each with its description.")
       .def("cache_statistics", &cacheStatistics, "Objects built, reused and invalidated, and builds per key.");
 }

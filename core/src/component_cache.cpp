@@ -2,15 +2,10 @@
 
 namespace airshape {
 
-namespace {
-
-/// The component a key belongs to: what follows the first ':', or "" for the whole model.
-std::string componentOfKey(const std::string& key) {
+std::string ComponentCache::componentOfKey(const std::string& key) {
   const std::size_t colon = key.find(':');
   return colon == std::string::npos ? std::string() : key.substr(colon + 1);
 }
-
-}  // namespace
 
 void ComponentCache::clear() {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -21,7 +16,7 @@ void ComponentCache::clear() {
 void ComponentCache::invalidate(const std::set<std::string>& componentUids) {
   std::lock_guard<std::mutex> lock(mutex_);
   for (auto entry = entries_.begin(); entry != entries_.end();) {
-    const std::string component = componentOfKey(entry->first);
+    const std::string& component = entry->second.component;
     if (component.empty() || componentUids.count(component) > 0) {
       entry = entries_.erase(entry);
       ++statistics_.invalidated;

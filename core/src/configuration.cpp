@@ -76,6 +76,25 @@ Configuration::Configuration(Configuration&&) noexcept = default;
 Configuration& Configuration::operator=(Configuration&&) noexcept = default;
 Configuration::~Configuration() = default;
 
+void Configuration::setOption(const std::string& name, bool on) {
+  std::string known;
+  for (const ComponentCutOuts& cutOuts : shapes().cutOuts()) {
+    if (cutOuts.option == name) {
+      if (option(name) == on) return;
+      if (on) {
+        options_.insert(name);
+      } else {
+        options_.erase(name);
+      }
+      cache().clear();
+      return;
+    }
+    known += (known.empty() ? "" : ", ") + cutOuts.option;
+  }
+  throw Error(ErrorCode::InvalidArgument, "no build option '" + name + "' (the loaded plugins declare " +
+                                              (known.empty() ? std::string("none") : known) + ")");
+}
+
 const ComponentShapes& Configuration::noShapes() {
   static const ComponentShapes none;
   return none;

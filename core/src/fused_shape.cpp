@@ -1,5 +1,6 @@
 #include "airshape/fused_shape.h"
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -25,6 +26,22 @@ NamedShape fuseNamedShapes(const std::vector<const NamedShape*>& shapes) {
   if (!BRepCheck_Analyzer(result.shape).IsValid())
     throw Error(ErrorCode::InvalidModel, "the Boolean union of the components is not a valid shape (BRepCheck)");
   return result;
+}
+
+NamedShape cutNamedShape(const NamedShape& argument, const NamedShape& tool) {
+  BRepAlgoAPI_Cut cut;
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(argument.shape);
+  tools.Append(tool.shape);
+  cut.SetArguments(arguments);
+  cut.SetTools(tools);
+  cut.SetRunParallel(true);
+  // Oriented boxes pass over more of the pairs of a cutter's plane faces and a wing's skins
+  // that cannot meet (docs/performance.md, the flaps file's main wing).
+  cut.SetUseOBB(true);
+  cut.Build();
+  if (!cut.IsDone() || cut.HasErrors()) throw Error(ErrorCode::InvalidModel, "the Boolean cut failed");
+  return namedBooleanResult(cut, {&argument, &tool});
 }
 
 }  // namespace airshape

@@ -291,6 +291,26 @@ static void rotors(void) {
   airshape_close(c);
 }
 
+/* Duct cut-outs are off when a file is opened; on, the airliner's APU duct takes out of its fuselage. */
+static void duct_cutouts(void) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(airliner, &c) == AIRSHAPE_OK);
+  int on = -1;
+  CHECK(airshape_get_option(c, "duct_cutouts", &on) == AIRSHAPE_OK && on == 0);
+  double clean = 0.0, cut = 0.0, again = 0.0;
+  CHECK(airshape_fuselage_volume(c, 1, &clean) == AIRSHAPE_OK);
+  CHECK(airshape_set_duct_cutouts(c, 1) == AIRSHAPE_OK);
+  CHECK(airshape_get_option(c, "duct_cutouts", &on) == AIRSHAPE_OK && on == 1);
+  CHECK(airshape_fuselage_volume(c, 1, &cut) == AIRSHAPE_OK);
+  CHECK(cut < clean - 0.01);
+  CHECK(airshape_set_option(c, "duct_cutouts", 0) == AIRSHAPE_OK);
+  CHECK(airshape_fuselage_volume(c, 1, &again) == AIRSHAPE_OK && again == clean);
+  CHECK(airshape_set_option(c, "no_such_option", 1) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(strstr(airshape_last_error(), "no build option 'no_such_option'") != NULL);
+  CHECK(airshape_get_option(c, "no_such_option", &on) == AIRSHAPE_INVALID_ARGUMENT);
+  airshape_close(c);
+}
+
 int main(int argc, char** argv) {
   if (argc != 6) {
     fprintf(stderr,
@@ -309,6 +329,7 @@ int main(int argc, char** argv) {
   control_devices(argv[2]);
   structure_components(argv[2]);
   rotors();
+  duct_cutouts();
   if (failures == 0) printf("c_api_test: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

@@ -631,6 +631,25 @@ class Configuration:
         self._core.export(str(path), components or [], mirror, fused, linear_deflection, angular_deflection, poses,
                           structure, profiles)
 
+    @property
+    def duct_cutouts(self) -> bool:
+        """Whether the duct assemblies are cut out of the wings and fuselages they pass through
+        (off when a file is opened, as in the reference library; docs/fuselage.md#duct-cut-outs).
+        Setting it rebuilds what it changes on next use."""
+        return self._core.option("duct_cutouts")
+
+    @duct_cutouts.setter
+    def duct_cutouts(self, on: bool) -> None:
+        self._core.set_option("duct_cutouts", bool(on))
+
+    def set_option(self, name: str, on: bool) -> None:
+        """Turns a build option the loaded plugins declare on or off (see options())."""
+        self._core.set_option(name, bool(on))
+
+    def options(self) -> Dict[str, bool]:
+        """Every build option the loaded plugins declare, and whether it is on."""
+        return {name: self._core.option(name) for name in self._core.options()}
+
     def cache_statistics(self) -> dict:
         """{"built", "reused", "invalidated", "builds_by_key"}: what the geometry cache did."""
         return self._core.cache_statistics()

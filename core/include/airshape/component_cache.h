@@ -28,21 +28,14 @@ class ComponentCache {
   /// The object stored under `key`, built by `build` if there is none yet.
   template <class T>
   std::shared_ptr<const T> obtain(const std::string& key, const std::function<std::shared_ptr<const T>()>& build) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (const auto found = entries_.find(key); found != entries_.end()) {
-        ++statistics_.reused;
-        return std::static_pointer_cast<const T>(found->second.value);
-      }
-    }
-    std::shared_ptr<const T> built = build();  // outside the lock: builders may obtain other entries
-    std::lock_guard<std::mutex> lock(mutex_);
-    const auto [entry, inserted] = entries_.emplace(key, Entry{built, anchor_});
-    if (inserted) {
-      ++statistics_.built;
-      ++statistics_.buildsByKey[key];
-    }
-    return std::static_pointer_cast<const T>(entry->second.value);
+    return obtainFor(key, componentOfKey(key), build);
+  }
+  /// The same for an object that depends on more than one component (a wing cut by the ducts
+  /// that pass through it): kept under `key` whatever it holds, forgotten on every edit.
+  template <class T>
+  std::shared_ptr<const T> obtainForWholeModel(const std::string& key,
+                                               const std::function<std::shared_ptr<const T>()>& build) {
+    return obtainFor(key, std::string(), build);
   }
 
   /// Forgets everything.
@@ -58,7 +51,32 @@ class ComponentCache {
   struct Entry {
     std::shared_ptr<const void> value;
     std::shared_ptr<const void> anchor;
+    std::string component;  ///< the uID of the component it was built for; "" the whole model
   };
+
+  /// The component a key belongs to: what follows the first ':', or "" for the whole model.
+  static std::string componentOfKey(const std::string& key);
+
+  template <class T>
+  std::shared_ptr<const T> obtainFor(const std::string& key, const std::string& component,
+                                     const std::function<std::shared_ptr<const T>()>& build) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (const auto found = entries_.find(key); found != entries_.end()) {
+        ++statistics_.reused;
+        return std::static_pointer_cast<const T>(found->second.value);
+      }
+    }
+    std::shared_ptr<const T> built = build();  // outside the lock: builders may obtain other entries
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto [entry, inserted] = entries_.emplace(key, Entry{built, anchor_, component});
+    if (inserted) {
+      ++statistics_.built;
+      ++statistics_.buildsByKey[key];
+    }
+    return std::static_pointer_cast<const T>(entry->second.value);
+  }
+
   mutable std::mutex mutex_;
   std::unordered_map<std::string, Entry> entries_;
   std::shared_ptr<const void> anchor_;

@@ -3,6 +3,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <gp_Trsf.hxx>
 
@@ -27,6 +28,16 @@ struct ComponentMotion {
   /// What its host (the exported component it lies in) loses when it moves: a solid to cut
   /// out of the host, or a compound of solids that may overlap, its faces named.
   std::function<NamedShape(const Configuration& configuration, const std::string& uid)> cutOut;
+};
+
+/// Solids that some components cut out of others while a build option is on (the duct
+/// assemblies' cut-outs in wings and fuselages, as the plugin that builds the ducts declares
+/// them). Options are off by default; Configuration::setOption turns one on.
+struct ComponentCutOuts {
+  std::string option;       ///< the option's name, e.g. "duct_cutouts"
+  std::string description;  ///< one line for help texts
+  /// The solids to cut out of the component with this uID (none when nothing cuts it).
+  std::function<std::vector<NamedShape>(const Configuration& configuration, const std::string& uid)> tools;
 };
 
 /// The shape builders plugins register, by CPACS node type, so that any code (a wing asking
@@ -69,10 +80,20 @@ class ComponentShapes {
     return entry == motions_.end() ? nullptr : &entry->second;
   }
 
+  void addCutOuts(ComponentCutOuts cutOuts) { cutOuts_.push_back(std::move(cutOuts)); }
+  /// Every declared kind of cut-out, with its option.
+  const std::vector<ComponentCutOuts>& cutOuts() const { return cutOuts_; }
+
   /// The solid of the component with this uID and its face names, built once and cached
-  /// in the configuration. Throws Error when no component has the uID or no plugin builds
-  /// its type.
+  /// in the configuration, with what others cut out of it while their option is on. Throws
+  /// Error when no component has the uID or no plugin builds its type.
   const NamedShape& namedShapeOf(const Configuration& configuration, const std::string& uid) const;
+  /// The solid as its plugin builds it, whatever cut-outs are on: what lies inside a wing or a
+  /// fuselage (its devices, its structure) is made from this one.
+  const NamedShape& cleanNamedShapeOf(const Configuration& configuration, const std::string& uid) const;
+  /// Whether namedShapeOf gives the component with cut-outs taken out of it (false at once,
+  /// building nothing, while no cut-out option is on).
+  bool isCutByOthers(const Configuration& configuration, const std::string& uid) const;
   /// The mirrored half of a component with a symmetry plane (CPACS `symmetry`, inherited
   /// through parentUID): its solid mirrored, faces named as the original's plus
   /// " (mirrored)". Throws Error when the component has no symmetry.
@@ -87,6 +108,10 @@ class ComponentShapes {
   std::map<std::string, ShapeBuilder> detailedBuilders_;
   std::map<std::string, ComponentMotion> motions_;
   std::map<std::string, std::string> declined_;
+  std::vector<ComponentCutOuts> cutOuts_;
+
+  /// Whether any declared cut-out option is on in the configuration.
+  bool anyCutOutsOn(const Configuration& configuration) const;
 };
 
 /// Why a component of this node type has no shape to give: the model (the plane itself) has

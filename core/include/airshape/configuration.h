@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,14 @@ class Configuration {
   const ComponentShapes& shapes() const { return *shapes_; }
   void useShapes(const ComponentShapes& shapes) { shapes_ = &shapes; }
 
+  /// Turns a build option on or off: one that a loaded plugin declares with its cut-outs
+  /// (ComponentShapes::cutOuts, e.g. "duct_cutouts"; all are off when a file is opened). What
+  /// was built under the other setting is forgotten. Throws Error(InvalidArgument) for a name
+  /// no loaded plugin declares, saying which it knows.
+  void setOption(const std::string& name, bool on);
+  /// Whether a build option is on.
+  bool option(const std::string& name) const { return options_.count(name) > 0; }
+
   /// Writes the model's values into the document (only what differs from it).
   void writeModel();
 
@@ -130,6 +139,7 @@ class Configuration {
   struct GeometryWarnings;
   std::unique_ptr<GeometryWarnings> geometryWarnings_;
   std::map<std::string, std::uint64_t> fingerprints_;  // of the components, as of the last edit
+  std::set<std::string> options_;                      // the build options that are on
   const ComponentShapes* shapes_ = &noShapes();
   static const ComponentShapes& noShapes();
 };

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <memory>
 
-#include <BRepAlgoAPI_Cut.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
-#include <TopTools_ListOfShape.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -107,20 +105,11 @@ NamedShape withCutOuts(const Configuration& configuration, const std::string& ui
   } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the cut-outs of the moving parts of '" + uid + "' cannot be joined");
   }
-  BRepAlgoAPI_Cut cut;
-  TopTools_ListOfShape arguments, tools;
-  arguments.Append(built.shape);
-  tools.Append(tool.shape);
-  cut.SetArguments(arguments);
-  cut.SetTools(tools);
-  cut.SetRunParallel(true);
-  // Oriented boxes pass over more of the pairs of a cutter's plane faces and the wing's skins
-  // that cannot meet: 12 % fewer instructions on the flaps file's main wing.
-  cut.SetUseOBB(true);
-  cut.Build();
-  if (!cut.IsDone() || cut.HasErrors())
+  try {
+    return cutNamedShape(built, tool);
+  } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, "the cut-outs of its moving parts could not be cut out of '" + uid + "'");
-  return namedBooleanResult(cut, {&built, &tool});
+  }
 }
 
 }  // namespace
@@ -156,10 +145,10 @@ NamedShape posedSolid(const Configuration& configuration, const std::string& uid
   // The cut-outs lie where the parts are at rest, so the cut is the same whatever their
   // deflections: kept for the configuration (under a whole-model key, which any edit forgets),
   // a further export at other deflections moves the parts and reuses it (0.8 s of the flaps
-  // file's main wing). A uID with a colon would make the key look like a component's.
-  const NamedShape solid = guests.empty() || key.find(':') != std::string::npos
+  // file's main wing).
+  const NamedShape solid = guests.empty()
                                ? withCutOuts(configuration, uid, guests)
-                               : *configuration.cache().obtain<NamedShape>(key, [&] {
+                               : *configuration.cache().obtainForWholeModel<NamedShape>(key, [&] {
                                    return std::make_shared<const NamedShape>(withCutOuts(configuration, uid, guests));
                                  });
   const auto moving = posed.find(uid);

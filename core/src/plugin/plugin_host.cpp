@@ -216,6 +216,7 @@ void PluginHost::registerPlugin(LoadedPlugin loaded) {
   }
   ComponentShapes offered;
   plugin->registerShapeBuilders(offered);
+  for (const ComponentCutOuts& cutOuts : offered.cutOuts()) shapes_.addCutOuts(cutOuts);
   for (const NodeType& type : loaded.nodeTypes) {  // only for the node types it was granted
     if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
     if (const ShapeBuilder* detailed = offered.findDetailed(type.name)) shapes_.addDetailed(type.name, *detailed);

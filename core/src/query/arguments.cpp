@@ -52,6 +52,13 @@ std::string stringArgument(const Json& query, const char* name) {
   return value.get<std::string>();
 }
 
+bool booleanArgument(const Json& query, const char* name) {
+  const Json& value = required(query, name);
+  if (!value.is_boolean())
+    throw Error(ErrorCode::InvalidArgument, std::string("argument '") + name + "' must be true or false");
+  return value.get<bool>();
+}
+
 std::size_t selectByIndexOrUid(const Json& query, const char* name, const std::vector<std::string>& uids,
                                const std::string& what) {
   const Json& value = required(query, name);

@@ -87,7 +87,20 @@ Json componentFaces(Configuration& configuration, const Json& query) {
   return faces;
 }
 
+/// Turns a build option on or off for the rest of the session, answering what it was before.
+Json setOption(Configuration& configuration, const Json& query) {
+  const std::string name = stringArgument(query, "name");
+  const bool on = booleanArgument(query, "on");
+  const bool was = configuration.option(name);
+  configuration.setOption(name, on);
+  return {{"name", name}, {"on", on}, {"was", was}};
+}
+
 void registerCoreQueries(QueryRegistry& registry) {
+  registry.add({"set_option", "core",
+                "name, on -> {name, on, was}: turns a build option (duct_cutouts) on or off for the rest of the "
+                "session; what it changes is rebuilt",
+                setOption});
   registry.add({"bounding_box", "core",
                 "[uid] -> {min, max}: tight box of a component, or of the whole configuration with mirrored halves",
                 boundingBox});

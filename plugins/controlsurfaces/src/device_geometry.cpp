@@ -293,7 +293,7 @@ std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
     BRep_Builder builder;
     builder.MakeCompound(trailingEdge);
     bool any = false;
-    for (const auto& [name, face] : configuration_.shapes().namedShapeOf(configuration_, device_.wingUid).faces)
+    for (const auto& [name, face] : configuration_.shapes().cleanNamedShapeOf(configuration_, device_.wingUid).faces)
       if (name.size() > 13 && name.compare(name.size() - 13, 13, "/trailingEdge") == 0) {
         builder.Add(trailingEdge, face);
         any = true;
@@ -309,7 +309,7 @@ NamedShape DeviceGeometry::atRest() const {
   if (std::optional<NamedShape> direct = fromWingSkins()) return std::move(*direct);
   const NamedShape cut = cutter();
   if (device_.innerBorder.nose == BorderDefinition::Nose::Airfoil) return cut;
-  const NamedShape& wing = configuration_.shapes().namedShapeOf(configuration_, device_.wingUid);
+  const NamedShape& wing = configuration_.shapes().cleanNamedShapeOf(configuration_, device_.wingUid);
   NamedShape wingFaces{wing.shape, {}};
   for (const auto& [name, face] : wing.faces)
     wingFaces.faces.emplace_back(device_.uid + "/" + deviceFaceName(name), face);

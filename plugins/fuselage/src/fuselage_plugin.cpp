@@ -2,17 +2,20 @@
 // profiles, and the fuselage ops. It offers the same loft to other plugins (tank vessels)
 // through its public interface (airshape/fuselage/fuselage_services.h).
 #include <algorithm>
+#include <set>
 
 #include <gp_Trsf.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/fused_shape.h"
+#include "airshape/geometry/brep_measures.h"
 #include "airshape/model/primary_model.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
 #include "airshape/query/model_selection.h"
+#include "ducts.h"
 #include "fuselage_geometry.h"
 #include "fuselage_services.h"
 
@@ -28,61 +31,18 @@ schema::FuselageType& selectFuselage(const Configuration& configuration, const J
                                    "fuselage");
 }
 
-/// Every duct of every aircraft model.
-std::vector<const schema::DuctType*> everyDuct(const Configuration& configuration) {
-  std::vector<const schema::DuctType*> ducts;
-  const auto& vehicles = configuration.cpacs().vehicles;
-  if (vehicles && vehicles->aircraft)
-    for (const auto& model : vehicles->aircraft->model)
-      if (model.ducts)
-        for (const auto& duct : model.ducts->duct) ducts.push_back(&duct);
-  return ducts;
-}
-
-/// The duct of this uID, or null.
-const schema::DuctType* ductNamed(const Configuration& configuration, const std::string& uid) {
-  for (const schema::DuctType* duct : everyDuct(configuration))
-    if (duct->uID == uid) return duct;
-  return nullptr;
-}
-
-/// The duct assembly of this uID; throws Error when there is none.
-const schema::DuctAssemblyType& ductAssemblyNamed(const Configuration& configuration, const std::string& uid) {
-  const auto& vehicles = configuration.cpacs().vehicles;
-  if (vehicles && vehicles->aircraft)
-    for (const auto& model : vehicles->aircraft->model)
-      if (model.ducts)
-        for (const auto& assembly : model.ducts->ductAssembly)
-          if (assembly.uID == uid) return assembly;
-  throw Error(ErrorCode::InvalidArgument, "no duct or duct assembly with uID '" + uid + "'");
-}
-
-/// A duct assembly: the Boolean union of its ducts, with the mirrored halves of those that
-/// have a symmetry plane (the cutting tool the schema applies to wings and fuselages).
-NamedShape ductAssemblySolid(const Configuration& configuration, const schema::DuctAssemblyType& assembly) {
-  std::vector<const NamedShape*> ducts;
-  if (assembly.ductUIDs)
-    for (const std::string& uid : assembly.ductUIDs->uID) {
-      if (ductNamed(configuration, uid) == nullptr)
-        throw Error(ErrorCode::InvalidModel, "'" + uid + "' names no duct", {}, assembly.xpath + "/ductUIDs");
-      ducts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
-      if (model::resolvedSymmetry(configuration, uid) != "none")
-        ducts.push_back(&configuration.shapes().mirroredShapeOf(configuration, uid));
-    }
-  if (ducts.empty()) throw NoShape("the duct assembly names no ducts: no shape", assembly.xpath);
-  // One duct is copied: an export names the faces of each component, which two components
-  // sharing faces would confuse.
-  if (ducts.size() == 1) return transformedNamedShape(*ducts.front(), gp_Trsf());
-  return fuseNamedShapes(ducts);
-}
-
-/// The duct holding a duct segment of this uID.
-const schema::DuctType& ductHolding(const Configuration& configuration, const std::string& segmentUid) {
-  for (const schema::DuctType* duct : everyDuct(configuration))
-    if (duct->segments)
-      for (const auto& segment : duct->segments->segment)
-        if (segment.uID == segmentUid) return *duct;
-  throw Error(ErrorCode::InvalidArgument, "no duct segment with uID '" + segmentUid + "'");
+/// The skin area of a fuselage with cut-outs: every face of the cut solid but the fuselage's
+/// own caps and symmetry faces, so the walls the cut-outs leave count as skin.
+double skinAreaWithCutOuts(const NamedShape& cut, const NamedShape& clean) {
+  std::set<std::string> notSkin;
+  const std::string skin = "/skin";
+  for (const auto& [name, face] : clean.faces)
+    if (name.size() < skin.size() || name.compare(name.size() - skin.size(), skin.size(), skin) != 0)
+      notSkin.insert(name);
+  double area = 0.0;
+  for (const auto& [name, face] : cut.faces)
+    if (notSkin.count(name) == 0) area += geometry::areaOf(face);
+  return area;
 }
 
 std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
@@ -96,6 +56,10 @@ class FuselagePlugin final : public plugin::BasicPlugin {
   }
 
   void registerShapeBuilders(ComponentShapes& shapes) const override {
+    shapes.addCutOuts({kDuctCutOuts,
+                       "the duct assemblies cut out of the wings and fuselages they pass through "
+                       "(off by default, as in the reference library)",
+                       ductCutOutsOf});
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
       const model::ModelComponents& model = model::modelHolding(c, uid);
       return FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, uid, "fuselage"))->solid(uid);
@@ -146,13 +110,22 @@ class FuselagePlugin final : public plugin::BasicPlugin {
                     const auto geometry = FuselageGeometry::of(c, selectFuselage(c, q));
                     return geometry->circumference(segmentOf(*geometry, q), query::fractionArgument(q, "eta"));
                   }});
-    registry.add({"fuselage_volume", "", "fuselage -> volume", [](Configuration& c, const Json& q) -> Json {
-                    return FuselageGeometry::of(c, selectFuselage(c, q))->volume();
+    registry.add({"fuselage_volume", "", "fuselage -> volume (with its duct cut-outs when they are on)",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::FuselageType& fuselage = selectFuselage(c, q);
+                    if (c.shapes().isCutByOthers(c, fuselage.uID))
+                      return geometry::enclosedVolume(c.shapes().shapeOf(c, fuselage.uID));
+                    return FuselageGeometry::of(c, fuselage)->volume();
                   }});
-    registry.add(
-        {"fuselage_surface_area", "", "fuselage -> skin area (no caps)", [](Configuration& c, const Json& q) -> Json {
-           return FuselageGeometry::of(c, selectFuselage(c, q))->surfaceArea();
-         }});
+    registry.add({"fuselage_surface_area", "",
+                  "fuselage -> skin area (no caps; with the walls of its duct cut-outs when they are on)",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::FuselageType& fuselage = selectFuselage(c, q);
+                    if (c.shapes().isCutByOthers(c, fuselage.uID))
+                      return skinAreaWithCutOuts(c.shapes().namedShapeOf(c, fuselage.uID),
+                                                 c.shapes().cleanNamedShapeOf(c, fuselage.uID));
+                    return FuselageGeometry::of(c, fuselage)->surfaceArea();
+                  }});
     registry.add(
         {"fuselage_segment_volume", "", "fuselage, segment -> volume", [](Configuration& c, const Json& q) -> Json {
            const auto geometry = FuselageGeometry::of(c, selectFuselage(c, q));

@@ -26,7 +26,7 @@ FuselageFrame::FuselageFrame(const Configuration& configuration, const schema::F
 FuselageFrame::FuselageFrame(const Configuration& configuration, const std::string& hostUid,
                              const schema::FuselageType* body, const model::Transform& toGlobal)
     : configuration_(configuration), body_(body), toGlobal_(toGlobal) {
-  const NamedShape& host = configuration.shapes().namedShapeOf(configuration, hostUid);
+  const NamedShape& host = configuration.shapes().cleanNamedShapeOf(configuration, hostUid);
   solid_ = host.shape;
   const std::string skin = "/skin";
   for (const auto& [name, face] : host.faces)

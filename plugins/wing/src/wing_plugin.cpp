@@ -158,12 +158,20 @@ class WingPlugin final : public plugin::BasicPlugin {
                     const double eta = query::fractionArgument(q, "eta"), xsi = query::fractionArgument(q, "xsi");
                     return {{"eta", cs.toComponentSegment(segment, eta)}, {"xsi", xsi}};
                   }});
-    registry.add({"wing_volume", "", "wing -> volume", [](Configuration& c, const Json& q) -> Json {
-                    return WingShape::of(c, selectWing(c, q))->volume();
+    registry.add({"wing_volume", "", "wing -> volume (with what others cut out of it, such as ducts, when that is on)",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    if (c.shapes().isCutByOthers(c, wing.uID))
+                      return geometry::enclosedVolume(c.shapes().shapeOf(c, wing.uID));
+                    return WingShape::of(c, wing)->volume();
                   }});
-    registry.add(
-        {"wing_surface_area", "", "wing -> area of the whole loft (skins, caps, trailing-edge strips)",
-         [](Configuration& c, const Json& q) -> Json { return WingShape::of(c, selectWing(c, q))->surfaceArea(); }});
+    registry.add({"wing_surface_area", "",
+                  "wing -> area of the whole loft (skins, caps, trailing-edge strips; the walls of cut-outs)",
+                  [](Configuration& c, const Json& q) -> Json {
+                    const schema::WingType& wing = selectWing(c, q);
+                    if (c.shapes().isCutByOthers(c, wing.uID)) return geometry::areaOf(c.shapes().shapeOf(c, wing.uID));
+                    return WingShape::of(c, wing)->surfaceArea();
+                  }});
     registry.add({"wing_segment_volume", "", "wing, segment -> volume", segmentMeasure(&WingShape::segmentVolume)});
     registry.add({"wing_segment_surface_area", "", "wing, segment -> area of the upper and lower skin",
                   segmentMeasure(&WingShape::segmentSurfaceArea)});

@@ -59,7 +59,7 @@ class WingServicesOfThisPlugin final : public WingServices {
     const std::string type = index < 0 ? "" : graph.components()[static_cast<std::size_t>(index)].typeName;
     const bool isWing = type == "wing" || type == "rotor_blade";
     if (!isWing) throw Error(ErrorCode::InvalidArgument, "no wing with uID '" + wingUid + "'");
-    return configuration.shapes().shapeOf(configuration, wingUid);
+    return configuration.shapes().cleanNamedShapeOf(configuration, wingUid).shape;
   }
 
   gp_Pnt componentSegmentPoint(const Configuration& configuration, const std::string& componentSegmentUid, double eta,

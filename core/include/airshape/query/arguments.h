@@ -16,6 +16,7 @@ double numberArgument(const Json& query, const char* name);
 /// A number in [0, 1], such as eta, xsi or zeta.
 double fractionArgument(const Json& query, const char* name);
 std::string stringArgument(const Json& query, const char* name);
+bool booleanArgument(const Json& query, const char* name);
 /// A point or vector argument: [x, y, z] of finite numbers.
 std::array<double, 3> pointArgument(const Json& query, const char* name);
 
