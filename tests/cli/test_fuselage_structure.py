@@ -27,9 +27,11 @@ def wall(uid, phi, *positions, extra=""):
 
 
 def frame(uid, *stations):
+    """A frame through (x, referenceY) or (x, referenceY, referenceAngle) positions."""
     positions = "".join(f'<framePosition uID="{uid}P{i}"><structuralElementUID>E</structuralElementUID>'
                         f"<positionX>{x}</positionX><referenceY>{y}</referenceY><referenceZ>0</referenceZ>"
-                        f"<referenceAngle>0</referenceAngle></framePosition>" for i, (x, y) in enumerate(stations))
+                        f"<referenceAngle>{angle[0] if angle else 0}</referenceAngle></framePosition>"
+                        for i, (x, y, *angle) in enumerate(stations))
     return f'<frame uID="{uid}">{positions}</frame>'
 
 
@@ -64,7 +66,7 @@ def structure():
              door("Rising", "F0", "F1", "Tilted", "Top") + door("Astray", "F0", "F1", "Side", "Nowhere") +
              door("Flat", "F1", "F1", "Side", "Top"))
     frames = (frame("F1", (7, 0)) + frame("Path", (4, -0.5), (4, 0), (4, 0.5)) +
-              frame("Riffled", (4, 0), (5, 0), (6, 0)) + frame("F0", (3, 0)) + frame("Pair", (4.5, -0.5), (4.5, 0.5)))
+              frame("Riffled", (4, 0, 0), (5, 0, 90), (4, 0, 180), (5, 0, 270), (4, 0, 360)) + frame("F0", (3, 0)) + frame("Pair", (4.5, -0.5), (4.5, 0.5)))
     bulkheads = ('<pressureBulkheads><pressureBulkhead uID="B1"><frameUID>F1</frameUID>'
                  "<pressureBulkheadElementUID>E</pressureBulkheadElementUID></pressureBulkhead>"
                  '<pressureBulkhead uID="OnPath"><frameUID>Path</frameUID>'
@@ -247,11 +249,14 @@ def test_frames_and_stringers_are_lines_on_the_skin(tmp_path):
     # Positions at the section elements of x = 5 and 10.
     assert math.isclose(at_sections["min"][0], 5, abs_tol=1e-6) and math.isclose(at_sections["max"][0], 10, abs_tol=1e-6)
     assert math.isclose(at_sections["min"][1], -1, abs_tol=1e-5) and math.isclose(at_sections["max"][2], 0, abs_tol=1e-6)
-    # A riffled frame (positions at x = 4, 5, 6, all straight up from the axis): its bulkhead is
-    # the surface the rays sweep inside the skin, here the strip y = 0, 4 <= x <= 6, 0 <= z <= 1.
-    assert math.isclose(riffled, 2, rel_tol=REL)
-    assert math.isclose(riffled_box["min"][0], 4, abs_tol=1e-6) and math.isclose(riffled_box["max"][0], 6, abs_tol=1e-6)
-    assert math.isclose(riffled_box["max"][2], 1, abs_tol=1e-5) and math.isclose(riffled_box["min"][2], 0, abs_tol=1e-6)
+    # A riffled frame (positions at x = 4 and 5 in turn, a quarter turn apart): its bulkhead is the
+    # plane face at the positions' mean station inside the frame's line, which lies on the tube,
+    # so seen along x the line is the unit circle: the face's area is π; its box holds the line,
+    # from x = 4 to 5.
+    assert math.isclose(riffled, math.pi, rel_tol=REL)
+    assert math.isclose(riffled_box["min"][0], 4, abs_tol=1e-6) and math.isclose(riffled_box["max"][0], 5, abs_tol=1e-6)
+    assert all(math.isclose(riffled_box["max"][k], 1, abs_tol=1e-5) and math.isclose(riffled_box["min"][k], -1, abs_tol=1e-5)
+               for k in (1, 2))
 
 
 # An L profile: a web from the skin 0.1 into the body, then a flange 0.03 along the profile's x.

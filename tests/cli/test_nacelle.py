@@ -151,7 +151,8 @@ def test_configuration_length_leaves_nacelles_and_empty_pylons_out():
 
 def test_nacelle_conformance_does_not_regress():
     passed, output = conformance_passed("cases-nacelle.json")
-    assert passed >= 37, output[-3000:]
+    # 2 of 44 do not pass: two volumes, each traced in docs/conformance.md.
+    assert passed >= 42, output[-3000:]
 
 
 def test_a_lofted_nacelle_does_not_depend_on_what_was_built_before():

@@ -202,14 +202,16 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
     throw Error(error.code(), "the cowl's outer surface cannot be lofted: " + error.message(), {}, cowl.xpath);
   }
 
-  // The inner curve's ends, each with the blending zeta it meets (the nearer one).
-  gp_Pnt innerAtStartBlend = inner->StartPoint(), innerAtEndBlend = inner->EndPoint();
-  const gp_Pnt outerStart = sections.front().at(startBlend);
-  if (outerStart.Distance(innerAtEndBlend) < outerStart.Distance(innerAtStartBlend))
-    std::swap(innerAtStartBlend, innerAtEndBlend);
-  // The row's boundary at u0 or u1 that lies at endZetaBlending: the one nearer that inner end's circle.
-  auto offCircle = [](const gp_Pnt& p, const gp_Pnt& onCircle) {
-    return std::hypot(p.X() - onCircle.X(), std::hypot(p.Y(), p.Z()) - std::hypot(onCircle.Y(), onCircle.Z()));
+  // The inner curve's ends join the blending zetas by name (schema): its start is at startZeta,
+  // joined to startZetaBlending, its end at endZeta, joined to endZetaBlending.
+  warnWhereTheMeridianCrosses(configuration, cowl, sections, inner);
+  const gp_Pnt innerAtStartBlend = inner->StartPoint(), innerAtEndBlend = inner->EndPoint();
+  // The row's boundary at u0 or u1 that lies at endZetaBlending: the one nearer the sections'
+  // points there than their points at startZetaBlending.
+  auto nearestSectionPoint = [&](const gp_Pnt& p, double zeta) {
+    double nearest = Precision::Infinite();
+    for (const PlacedProfile& section : sections) nearest = std::min(nearest, p.Distance(section.at(zeta)));
+    return nearest;
   };
 
   // Sector by sector, so that the faces meet along the same curves and sewing only matches them.
@@ -220,7 +222,7 @@ TopoDS_Shape loftedCowl(const Configuration& configuration, const schema::Nacell
     row->Bounds(u0, u1, v0, v1);
     const Sector sector = sectorOf(row);
     const gp_Pnt atU0 = row->Value(u0, v0);
-    const bool u0AtEndBlend = offCircle(atU0, innerAtEndBlend) < offCircle(atU0, innerAtStartBlend);
+    const bool u0AtEndBlend = nearestSectionPoint(atU0, endBlend) < nearestSectionPoint(atU0, startBlend);
     faces.emplace_back(name + "/outer", BRepBuilderAPI_MakeFace(row, Precision::Confusion()).Face());
     faces.emplace_back(name + "/blending",
                        blendingFace(row->UIso(u0), u0AtEndBlend ? innerAtEndBlend : innerAtStartBlend, sector));

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <Geom_BSplineCurve.hxx>
 #include <gp_Pnt.hxx>
@@ -33,8 +34,24 @@ struct PlacedProfile {
 };
 PlacedProfile placedProfile(const Configuration& configuration, const schema::NacelleSectionType& section);
 
-/// The cowl's rotation curve between startZeta and endZeta, placed like its reference section;
-/// its curve coordinate runs as a lower side's, −1 at its last point and 0 at its first.
+/// Whether a cowl's meridian at a section crosses itself: the loop, in the plane through the
+/// engine's axis (axial position and radius), of the section's outline from the trailing edge
+/// down its lower side to `startZetaBlending`, over to the inner curve's start (its startZeta:
+/// the blending joins by name, as the schema says), along the inner curve, over to
+/// `endZetaBlending` and on over the leading edge and the upper side back to the trailing edge.
+/// A file whose rotation curve runs backwards makes the blending lines cross.
+bool meridianCrossesItself(const PlacedProfile& section, double startZetaBlending, double endZetaBlending,
+                           const Handle(Geom_BSplineCurve) & inner);
+
+/// Warns in one line, naming the rotation curve's CPACS path, where the cowl's meridian crosses
+/// itself at any of its sections (meridianCrossesItself): the cowl is built as given, a solid
+/// that passes through itself.
+void warnWhereTheMeridianCrosses(const Configuration& configuration, const schema::NacelleCowlType& cowl,
+                                 const std::vector<PlacedProfile>& sections, const Handle(Geom_BSplineCurve) & inner);
+
+/// The cowl's rotation curve from startZeta to endZeta, placed like its reference section; its
+/// curve coordinate runs as a lower side's, −1 at its trailing end (the end further along x) and
+/// 0 at its leading end, whichever way its points are written.
 Handle(Geom_BSplineCurve) rotationPiece(const Configuration& configuration, const schema::NacelleCowlType& cowl);
 
 }  // namespace airshape::nacelle

@@ -101,13 +101,13 @@ TopoDS_Shape cowlSolid(const Configuration& configuration, const schema::Nacelle
       parameterAtLengthShare(lower, lengthShare(rotation->endZetaBlending, rotation->xpath + "/endZetaBlending"));
 
   // Closed in the half plane from the leading edge: the upper side, the trailing edge, the lower
-  // side to startZetaBlending, the inner curve from its end nearer that point (joined by a
-  // straight blending line), and from endZetaBlending on to the leading edge.
+  // side to startZetaBlending, a straight blending line to the inner curve's start (startZeta,
+  // joined by name as the schema says), the inner curve, a straight line to endZetaBlending and on
+  // to the leading edge.
+  warnWhereTheMeridianCrosses(configuration, cowl, {profile}, inner);
   ProfileWire wire;
   wire.add(profile.upper);
   wire.add(curvePiece(lower, lower->FirstParameter(), blendStart));
-  const gp_Pnt startBlend = lower->Value(blendStart);
-  if (startBlend.Distance(inner->EndPoint()) < startBlend.Distance(inner->StartPoint())) inner->Reverse();
   wire.add(inner);
   wire.add(curvePiece(lower, blendEnd, lower->LastParameter()));
   return revolved(wire.closed(lower->EndPoint()), cowl.xpath);

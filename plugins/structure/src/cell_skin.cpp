@@ -1,6 +1,7 @@
 #include "cell_skin.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <optional>
@@ -9,7 +10,9 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -67,6 +70,15 @@ class CellCorners {
     if (!spanwise || !spanwise->ribDefinitionUID) return std::nullopt;
     const std::string where = cell_.xpath + (inner ? "/positioningInnerBorder" : "/positioningOuterBorder");
     return gp_Vec(ribPlaneOf(*spanwise->ribDefinitionUID, spanwise->ribNumber.value_or(1), where).Axis().Direction());
+  }
+
+  /// Whether the leading (trailing) border is given as the chord's end: xsi 0 (1) at both its
+  /// ends, no spar.
+  bool atChordEnd(bool leadingEdge) const {
+    const auto& chordwise = leadingEdge ? cell_.node->positioningLeadingEdge : cell_.node->positioningTrailingEdge;
+    if (!chordwise || !chordwise->xsi1 || !chordwise->xsi2 || chordwise->sparUID) return false;
+    const double edge = leadingEdge ? 0.0 : 1.0;
+    return std::abs(*chordwise->xsi1 - edge) <= 1e-12 && std::abs(*chordwise->xsi2 - edge) <= 1e-12;
   }
 
   /// Whether a spar gives the leading (trailing) edge.
@@ -253,6 +265,19 @@ std::optional<std::vector<TopoDS_Face>> fromDeviceFaces(const StructureFrame& fr
   return cell;
 }
 
+/// Moves a corner of a cell's outline along the side from `neighbour` to it, past the farthest
+/// of the skin's box corners (`skinCorners`, the loop's frame) that way and a thousandth of the
+/// side further: the side's line then misses the skin.
+void prolongPastSkin(std::vector<gp_Pnt>& loop, std::size_t corner, std::size_t neighbour,
+                     const std::vector<gp_Pnt>& skinCorners) {
+  const gp_Vec side(loop[neighbour], loop[corner]);
+  const gp_Dir along(side);
+  double past = 0.0;
+  for (const gp_Pnt& skinCorner : skinCorners)
+    past = std::max(past, gp_Vec(loop[corner], skinCorner).Dot(gp_Vec(along)));
+  loop[corner].Translate(gp_Vec(along) * (past + 1e-3 * side.Magnitude()));
+}
+
 /// Moves a border on the component segment's root or tip beyond the skin's end. It lies on the
 /// skin's own edge there, which a section leaning outwards carries past the border's lines: they
 /// would meet the skin short of its edge, or (an upright one) just at its bound, found on it or
@@ -262,25 +287,39 @@ std::optional<std::vector<TopoDS_Face>> fromDeviceFaces(const StructureFrame& fr
 /// corners of a box round the skin (the loop's frame).
 void beyondSkinEnds(std::vector<gp_Pnt>& loop, const std::vector<double>& etas, std::size_t outerFront,
                     const std::vector<gp_Pnt>& skinCorners) {
-  // Each corner along its side, past the farthest of the box's corners that way, and a thousandth
-  // of the side further.
-  const auto prolong = [&](std::size_t corner, std::size_t neighbour) {
-    const gp_Vec side(loop[neighbour], loop[corner]);
-    const gp_Dir along(side);
-    double past = 0.0;
-    for (const gp_Pnt& skinCorner : skinCorners)
-      past = std::max(past, gp_Vec(loop[corner], skinCorner).Dot(gp_Vec(along)));
-    loop[corner].Translate(gp_Vec(along) * (past + 1e-3 * side.Magnitude()));
-  };
   const std::size_t last = loop.size() - 1, outerBack = outerFront + 1;
   if (etas[outerFront] >= 1.0 - 1e-9 && etas[outerBack] >= 1.0 - 1e-9) {
-    prolong(outerFront, outerFront - 1);
-    prolong(outerBack, outerBack == last ? 0 : outerBack + 1);
+    prolongPastSkin(loop, outerFront, outerFront - 1, skinCorners);
+    prolongPastSkin(loop, outerBack, outerBack == last ? 0 : outerBack + 1, skinCorners);
   }
   if (etas.front() <= 1e-9 && etas.back() <= 1e-9) {
-    prolong(0, 1);
-    prolong(last, last - 1);
+    prolongPastSkin(loop, 0, 1, skinCorners);
+    prolongPastSkin(loop, last, last - 1, skinCorners);
   }
+}
+
+/// Moves a chordwise border that lies on the wing's own leading (trailing) edge beyond the skin's
+/// end there: the border is the skin's edge. A side through the corners along the component
+/// segment's one cell direction would lean across a twisted wing's rounded nose and cut off the
+/// skin ahead of it (D150's cell_us_le lost 2 cm of its nose). The corners move along the
+/// spanwise borders, which keeps those borders' planes.
+void beyondWingEdges(std::vector<gp_Pnt>& loop, std::size_t outerFront, bool leadingEdge, bool trailingEdge,
+                     const std::vector<gp_Pnt>& skinCorners) {
+  const std::size_t last = loop.size() - 1, outerBack = outerFront + 1;
+  if (leadingEdge) {
+    prolongPastSkin(loop, 0, last, skinCorners);
+    prolongPastSkin(loop, outerFront, outerBack, skinCorners);
+  }
+  if (trailingEdge) {
+    prolongPastSkin(loop, outerBack, outerFront, skinCorners);
+    prolongPastSkin(loop, last, 0, skinCorners);
+  }
+}
+
+/// Whether a point lies on a shape, within `tolerance`.
+bool onSkin(const gp_Pnt& point, const TopoDS_Shape& skin, double tolerance) {
+  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(point).Vertex(), skin);
+  return distance.IsDone() && distance.Value() <= tolerance;
 }
 
 /// The corners of a box round the shape, in the frame's wing coordinates.
@@ -370,7 +409,22 @@ NamedShape cellSkin(const Configuration& configuration, const StructureServices&
   std::vector<double> etas;
   for (const gp_Pnt& point : loop) etas.push_back(frame.etaOf(point));
   const TopoDS_Shape skin = frame.skin(cell.upper);
-  if (!frame.inDevice()) beyondSkinEnds(loop, etas, outerFrontIndex, boxCorners(skin, frame));
+  if (!frame.inDevice()) {
+    const std::vector<gp_Pnt> skinCorners = boxCorners(skin, frame);
+    // The edges first: the ends then move the corners along the moved chordwise sides. A border
+    // at the chord's end is the wing's edge where its corners lie on the skin: the chord's ends
+    // are the skin's edge on a wing lofted through its airfoils, not on a guided wing whose
+    // leading edge bulges ahead of them, nor at a blunt trailing edge.
+    const auto onSkinEdge = [&](bool leadingEdge) {
+      if (!corners.atChordEnd(leadingEdge)) return false;
+      const std::size_t inner = leadingEdge ? 0 : loop.size() - 1;
+      const std::size_t outer = leadingEdge ? outerFrontIndex : outerFrontIndex + 1;
+      return onSkin(frame.toGlobal(loop[inner]), skin, kTraceTolerance * frame.reach()) &&
+             onSkin(frame.toGlobal(loop[outer]), skin, kTraceTolerance * frame.reach());
+    };
+    beyondWingEdges(loop, outerFrontIndex, onSkinEdge(true), onSkinEdge(false), skinCorners);
+    beyondSkinEnds(loop, etas, outerFrontIndex, skinCorners);
+  }
   const std::vector<gp_Vec> lines = sideLines(loop, etas, outerFrontIndex, corners, frame);
   const double reach = frame.reach();
   auto level = [&](double side) {

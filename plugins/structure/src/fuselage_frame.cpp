@@ -142,8 +142,13 @@ gp_Pln FuselageFrame::station(const schema::FrameType& frame) const {
 }
 
 gp_Pnt FuselageFrame::skinAhead(const gp_Pnt& from, const gp_Dir& direction, const std::string& where) const {
-  IntCurvesFace_ShapeIntersector intersector;
-  intersector.Load(solid_, 1e-7);
+  // Loading the faces into an intersector costs far more than a line (a riffled frame asks for
+  // three lines a pair of positions): loaded once.
+  if (!skinIntersector_) {
+    skinIntersector_ = std::make_shared<IntCurvesFace_ShapeIntersector>();
+    skinIntersector_->Load(solid_, 1e-7);
+  }
+  IntCurvesFace_ShapeIntersector& intersector = *skinIntersector_;
   intersector.Perform(gp_Lin(from, direction), 1e-9, reach_);
   if (!intersector.IsDone() || intersector.NbPnt() == 0)
     throw Error(ErrorCode::InvalidModel, "the line from the element does not reach the fuselage's skin", {}, where);

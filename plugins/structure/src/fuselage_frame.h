@@ -1,9 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <gp_Dir.hxx>
@@ -83,6 +85,7 @@ class FuselageFrame {
   TopoDS_Shape solid_;
   std::vector<TopoDS_Face> skin_;
   double reach_ = 0.0;
+  mutable std::shared_ptr<IntCurvesFace_ShapeIntersector> skinIntersector_;  ///< loaded on first use
 };
 
 }  // namespace airshape::structure

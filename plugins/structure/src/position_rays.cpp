@@ -103,10 +103,40 @@ std::vector<TopoDS_Face> StringerPath::surface(const FuselageFrame& fuselage, do
 }
 
 std::vector<RaySpan> frameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  if (fuselage.offFirstStation(frame) != nullptr) return riffledFrameSpans(fuselage, frame);
   std::vector<RaySpan> spans;
   for (std::size_t k = 1; k < frame.framePosition.size(); ++k)
     spans.emplace_back(PositionRay::of(fuselage, frame.framePosition[k - 1]),
                        PositionRay::of(fuselage, frame.framePosition[k]));
+  return spans;
+}
+
+std::vector<RaySpan> riffledFrameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame) {
+  // Where a ray meets the skin, in fuselage coordinates.
+  const auto onSkin = [&](const PositionRay& ray, const std::string& where) {
+    return fuselage.toLocal(
+        fuselage.skinAhead(fuselage.toGlobal(ray.origin), fuselage.toGlobal(gp_Dir(ray.direction)), where));
+  };
+  // The rays from `centre` through the points of the chord from `from` to `to`: linearly blended,
+  // they sweep the plane through the three points, and meet the skin along its section there.
+  const auto fan = [](const gp_Pnt& centre, const gp_Pnt& from, const gp_Pnt& to) {
+    return RaySpan{{centre, gp_Vec(centre, from)}, {centre, gp_Vec(centre, to)}};
+  };
+  std::vector<RaySpan> spans;
+  for (std::size_t k = 1; k < frame.framePosition.size(); ++k) {
+    const schema::StringerFramePositionType &first = frame.framePosition[k - 1], &second = frame.framePosition[k];
+    const PositionRay a = PositionRay::of(fuselage, first), b = PositionRay::of(fuselage, second);
+    const double middleAngle = 0.5 * (first.referenceAngle + second.referenceAngle) * kDegrees;
+    const PositionRay middle{gp_Pnt(0.5 * (a.origin.XYZ() + b.origin.XYZ())),
+                             gp_Vec(0.0, -std::sin(middleAngle), std::cos(middleAngle))};
+    const gp_Pnt from = onSkin(a, first.xpath), halfway = onSkin(middle, frame.xpath), to = onSkin(b, second.xpath);
+    // The first half is seen from three quarters of the way to the second reference point, the
+    // second half from a quarter of the way (as the reference library draws them).
+    const gp_Pnt seesFirstHalf(0.25 * a.origin.XYZ() + 0.75 * b.origin.XYZ());
+    const gp_Pnt seesSecondHalf(0.75 * a.origin.XYZ() + 0.25 * b.origin.XYZ());
+    spans.push_back(fan(seesFirstHalf, from, halfway));
+    spans.push_back(fan(seesSecondHalf, halfway, to));
+  }
   return spans;
 }
 

@@ -63,8 +63,20 @@ class StringerPath {
 /// positions share it, corrugated for a riffled frame), in the global frame.
 std::vector<TopoDS_Face> frameSweep(const FuselageFrame& fuselage, const schema::FrameType& frame, double length);
 
-/// The pairs of rays of consecutive positions of a frame, that frameSweep runs between.
+/// The pairs of rays of consecutive positions of a frame, that frameSweep runs between; for a
+/// riffled frame riffledFrameSpans.
 std::vector<RaySpan> frameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame);
+
+/// Where a riffled frame (positions at several stations) runs between two positions: the
+/// schema does not say, so as the reference library draws it. The two positions' rays and the
+/// ray from their reference points' middle at their mean angle meet the skin at three points;
+/// the frame runs from the first to the middle one along the skin's section by the plane through
+/// them and the point three quarters of the way from the first reference point to the second,
+/// then on to the last one along the section by the plane through them and the point a quarter
+/// of the way (each half the skin's conic projection of a chord from that point). Two spans of
+/// rays per pair of positions, each sharing one origin. Throws Error naming the position whose
+/// ray misses the skin.
+std::vector<RaySpan> riffledFrameSpans(const FuselageFrame& fuselage, const schema::FrameType& frame);
 
 /// The rays all round a frame of one position in its station plane, from its reference point:
 /// four quarter turns.

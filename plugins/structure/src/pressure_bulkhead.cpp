@@ -3,20 +3,27 @@
 #include <algorithm>
 #include <cmath>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepPrimAPI_MakeHalfSpace.hxx>
+#include <BRep_Tool.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
+#include <TopExp.hxx>
+#include <TopTools_HSequenceOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
+#include "airshape/geometry/plane_face_within.h"
 #include "compounds.h"
 #include "faces_inside.h"
 #include "fuselage_frame.h"
 #include "fuselage_structure_list.h"
 #include "named_faces.h"
 #include "position_rays.h"
-#include "ruled_section.h"
 #include "skin_lines.h"
 #include "skin_section.h"
 
@@ -60,21 +67,38 @@ std::vector<TopoDS_Face> stationSection(const FuselageFrame& fuselage, const sch
   return fuselage.crossSection(station.Location(), station.Axis().Direction());
 }
 
-/// The surface a riffled frame's rays sweep, inside the fuselage: each piece between two rays
-/// from their origins out to the skin (ruled_section.h), or, where the skin does not allow
-/// that, the swept surface's common with the fuselage's solid.
-std::vector<TopoDS_Face> sweptInside(const FuselageFrame& fuselage, const schema::FrameType& frame) {
-  const TopoDS_Shape skin = compoundOf(fuselage.skinFaces());
-  std::vector<TopoDS_Face> faces;
-  for (const auto& [a, b] : frameSpans(fuselage, frame)) {
-    const gp_Pnt from = fuselage.toGlobal(a.origin), to = fuselage.toGlobal(b.origin);
-    const geometry::RuledLines rays{from, to, gp_Vec(from, fuselage.toGlobal(a.origin.Translated(a.direction))),
-                                    gp_Vec(to, fuselage.toGlobal(b.origin.Translated(b.direction))), true};
-    const auto face = ruledFaceOutToSkin(skin, rays, kTraceTolerance * fuselage.reach());
-    if (!face) return facesInside(compoundOf(frameSweep(fuselage, frame, fuselage.localReach())), fuselage.solid());
-    faces.push_back(*face);
+/// A bulkhead on a riffled frame (positions at several stations), as the reference library makes
+/// it (the schema does not say): a plane face at the mean station of the frame's reference points,
+/// bounded by the frame's line (riffledFrameSpans), closed by a straight edge where the line does
+/// not come back to its start. The line leaves the plane by up to half the riffle's depth: the face
+/// is the part of the plane inside the line seen along x, each edge keeping its course
+/// (geometry::planeFaceWithin).
+TopoDS_Face planeWithinRiffledFrame(const Configuration& configuration, const FuselageFrame& fuselage,
+                                    const schema::FrameType& frame) {
+  Handle(TopTools_HSequenceOfShape) edges = new TopTools_HSequenceOfShape;
+  for (const SkinEdge& piece : frameOnSkin(configuration, nullptr, frame.uID)) edges->Append(piece.edge);
+  Handle(TopTools_HSequenceOfShape) wires;
+  ShapeAnalysis_FreeBounds::ConnectEdgesToWires(edges, kTraceTolerance * fuselage.reach() * 10.0, false, wires);
+  if (wires.IsNull() || wires->Length() != 1)
+    throw Error(ErrorCode::InvalidModel, "the riffled frame's line is not one line", {}, frame.xpath);
+  TopoDS_Wire line = TopoDS::Wire(wires->Value(1));
+  if (!BRep_Tool::IsClosed(line)) {
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(line, first, last);
+    BRepBuilderAPI_MakeWire closed(line);
+    closed.Add(BRepBuilderAPI_MakeEdge(last, first).Edge());
+    if (!closed.IsDone())
+      throw Error(ErrorCode::InvalidModel, "the riffled frame's line cannot be closed", {}, frame.xpath);
+    line = closed.Wire();
   }
-  return faces;
+  gp_XYZ sum(0, 0, 0);
+  for (const auto& position : frame.framePosition) sum += PositionRay::of(fuselage, position).origin.XYZ();
+  const gp_Pnt middle(sum / static_cast<double>(frame.framePosition.size()));
+  const gp_Pnt centre = fuselage.toGlobal(middle);
+  const gp_Pln station(centre,
+                       gp_Dir(gp_Vec(centre, fuselage.toGlobal(middle.Translated(gp_Vec(0, 1, 0))))
+                                  .Crossed(gp_Vec(centre, fuselage.toGlobal(middle.Translated(gp_Vec(0, 0, 1)))))));
+  return geometry::planeFaceWithin(station, line);
 }
 
 /// A bulkhead on a frame of several positions at one station: each position's ray
@@ -105,7 +129,7 @@ NamedShape pressureBulkhead(const Configuration& configuration, const std::strin
   std::vector<TopoDS_Face> faces;
   try {
     if (fuselage.offFirstStation(frame) != nullptr) {
-      faces = sweptInside(fuselage, frame);
+      faces = {planeWithinRiffledFrame(configuration, fuselage, frame)};
     } else if (frame.framePosition.size() > 1) {
       faces = sectionPart(fuselage, frame);
     } else {
