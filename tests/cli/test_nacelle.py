@@ -217,3 +217,24 @@ def test_a_broken_cst_cowl_profile_names_its_path(tmp_path):
                       stdin=json.dumps({"op": "component_volume", "uid": "Low"}) + "\n")
     error = json.loads(result.stdout)["error"]
     assert "nacelleProfile[1]/cst2D/upperN1" in error and "must not be negative" in error
+
+
+def test_the_rotation_curve_is_read_from_its_trailing_end_and_joined_by_name(tmp_path):
+    # The same inner line written the other way round: the cowl does not change.
+    reversed_line = edited_engines(tmp_path / "reversed.xml", "<x>0;1</x><y>-0.06;-0.06</y>",
+                                   "<x>1;0</x><y>-0.06;-0.06</y>")
+    query = {"op": "component_volume", "uid": "Low"}
+    assert ask(reversed_line, query) == ask(ENGINES, query)
+    # startZeta ahead of endZeta while startZetaBlending lies behind endZetaBlending: joined by
+    # name, the blending lines cross. Built as given, with one warning naming the rotation curve.
+    low = "<startZeta>-0.6</startZeta><endZeta>-0.3</endZeta>"
+    text = open(ENGINES).read()
+    crossing = tmp_path / "crossing.xml"
+    crossing.write_text(text.replace(low, "<startZeta>-0.3</startZeta><endZeta>-0.6</endZeta>", 1))
+    built = airshape("build", str(crossing))
+    warnings = [line for line in built.stderr.splitlines() if "cross itself" in line]
+    assert len(warnings) == 1, built.stderr
+    assert "engines/engine[1]/nacelle/fanCowl/rotationCurve: the cowl's blending lines, joined by name" in warnings[0]
+    line = next(line for line in built.stdout.splitlines() if " Low " in line)
+    assert "solid" in line and "FAILED" not in line, line
+    assert ask(crossing, query)[0] != ask(ENGINES, query)[0]
