@@ -378,9 +378,23 @@ double FuselageGeometry::sumOverSegments(const std::function<double(std::size_t 
 
 double FuselageGeometry::volume() const {
   if (segments_.empty()) return 0.0;
+  // The skin and the two caps sharing their edges from the start: no sewing (which took two
+  // thirds of opening D150 and asking its volumes).
+  if (closedProfiles_) {
+    try {
+      std::vector<TopoDS_Face> faces;
+      if (patchRows_.empty())
+        return geometry::volumeOf(
+            geometry::closedLoftSolid(loft_, {sectionSites_.front(), sectionSites_.back()}, faces));
+      std::vector<geometry::LoftStretch> rows;
+      for (const auto& row : patchRows_) rows.push_back({row, 0.0, 1.0});
+      return geometry::volumeOf(geometry::closedLoftSolid(rows, faces));
+    } catch (const Error&) {
+    } catch (const Standard_Failure&) {
+    }
+  }
   if (!patchRows_.empty())  // a ring of patches per segment: the segments' solids
     return sumOverSegments([this](std::size_t k) { return segmentVolume(k); });
-  // One skin face over the whole loft and its two caps: quicker than the named solid.
   const geometry::LoftPiece whole = piece(0, segments_.size());
   if (!whole.solid.IsNull()) return geometry::volumeOf(whole.solid);
   // Sewing can fail on one face with many degenerate spans; segments do not.
