@@ -1,6 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Airshape needs that are missing, then configures and builds
 # it (Release, ccache when present) in ./build. Run as root on Debian 12.
+#
+#   scripts/build.sh            everything: the library, the plugins, the tools, the bindings,
+#                               the tests and the benchmarks
+#   scripts/build.sh TARGET...  only those targets and what they need (the main job builds
+#                               airshape_tool_and_plugins)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -21,4 +26,4 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
-cmake --build build -j "$(nproc)"
+cmake --build build -j "$(nproc)" ${1:+--target "$@"}

@@ -7,7 +7,7 @@
 # few queries.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/build.sh
+scripts/build.sh airshape_tool_and_plugins  # the tests and benchmarks come with scripts/test.sh
 example=examples/generic-airliner.xml
 ./build/bin/airshape validate "$example"
 ./build/bin/airshape build "$example"

@@ -9,26 +9,39 @@ namespace airshape::schema {
 
 /// A child element that occurs at most once. Held by pointer so that generated
 /// classes can refer to each other in any order and recursively.
+///
+/// It owns a plain pointer, not a std::unique_ptr: the generated model has some 600 such members,
+/// and GCC instantiating std::unique_ptr for each of them cost 5 s in every source that includes
+/// the model (docs/building.md). The child is destroyed with its holder, whose destructor is
+/// defined where every generated class is complete.
 template <class T>
 class Child {
  public:
+  Child() = default;
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+  ~Child() { delete node_; }
+
   explicit operator bool() const { return node_ != nullptr; }
-  T* get() const { return node_.get(); }
+  T* get() const { return node_; }
   T& operator*() const { return *node_; }
-  T* operator->() const { return node_.get(); }
+  T* operator->() const { return node_; }
 
   /// Creates the child (replacing any present one) and returns it.
   T& emplace() {
-    node_ = std::make_unique<T>();
+    reset();
+    node_ = new T();
     return *node_;
   }
-  void reset() { node_.reset(); }
+  void reset() {
+    delete node_;
+    node_ = nullptr;
+  }
 
  private:
-  std::unique_ptr<T> node_;
+  T* node_ = nullptr;
 };
 
-/// A child element that may occur several times, in document order.
 template <class T>
 class List {
  public:
