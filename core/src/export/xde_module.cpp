@@ -1,6 +1,6 @@
 #include "xde_module.h"
 
-#include "airshape/plugin/core_module.h"
+#include "airshape/core_module.h"
 
 namespace airshape::exporting {
 
@@ -8,7 +8,7 @@ void writeWithXcaf(const std::string& format, const ExportScene& scene, const st
                    const std::string& target) {
   using Entry = void(const std::string&, const ExportScene&, const std::string&, const std::string&);
   static const boost::dll::shared_library module =
-      plugin::loadCoreModule("libairshape_export_xde.so", "the XCAF-based writers");
+      loadCoreModule("libairshape_export_xde.so", "the XCAF-based writers");
   module.get<Entry>("airshape_write_with_xcaf")(format, scene, path, target);
 }
 

@@ -29,7 +29,6 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/skinning.h"
-#include "airshape/model/placement.h"
 
 namespace airshape::geometry {
 
@@ -94,7 +93,9 @@ std::optional<gp_Pln> planeThroughPoints(const std::vector<gp_Pnt>& points, doub
 Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
   Handle(Geom_BSplineCurve) moved = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
   for (int i = 1; i <= moved->NbPoles(); ++i) {
-    moved->SetPole(i, model::apply(transform, moved->Pole(i)));
+    const gp_Pnt pole = moved->Pole(i);
+    const Eigen::Vector3d placed = transform * Eigen::Vector3d(pole.X(), pole.Y(), pole.Z());
+    moved->SetPole(i, gp_Pnt(placed.x(), placed.y(), placed.z()));
   }
   return moved;
 }

@@ -18,7 +18,7 @@
 #include <TopoDS_Iterator.hxx>
 
 #include "airshape/geometry/brep_building.h"
-#include "airshape/plugin/core_module.h"
+#include "airshape/core_module.h"
 
 namespace airshape::geometry {
 
@@ -29,7 +29,7 @@ namespace {
 /// after every static, when an unloaded toolkit's code would be gone.
 const boost::dll::shared_library& rulingModule() {
   static const auto* module = new boost::dll::shared_library(
-      plugin::loadCoreModule("libairshape_ruled_sections.so", "the ruled loft through sections"));
+      loadCoreModule("libairshape_ruled_sections.so", "the ruled loft through sections"));
   return *module;
 }
 

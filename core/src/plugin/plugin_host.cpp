@@ -9,9 +9,9 @@
 #include <dlfcn.h>
 
 #include <boost/dll/import.hpp>
-#include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
 
+#include "airshape/core_module.h"
 #include "airshape/error.h"
 #include "airshape/query/core_queries.h"
 
@@ -73,7 +73,7 @@ PluginHost::~PluginHost() {
   while (!plugins_.empty()) plugins_.pop_back();
 }
 
-std::string PluginHost::coreLibraryFolder() { return boost::dll::this_line_location().parent_path().string(); }
+std::string PluginHost::coreLibraryFolder() { return airshape::coreLibraryFolder(); }
 
 void PluginHost::loadDefaultPlugins() {
   openFolder(coreLibraryFolder(), false);

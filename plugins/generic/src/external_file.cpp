@@ -10,7 +10,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/plugin/core_module.h"
+#include "airshape/core_module.h"
 
 namespace airshape::generic {
 
@@ -26,7 +26,7 @@ std::string lowerCase(std::string text) {
 TopoDS_Shape readExchangeFile(const std::string& kind, const std::string& path) {
   using Entry = void(const std::string&, const std::string&, TopoDS_Shape&);
   static const boost::dll::shared_library module =
-      plugin::loadCoreModule("libairshape_generic_exchange.so", "the STEP and IGES reader");
+      loadCoreModule("libairshape_generic_exchange.so", "the STEP and IGES reader");
   TopoDS_Shape shape;
   module.get<Entry>("airshape_read_exchange_file")(kind, path, shape);
   return shape;
