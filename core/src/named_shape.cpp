@@ -6,6 +6,7 @@
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Builder.hxx>
+#include <Eigen/Geometry>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -70,7 +71,7 @@ NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transfo
   return transformed;
 }
 
-NamedShape transformedNamedShape(const NamedShape& shape, const Eigen::Affine3d& transformation,
+NamedShape transformedNamedShape(const NamedShape& shape, const geometry::Affine3& transformation,
                                  const std::string& suffix) {
   const Eigen::Matrix3d linear = transformation.linear();
   const Eigen::Vector3d move = transformation.translation();

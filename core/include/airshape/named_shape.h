@@ -4,7 +4,6 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
@@ -46,7 +45,7 @@ NamedShape transformedNamedShape(const NamedShape& shape, const gp_Trsf& transfo
 /// The same for any affine map (CPACS transformations scale non-uniformly): moved rigidly
 /// (with a mirror or a uniform scale) where the map is one, else through its matrix, the
 /// faces keeping their names either way.
-NamedShape transformedNamedShape(const NamedShape& shape, const Eigen::Affine3d& transformation,
+NamedShape transformedNamedShape(const NamedShape& shape, const geometry::Affine3& transformation,
                                  const std::string& suffix = "");
 
 }  // namespace airshape

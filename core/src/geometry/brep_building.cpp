@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <optional>
+#include <type_traits>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -90,7 +92,9 @@ std::optional<gp_Pln> planeThroughPoints(const std::vector<gp_Pnt>& points, doub
   return gp_Pln(gp_Pnt(centre.x(), centre.y(), centre.z()), gp_Dir(normal.x(), normal.y(), normal.z()));
 }
 
-Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform) {
+static_assert(std::is_same_v<Affine3, Eigen::Affine3d>, "geometry/affine.h names Eigen's Affine3d");
+
+Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Affine3& transform) {
   Handle(Geom_BSplineCurve) moved = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
   for (int i = 1; i <= moved->NbPoles(); ++i) {
     const gp_Pnt pole = moved->Pole(i);

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include <Eigen/Geometry>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/primary_model.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gp_Pnt2d.hxx>
 
 #include "airshape/configuration.h"

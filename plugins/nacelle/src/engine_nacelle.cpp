@@ -1,6 +1,7 @@
 #include "engine_nacelle.h"
 
 #include <BRep_Builder.hxx>
+#include <Eigen/Geometry>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>

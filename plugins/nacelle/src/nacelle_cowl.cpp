@@ -7,6 +7,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <Eigen/Geometry>
 #include <gp_Ax1.hxx>
 
 #include "airshape/configuration.h"

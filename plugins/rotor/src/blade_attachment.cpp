@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "airshape/model/placement.h"
 #include "airshape/schema/generated/cpacs_model.h"
 

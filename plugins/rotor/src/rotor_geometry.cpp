@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <BRep_Builder.hxx>
+#include <Eigen/Geometry>
 #include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"

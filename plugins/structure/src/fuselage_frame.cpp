@@ -1,5 +1,6 @@
 #include "fuselage_frame.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 #include <BRepBndLib.hxx>

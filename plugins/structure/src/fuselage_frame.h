@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>

@@ -7,6 +7,7 @@
 #include <BRepBndLib.hxx>
 #include <BRep_Builder.hxx>
 #include <Bnd_Box.hxx>
+#include <Eigen/Geometry>
 #include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"

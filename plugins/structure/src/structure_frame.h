@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <TopoDS_Shape.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>

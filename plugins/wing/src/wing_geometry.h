@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gp_Pnt.hxx>
 
 #include "airshape/model/placement.h"

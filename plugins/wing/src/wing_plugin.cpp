@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <Eigen/Geometry>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"

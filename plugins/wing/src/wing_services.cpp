@@ -3,6 +3,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRep_Builder.hxx>
+#include <Eigen/Geometry>
 #include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"

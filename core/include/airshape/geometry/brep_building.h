@@ -3,7 +3,6 @@
 #include <optional>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
@@ -14,6 +13,7 @@
 #include <gp_Pln.hxx>
 
 #include "airshape/error.h"
+#include "airshape/geometry/affine.h"
 
 namespace airshape::geometry {
 
@@ -26,7 +26,7 @@ inline constexpr double kBrepTolerance = 1e-7;
 inline constexpr double kJoinTolerance = 1e-6;
 
 /// The curve moved by an affine map (applied to its poles, which is exact for B-splines).
-Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Eigen::Affine3d& transform);
+Handle(Geom_BSplineCurve) transformed(const Handle(Geom_BSplineCurve) & curve, const Affine3& transform);
 
 /// The straight segment from a to b as a degree-1 B-spline over [0, 1].
 Handle(Geom_BSplineCurve) straightLine(const gp_Pnt& a, const gp_Pnt& b);

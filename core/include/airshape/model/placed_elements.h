@@ -3,10 +3,17 @@
 #include <string>
 #include <unordered_map>
 
+#include <Eigen/Geometry>
+
 #include "airshape/configuration.h"
 #include "airshape/model/placement.h"
 
 namespace airshape::model {
+
+/// The translation of each section (by uID) that positionings give: the toPoint of the
+/// first positioning that targets it, chained through fromSectionUID. Throws Error when a
+/// fromSectionUID names a section no positioning reaches, or when positionings loop.
+std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const schema::PositioningsType* positionings);
 
 /// A section element with the full transformation C · Pos(section) · Sec · Elem that takes
 /// its profile to global coordinates.

@@ -4,9 +4,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gp_Pnt.hxx>
 
+#include "airshape/geometry/affine.h"
 #include "airshape/schema/generated/cpacs_model.h"
 
 namespace airshape {
@@ -16,7 +16,7 @@ class Configuration;
 namespace airshape::model {
 
 /// An affine map of 3-D points (CPACS transformations scale non-uniformly).
-using Transform = Eigen::Affine3d;
+using Transform = geometry::Affine3;
 
 /// A point moved by a transform.
 gp_Pnt apply(const Transform& transform, const gp_Pnt& point);
@@ -38,11 +38,6 @@ Transform componentTransform(const Configuration& configuration, const std::stri
 /// translation is absGlobal.
 Transform placedOnParent(const Configuration& configuration, const schema::TransformationType* transformation,
                          const std::string& parentUid);
-
-/// The translation of each section (by uID) that positionings give: the toPoint of the
-/// first positioning that targets it, chained through fromSectionUID. Throws Error when a
-/// fromSectionUID names a section no positioning reaches, or when positionings loop.
-std::unordered_map<std::string, Eigen::Vector3d> positioningTranslations(const schema::PositioningsType* positionings);
 
 /// A number the geometry is built from. NaN and INF are numbers to XML Schema, but no
 /// geometry can be built from them: Error(InvalidModel) naming `xpath`.
