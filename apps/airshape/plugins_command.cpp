@@ -1,4 +1,5 @@
 #include <iostream>
+#include <set>
 
 #include "airshape/error.h"
 #include "airshape/plugin/plugin_host.h"
@@ -18,7 +19,9 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
     for (const plugin::Requirement& requirement : loaded.plugin->requirements())
       std::cout << "\n  requires:   " << requirement.plugin << plugin::describeRange(requirement);
     std::cout << "\n  node types:";
-    for (const auto& type : loaded.nodeTypes) std::cout << ' ' << type.name;
+    std::set<std::string> shown;  // a node type may be declared at several places
+    for (const auto& type : loaded.nodeTypes)
+      if (shown.insert(type.nodeType).second) std::cout << ' ' << type.nodeType;
     std::cout << "\n  query ops: ";
     for (const query::Op* op : host.queries().ops())
       if (op->owner == loaded.plugin->name()) std::cout << ' ' << op->name;

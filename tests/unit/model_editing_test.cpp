@@ -22,7 +22,9 @@ const std::string kProfiles = R"(<profiles><wingAirfoils><wingAirfoil uID="A"><n
 
 class ModelEditing : public ::testing::Test {
  protected:
-  ModelEditing() : configuration(Configuration::fromString(test::cpacsDocument(kModel, kProfiles))) {}
+  ModelEditing()
+      : configuration(
+            Configuration::fromString(test::cpacsDocument(kModel, kProfiles), "input.xml", test::bodyLocations())) {}
 
   /// Builds (or reuses) a stand-in object for each component, as a plugin would.
   void buildAll() {

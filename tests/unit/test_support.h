@@ -1,6 +1,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "airshape/graph/component_graph.h"
 
 namespace airshape::test {
 
@@ -26,6 +29,17 @@ inline std::string cpacsDocument(const std::string& modelBody, const std::string
   </vehicles>
 </cpacs>
 )";
+}
+
+/// Where the core's tests find components: wings and fuselages with their segments, declared as
+/// the wing and fuselage plugins declare them (the core itself knows no kind).
+inline std::vector<graph::ComponentLocation> bodyLocations() {
+  using graph::ComponentLocation;
+  return graph::resolveLocations(
+      {ComponentLocation{"fuselage", "fuselages/fuselage"}.inBox().placedByItsTransformation(),
+       ComponentLocation{"fuselageSegment", "segments/segment"}.inside("fuselage").typed("fuselage_segment").asPart(),
+       ComponentLocation{"wing", "wings/wing"}.inBox().placedByItsTransformation(),
+       ComponentLocation{"wingSegment", "segments/segment"}.inside("wing").typed("wing_segment").asPart()});
 }
 
 /// A wing with two sections and one segment; `extra` goes inside <wing>.

@@ -19,7 +19,7 @@ std::string fuselage(const std::string& uid, const std::string& parent = "") {
 TEST(Uids, DuplicatesAndDanglingReferencesAreReportedWithXPaths) {
   const std::string wings = "<wings>" + test::wingXml("W") + "</wings>";
   const std::string doc = test::cpacsDocument(wings + "<fuselages>" + fuselage("W_Seg") + "</fuselages>");
-  const auto configuration = Configuration::fromString(doc);
+  const auto configuration = Configuration::fromString(doc, "input.xml", test::bodyLocations());
   const Problems& problems = configuration.uids().problems();
   const auto has = [&](const std::string& text) {
     return std::any_of(problems.begin(), problems.end(),
@@ -35,7 +35,7 @@ TEST(Uids, DuplicatesAndDanglingReferencesAreReportedWithXPaths) {
 TEST(ComponentGraph, ParentsComeBeforeChildren) {
   const std::string doc = test::cpacsDocument("<fuselages>" + fuselage("F") + "</fuselages><wings>" +
                                               test::wingXml("Tail", "Main") + test::wingXml("Main", "F") + "</wings>");
-  const auto configuration = Configuration::fromString(doc);
+  const auto configuration = Configuration::fromString(doc, "input.xml", test::bodyLocations());
   const auto& graph = configuration.components();
   std::vector<std::string> order;
   for (std::size_t index : graph.buildOrder())
@@ -55,7 +55,7 @@ TEST(ComponentGraph, ACycleIsAnErrorNamingItsUids) {
   const std::string doc =
       test::cpacsDocument("<wings>" + test::wingXml("A", "B") + test::wingXml("B", "A") + "</wings>");
   try {
-    Configuration::fromString(doc, "cycle.xml");
+    Configuration::fromString(doc, "cycle.xml", test::bodyLocations());
     FAIL() << "a parentUID cycle must be refused";
   } catch (const Error& error) {
     const std::string message = error.what();
@@ -66,8 +66,8 @@ TEST(ComponentGraph, ACycleIsAnErrorNamingItsUids) {
 }
 
 TEST(ComponentGraph, AParentThatIsNoComponentIsAWarning) {
-  const auto configuration =
-      Configuration::fromString(test::cpacsDocument("<wings>" + test::wingXml("W", "Nowhere") + "</wings>"));
+  const auto configuration = Configuration::fromString(
+      test::cpacsDocument("<wings>" + test::wingXml("W", "Nowhere") + "</wings>"), "input.xml", test::bodyLocations());
   ASSERT_EQ(configuration.components().components().size(), 3u);  // the model, the wing, its segment
   EXPECT_EQ(configuration.components().components()[1].parentUid, "");
   const Problems& warnings = configuration.warnings();

@@ -28,13 +28,13 @@ class Configuration {
   /// Opens a file. Throws Error naming the file when it is missing, not XML, not CPACS,
   /// CPACS 2 (or older), or when its components form a parentUID cycle. Flaws the geometry
   /// can live with (schema violations, duplicate uIDs, dangling uIDrefs) are recorded in
-  /// problems() and warnings() instead.
-  static Configuration open(const std::string& path, const std::vector<graph::ComponentLocation>& locations =
-                                                         graph::standardComponentLocations());
+  /// problems() and warnings() instead. Components are found at `locations` (those the loaded
+  /// plugins declare: plugin::PluginHost::componentLocations); by default only the model.
+  static Configuration open(const std::string& path,
+                            const std::vector<graph::ComponentLocation>& locations = graph::resolveLocations({}));
   /// Opens a document held in a string; `name` stands for it in messages.
-  static Configuration fromString(
-      const std::string& xml, const std::string& name = "<string>",
-      const std::vector<graph::ComponentLocation>& locations = graph::standardComponentLocations());
+  static Configuration fromString(const std::string& xml, const std::string& name = "<string>",
+                                  const std::vector<graph::ComponentLocation>& locations = graph::resolveLocations({}));
 
   Configuration(Configuration&&) noexcept;
   Configuration& operator=(Configuration&&) noexcept;

@@ -1,9 +1,9 @@
 #include "airshape/graph/component_graph.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
-#include <sstream>
 #include <unordered_map>
 #include <utility>
 
@@ -22,14 +22,6 @@ using namespace xercesc;
 namespace {
 
 using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
-
-std::vector<std::string> split(const std::string& path) {
-  std::vector<std::string> steps;
-  std::stringstream stream(path);
-  for (std::string step; std::getline(stream, step, '/');)
-    if (!step.empty()) steps.push_back(step);
-  return steps;
-}
 
 /// Elements reached from `from` by following the steps of a relative path.
 void select(const DOMElement& from, const std::vector<std::string>& steps, std::size_t step,
@@ -59,142 +51,109 @@ class DiscoveryRecorder : public boost::default_dfs_visitor {
   std::vector<std::size_t>& order_;
 };
 
-/// The elements inside a wing (or rotor blade) that are geometry of their own.
-void addWingContents(const std::string& wing, std::vector<ComponentLocation>& locations) {
-  locations.push_back({"wingSegment", wing + "/segments/segment", "wing_segment", true});
-  const std::string segment = wing + "/componentSegments/componentSegment";
-  locations.push_back({"wingComponentSegment", segment, "wing_component_segment", true});
-  const auto addStructure = [&](const std::string& structure) {
-    // Structure lies inside its wing: exported when named, not part of the configuration box.
-    locations.push_back({"sparSegment", structure + "/spars/sparSegments/sparSegment", "wing_spar", false, true, true});
-    locations.push_back(
-        {"ribsDefinition", structure + "/ribsDefinitions/ribsDefinition", "wing_rib", false, true, true});
-    locations.push_back({"wingCell", structure + "/upperShell/cells/cell", "wing_cell", false, true});
-    locations.push_back({"wingCell", structure + "/lowerShell/cells/cell", "wing_cell", false, true});
-  };
-  addStructure(segment + "/structure");
-  // A wing fuel tank is a part of the wing's volume: exported when named, like structure.
-  locations.push_back({"wingFuelTank", segment + "/wingFuelTanks/wingFuelTank", "tank", false, true});
-  for (const auto& [device, folder] : {std::pair<std::string, std::string>{"trailingEdgeDevice", "trailingEdgeDevices"},
-                                       {"leadingEdgeDevice", "leadingEdgeDevices"},
-                                       {"spoiler", "spoilers"}}) {
-    const std::string path = segment + "/controlSurfaces/" + folder + "/" + device;
-    locations.push_back({device, path, "control_surface", false, true});
-    addStructure(path + "/structure");
+/// The locations of one declaration: its path below the model, or below every location of
+/// the node type it lies in (`resolving` guards against declarations that contain each other).
+void resolve(const ComponentLocation& declaration, const std::vector<ComponentLocation>& declared,
+             std::set<std::string>& resolving, std::vector<ComponentLocation>& resolved) {
+  ComponentLocation location = declaration;
+  if (location.typeName.empty()) location.typeName = location.nodeType;
+  location.within.clear();
+  if (declaration.within.empty()) {
+    resolved.push_back(location);
+    return;
   }
-}
-
-/// The stiffening of a body's skin (a fuselage's, a tank vessel's): frames, stringers, walls.
-void addBodyStructure(const std::string& structure, std::vector<ComponentLocation>& locations) {
-  locations.push_back({"frame", structure + "/frames/frame", "frame", false, true, true});
-  locations.push_back({"stringer", structure + "/stringers/stringer", "stringer", false, true, true});
-  locations.push_back(
-      {"wallSegment", structure + "/walls/wallSegments/wallSegment", "fuselage_wall", false, true, true});
-}
-
-/// The elements inside a fuselage that are geometry of their own: structure, decks, tanks.
-void addFuselageContents(const std::string& fuselage, std::vector<ComponentLocation>& locations) {
-  locations.push_back({"fuselageSegment", fuselage + "/segments/segment", "fuselage_segment", true});
-  const std::string structure = fuselage + "/structure";
-  addBodyStructure(structure, locations);
-  const std::vector<ComponentLocation> inStructure = {
-      {"pressureBulkhead", "pressureBulkheads/pressureBulkhead", "pressure_bulkhead"},
-      {"door", "cargoDoors/cargoDoor", "cargo_door"},
-      {"door", "paxDoors/paxDoor", "cargo_door"},
-      {"crossBeam", "paxCrossBeams/paxCrossBeam", "generic_system"},  // the reference's type for cross beams
-      {"crossBeam", "cargoCrossBeams/cargoCrossBeam", "generic_system"},
-      {"crossBeamStrut", "paxCrossBeamStruts/paxCrossBeamStrut", "cross_beam_strut"},
-      {"crossBeamStrut", "cargoCrossBeamStruts/cargoCrossBeamStrut", "cross_beam_strut"},
-      {"longFloorBeam", "longFloorBeams/longFloorBeam", "long_floor_beam"},
-      {"floorPanel", "floorPanels/floorPanel", "floor_panel"},
-      {"window", "windows/window", "window"},
-      {"intercostal", "intercostals/intercostal", "intercostal"},
-      {"structuralMember", "generalStructuralMembers/generalStructuralMember", "structural_member"},
-  };
-  for (const ComponentLocation& location : inStructure)
-    locations.push_back(
-        {location.nodeType, structure + "/" + location.pathInModel, location.typeName, false, true, true});
-  const std::string deck = fuselage + "/decks/deck";
-  locations.push_back({"deck", deck, "deck"});
-  for (const char* kind :
-       {"seatModules/seatModule", "galleys/galley", "lavatories/lavatory", "classDividers/classDivider",
-        "genericFloorModules/genericFloorModule", "cargoContainers/cargoContainer", "sidewallPanels/sidewallPanel",
-        "luggageCompartments/luggageCompartment", "ceilingPanels/ceilingPanel"})
-    locations.push_back({"deckComponent", deck + "/" + kind, "deck_component"});
-  const std::string tanks = fuselage + "/fuelTanks/";
-  locations.push_back({"fuelTank", tanks + "genericFuelTanks/genericFuelTank", "tank"});
-  locations.push_back({"tankHull", tanks + "genericFuelTanks/genericFuelTank/hulls/hull", "tank_hull"});
-  locations.push_back({"hullSegment", tanks + "genericFuelTanks/genericFuelTank/hulls/hull/segments/segment",
-                       "fuselage_segment", true});
-  locations.push_back({"fuelTank", tanks + "integralFuelTanks/integralFuelTank", "tank"});
-}
-
-/// Tanks of the model itself, with their vessels (a layout newer than CPACS 3.5's schema that
-/// real files and the reference use: model/fuelTanks/fuelTank/vessels/vessel).
-void addModelTanks(std::vector<ComponentLocation>& locations) {
-  locations.push_back({"fuelTank", "fuelTanks/fuelTank", "tank"});
-  locations.push_back({"tankHull", "fuelTanks/fuelTank/vessels/vessel", "tank_hull"});
-  locations.push_back({"hullSegment", "fuelTanks/fuelTank/vessels/vessel/segments/segment", "fuselage_segment", true});
-  addBodyStructure("fuelTanks/fuelTank/vessels/vessel/structure", locations);
-}
-
-/// Whether the reference library registers components of this location (QUERY-components §1):
-/// it has no class for spoilers, wing fuel tanks, frames, stringers, floor panels, windows,
-/// intercostals, general structural members and landing gear (nor for what lies in a
-/// spoiler), and reads tanks only in the model's own fuelTanks (not the CPACS 3.5 layout
-/// inside fuselages).
-bool referenceRegisters(const ComponentLocation& location) {
-  static const std::set<std::string> unregistered = {"spoiler",     "wingFuelTank",     "frame",
-                                                     "stringer",    "floorPanel",       "window",
-                                                     "intercostal", "structuralMember", "landingGear"};
-  const bool inFuselageTanks = location.pathInModel.rfind("fuselages/fuselage/fuelTanks/", 0) == 0;
-  const bool inSpoiler = location.pathInModel.find("/spoilers/spoiler/") != std::string::npos;
-  return unregistered.count(location.nodeType) == 0 && !inFuselageTanks && !inSpoiler;
-}
-
-std::vector<ComponentLocation> catalogue() {
-  std::vector<ComponentLocation> locations = {
-      {kModelNodeType, "", "plane", true},
-      {"fuselage", "fuselages/fuselage", "fuselage"},
-      {"wing", "wings/wing", "wing"},
-      {"rotorBlade", "rotorBlades/rotorBlade", "rotor_blade"},
-      {"engine", "engines/engine", "engine_nacelle"},
-      {"enginePylon", "enginePylons/enginePylon", "engine_pylon"},
-      {"pylonSegment", "enginePylons/enginePylon/segments/segment", "wing_segment", true},
-      {"rotor", "rotors/rotor", "rotor"},
-      {"duct", "ducts/duct", "duct"},
-      {"duct", "ducts/ductAssembly", "duct"},
-      {"ductSegment", "ducts/duct/segments/segment", "fuselage_segment", true},
-      {"genericGeometryComponent", "genericGeometryComponents/genericGeometryComponent", "external_object"},
-      {"landingGear", "landingGears/landingGear", "landing_gear"},
-      // A rotorcraft's gears (CPACS 3.5 rotorcraftModelType), kind by kind.
-      {"landingGear", "landingGear/noseGears/noseGear", "landing_gear"},
-      {"landingGear", "landingGear/mainGears/mainGear", "landing_gear"},
-      {"landingGear", "landingGear/skidGears/skidGear", "landing_gear"},
-      {"genericSystem", "systems/genericSystems/genericSystem", "generic_system"},
-      {"systemComponent", "systems/genericSystems/genericSystem/components/component", "system_component"},
-  };
-  addWingContents("wings/wing", locations);
-  addWingContents("rotorBlades/rotorBlade", locations);
-  addFuselageContents("fuselages/fuselage", locations);
-  addModelTanks(locations);
-  for (ComponentLocation& location : locations) {
-    location.listed = referenceRegisters(location);
-    location.group = location.nodeType == "genericSystem" || location.nodeType == "deck" ||
-                     location.pathInModel == "ducts/ductAssembly";
-    location.inConfigurationBox = location.pathInModel == "fuselages/fuselage" ||
-                                  location.pathInModel == "wings/wing" || location.pathInModel == "rotors/rotor" ||
-                                  location.pathInModel == "enginePylons/enginePylon" ||
-                                  location.pathInModel == "genericGeometryComponents/genericGeometryComponent";
+  if (!resolving.insert(declaration.within).second) return;
+  for (const ComponentLocation& container : declared) {
+    if (container.nodeType != declaration.within) continue;
+    std::vector<ComponentLocation> containers;
+    resolve(container, declared, resolving, containers);
+    for (const ComponentLocation& outer : containers) {
+      ComponentLocation inner = location;
+      inner.pathInModel =
+          outer.pathInModel.empty() ? location.pathInModel : outer.pathInModel + "/" + location.pathInModel;
+      inner.listed = location.listed && outer.listed;
+      resolved.push_back(inner);
+    }
   }
-  return locations;
+  resolving.erase(declaration.within);
+}
+
+/// Calls `found` for every element below `element` whose path from the model is one of the
+/// locations', in document order; descends only where a location's path continues.
+void collect(const DOMElement& element, const std::string& path, const std::map<std::string, std::size_t>& atPath,
+             const std::set<std::string>& prefixes, const std::function<void(const DOMElement&, std::size_t)>& found) {
+  for (const DOMElement* child = xml::firstElement(element); child != nullptr; child = xml::nextElement(*child)) {
+    const std::string childPath = (path.empty() ? "" : path + "/") + xml::name(*child);
+    if (prefixes.count(childPath) == 0) continue;
+    const auto location = atPath.find(childPath);
+    if (location != atPath.end()) found(*child, location->second);
+    collect(*child, childPath, atPath, prefixes, found);
+  }
 }
 
 }  // namespace
 
-const std::vector<ComponentLocation>& standardComponentLocations() {
-  static const std::vector<ComponentLocation> locations = catalogue();
-  return locations;
+ComponentLocation ComponentLocation::inside(std::string container) const {
+  ComponentLocation copy = *this;
+  copy.within = std::move(container);
+  return copy;
+}
+
+ComponentLocation ComponentLocation::typed(std::string protocolType) const {
+  ComponentLocation copy = *this;
+  copy.typeName = std::move(protocolType);
+  return copy;
+}
+
+ComponentLocation ComponentLocation::asPart() const {
+  ComponentLocation copy = *this;
+  copy.part = true;
+  return copy;
+}
+
+ComponentLocation ComponentLocation::asInsideParent() const {
+  ComponentLocation copy = *this;
+  copy.insideParent = true;
+  return copy;
+}
+
+ComponentLocation ComponentLocation::asStructure() const {
+  ComponentLocation copy = asInsideParent();
+  copy.structure = true;
+  return copy;
+}
+
+ComponentLocation ComponentLocation::inBox() const {
+  ComponentLocation copy = *this;
+  copy.inConfigurationBox = true;
+  return copy;
+}
+
+ComponentLocation ComponentLocation::unlisted() const {
+  ComponentLocation copy = *this;
+  copy.listed = false;
+  return copy;
+}
+
+ComponentLocation ComponentLocation::asGroup() const {
+  ComponentLocation copy = *this;
+  copy.group = true;
+  return copy;
+}
+
+ComponentLocation ComponentLocation::placedByItsTransformation() const {
+  ComponentLocation copy = *this;
+  copy.placedByTransformation = true;
+  return copy;
+}
+
+std::vector<ComponentLocation> resolveLocations(const std::vector<ComponentLocation>& declared) {
+  std::vector<ComponentLocation> resolved = {ComponentLocation{kModelNodeType, "", "plane"}.asPart()};
+  for (const ComponentLocation& declaration : declared) {
+    std::set<std::string> resolving;
+    resolve(declaration, declared, resolving, resolved);
+  }
+  return resolved;
 }
 
 long ComponentGraph::find(const std::string& uid) const {
@@ -221,6 +180,7 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
   component.inConfigurationBox = location.inConfigurationBox;
   component.listed = location.listed;
   component.group = location.group;
+  component.placedByTransformation = location.placedByTransformation;
   if (const DOMElement* parent = xml::firstChild(element, "parentUID")) component.parentUid = xml::text(*parent);
   component.parentUid.erase(0, component.parentUid.find_first_not_of(" \t\r\n"));
   component.parentUid.erase(component.parentUid.find_last_not_of(" \t\r\n") + 1);
@@ -259,12 +219,20 @@ ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vec
                                      Problems& warnings) {
   ComponentGraph result;
   const std::vector<const DOMElement*> modelElements = models(cpacsRoot);
+  std::map<std::string, std::size_t> atPath;  // the first location declared at a path claims it
+  std::set<std::string> prefixes;
+  for (std::size_t i = 0; i < locations.size(); ++i) {
+    const std::string& path = locations[i].pathInModel;
+    atPath.emplace(path, i);
+    for (std::size_t slash = path.find('/'); slash != std::string::npos; slash = path.find('/', slash + 1))
+      prefixes.insert(path.substr(0, slash));
+    prefixes.insert(path);
+  }
   for (std::size_t model = 0; model < modelElements.size(); ++model) {
-    for (const auto& location : locations) {
-      std::vector<const DOMElement*> found;
-      select(*modelElements[model], split(location.pathInModel), 0, found);
-      for (const DOMElement* element : found) result.add(*element, location, model);
-    }
+    const auto modelLocation = atPath.find("");
+    if (modelLocation != atPath.end()) result.add(*modelElements[model], locations[modelLocation->second], model);
+    collect(*modelElements[model], "", atPath, prefixes,
+            [&](const DOMElement& element, std::size_t location) { result.add(element, locations[location], model); });
   }
   result.resolveParents(warnings);
 

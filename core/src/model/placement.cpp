@@ -2,14 +2,14 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <sstream>
-#include <type_traits>
 
 #include <Eigen/Geometry>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/schema/node_lookup.h"
 
 namespace airshape::model {
 
@@ -33,68 +33,22 @@ double coordinate(const std::optional<double>& value, const std::string& xpath, 
   return *value;
 }
 
-/// The parentUID of a component that may have one (optional in the schema) or must (required).
-std::string parentOf(const std::optional<std::string>& parent) { return parent.value_or(""); }
-std::string parentOf(const std::string& parent) { return parent; }
-
-/// The own transformation and parentUID of a wing, fuselage, rotor blade, rotor, engine
-/// placement, engine pylon or duct of any model.
+/// The own transformation and the parent of a component placed by its transformation.
 struct Placed {
   const schema::TransformationType* transformation = nullptr;
   std::string parentUid;
 };
 
-template <class Model>
-bool findIn(const Model& model, const std::string& uid, Placed& found) {
-  auto visit = [&](const auto& component) {
-    if (component.uID != uid) return false;
-    found.transformation = component.transformation.get();
-    found.parentUid = parentOf(component.parentUID);
-    return true;
-  };
-  if (model.wings)
-    for (const auto& wing : model.wings->wing)
-      if (visit(wing)) return true;
-  if (model.fuselages)
-    for (const auto& fuselage : model.fuselages->fuselage)
-      if (visit(fuselage)) return true;
-  if (model.engines)
-    for (const auto& engine : model.engines->engine)
-      if (visit(engine)) return true;
-  if constexpr (std::is_same_v<Model, schema::AircraftModelType>) {
-    // Ducts have no parent in CPACS 3.5.
-    if (model.ducts)
-      for (const auto& duct : model.ducts->duct)
-        if (duct.uID == uid) {
-          found.transformation = duct.transformation.get();
-          found.parentUid.clear();
-          return true;
-        }
-    if (model.enginePylons)
-      for (const auto& pylon : model.enginePylons->enginePylon)
-        if (visit(pylon)) return true;
-  }
-  // Rotor blades count as wings of a rotorcraft model (primary_model.h).
-  if constexpr (std::is_same_v<Model, schema::RotorcraftModelType>) {
-    if (model.rotorBlades)
-      for (const auto& blade : model.rotorBlades->rotorBlade)
-        if (visit(blade)) return true;
-    if (model.rotors)
-      for (const auto& rotor : model.rotors->rotor)
-        if (visit(rotor)) return true;
-  }
-  return false;
-}
-
-bool findPlaced(const schema::CpacsType& cpacs, const std::string& uid, Placed& found) {
-  if (!cpacs.vehicles) return false;
-  if (cpacs.vehicles->aircraft)
-    for (const auto& model : cpacs.vehicles->aircraft->model)
-      if (findIn(model, uid, found)) return true;
-  if (cpacs.vehicles->rotorcraft)
-    for (const auto& model : cpacs.vehicles->rotorcraft->model)
-      if (findIn(model, uid, found)) return true;
-  return false;
+/// The component with this uID if its plugin declares it placed by its own transformation.
+std::optional<Placed> placedComponent(const Configuration& configuration, const std::string& uid) {
+  const long index = configuration.components().find(uid);
+  if (index < 0) return std::nullopt;
+  const graph::Component& component = configuration.components().components()[static_cast<std::size_t>(index)];
+  if (!component.placedByTransformation) return std::nullopt;
+  schema::Node* node = schema::nodeBoundTo(configuration.cpacs(), *component.element);
+  if (node == nullptr) return std::nullopt;
+  return Placed{dynamic_cast<const schema::TransformationType*>(schema::childNode(*node, "transformation")),
+                component.parentUid};
 }
 
 }  // namespace
@@ -128,19 +82,19 @@ Transform componentTransform(const Configuration& configuration, const std::stri
   bool first = true;
   // Walks up the parent chain: the component's own matrix, then its parents' translations.
   for (std::size_t depth = 0; !current.empty() && depth < 64; ++depth) {
-    Placed placed;
-    if (!findPlaced(configuration.cpacs(), current, placed)) break;
-    const Transform own = transformationMatrix(placed.transformation);
+    const std::optional<Placed> placed = placedComponent(configuration, current);
+    if (!placed) break;
+    const Transform own = transformationMatrix(placed->transformation);
     if (first) {
       result = own;
       first = false;
     } else {
       result.pretranslate(own.translation());
     }
-    const bool absGlobal = placed.transformation && placed.transformation->translation &&
-                           placed.transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
+    const bool absGlobal = placed->transformation && placed->transformation->translation &&
+                           placed->transformation->translation->refType == schema::PointAbsRelTypeRefType::AbsGlobal;
     if (absGlobal) break;
-    current = placed.parentUid;
+    current = placed->parentUid;
   }
   return result;
 }

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include <dlfcn.h>
@@ -192,14 +193,17 @@ void PluginHost::registerReadyPlugins() {
 
 void PluginHost::registerPlugin(LoadedPlugin loaded) {
   const std::shared_ptr<Plugin>& plugin = loaded.plugin;
+  std::set<std::string> granted, refused;  // a node type may be declared at several places
   for (const NodeType& type : plugin->nodeTypes()) {
-    const std::string owner = pluginFor(type.name);
+    const std::string owner = pluginFor(type.nodeType);
     if (!owner.empty()) {
-      messages_.push_back(loaded.file + ": plugin " + plugin->name() + " claims node type '" + type.name +
-                          "', which plugin " + owner + " builds already; the claim is ignored");
+      if (refused.insert(type.nodeType).second)
+        messages_.push_back(loaded.file + ": plugin " + plugin->name() + " claims node type '" + type.nodeType +
+                            "', which plugin " + owner + " builds already; the claim is ignored");
       continue;
     }
     loaded.nodeTypes.push_back(type);
+    granted.insert(type.nodeType);
   }
   plugin->useServices(services_);
   plugin->offerServices(services_);
@@ -217,31 +221,25 @@ void PluginHost::registerPlugin(LoadedPlugin loaded) {
   ComponentShapes offered;
   plugin->registerShapeBuilders(offered);
   for (const ComponentCutOuts& cutOuts : offered.cutOuts()) shapes_.addCutOuts(cutOuts);
-  for (const NodeType& type : loaded.nodeTypes) {  // only for the node types it was granted
-    if (const ShapeBuilder* builder = offered.find(type.name)) shapes_.add(type.name, *builder);
-    if (const ShapeBuilder* detailed = offered.findDetailed(type.name)) shapes_.addDetailed(type.name, *detailed);
-    if (const ComponentMotion* motion = offered.findMotion(type.name)) shapes_.addMotion(type.name, *motion);
-    if (const std::string* why = offered.declined(type.name)) shapes_.decline(type.name, *why);
+  for (const std::string& type : granted) {  // only for the node types it was granted
+    if (const ShapeBuilder* builder = offered.find(type)) shapes_.add(type, *builder);
+    if (const ShapeBuilder* detailed = offered.findDetailed(type)) shapes_.addDetailed(type, *detailed);
+    if (const ComponentMotion* motion = offered.findMotion(type)) shapes_.addMotion(type, *motion);
+    if (const std::string* why = offered.declined(type)) shapes_.decline(type, *why);
   }
   plugins_.push_back(std::move(loaded));
 }
 
 std::vector<graph::ComponentLocation> PluginHost::componentLocations() const {
-  std::vector<graph::ComponentLocation> locations = graph::standardComponentLocations();
-  for (const auto& loaded : plugins_) {
-    for (const NodeType& type : loaded.nodeTypes) {
-      const bool known = std::any_of(locations.begin(), locations.end(),
-                                     [&](const graph::ComponentLocation& l) { return l.nodeType == type.name; });
-      if (!known && !type.pathInModel.empty()) locations.push_back({type.name, type.pathInModel, type.name});
-    }
-  }
-  return locations;
+  std::vector<graph::ComponentLocation> declared;
+  for (const auto& loaded : plugins_) declared.insert(declared.end(), loaded.nodeTypes.begin(), loaded.nodeTypes.end());
+  return graph::resolveLocations(declared);
 }
 
 std::string PluginHost::pluginFor(const std::string& nodeType) const {
   for (const auto& loaded : plugins_)
     for (const NodeType& type : loaded.nodeTypes)
-      if (type.name == nodeType) return loaded.plugin->name();
+      if (type.nodeType == nodeType) return loaded.plugin->name();
   return {};
 }
 

@@ -55,11 +55,25 @@ Json motionJson(double p, const gp_Trsf& motion) {
   return {{"control_parameter", p}, {"rotation", rotationAngle(motion)}, {"matrix", rows}};
 }
 
+/// The devices of a wing's component segments: inside the wing's solid, cut from it. The
+/// reference library has no component for spoilers: they are built but not listed.
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  std::vector<plugin::NodeType> types;
+  for (const auto& [device, folder] : {std::pair<const char*, const char*>{"trailingEdgeDevice", "trailingEdgeDevices"},
+                                       {"leadingEdgeDevice", "leadingEdgeDevices"},
+                                       {"spoiler", "spoilers"}})
+    types.push_back(plugin::NodeType{device, std::string("controlSurfaces/") + folder + "/" + device}
+                        .inside("wingComponentSegment")
+                        .typed("control_surface")
+                        .asInsideParent());
+  types.back() = types.back().unlisted();
+  return types;
+}
+
 class ControlSurfacesPlugin final : public plugin::BasicPlugin {
  public:
   ControlSurfacesPlugin()
-      : BasicPlugin("controlsurfaces", "0.3.0", "flaps, slats, ailerons and spoilers of wings",
-                    {{"trailingEdgeDevice", ""}, {"leadingEdgeDevice", ""}, {"spoiler", ""}},
+      : BasicPlugin("controlsurfaces", "0.3.0", "flaps, slats, ailerons and spoilers of wings", declaredNodeTypes(),
                     {{"wing", "0.1.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {

@@ -49,6 +49,16 @@ std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
   return query::selectByIndexOrUid(q, "segment", geometry.segmentUids(), "segment");
 }
 
+/// Fuselages with their segments (parts of the fuselage's solid), and ducts lofted the same way;
+/// a duct assembly is a group of ducts.
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  using plugin::NodeType;
+  return {NodeType{"fuselage", "fuselages/fuselage"}.inBox().placedByItsTransformation(),
+          NodeType{"fuselageSegment", "segments/segment"}.inside("fuselage").typed("fuselage_segment").asPart(),
+          NodeType{"duct", "ducts/duct"}.placedByItsTransformation(), NodeType{"duct", "ducts/ductAssembly"}.asGroup(),
+          NodeType{"ductSegment", "ducts/duct/segments/segment"}.typed("fuselage_segment").asPart()};
+}
+
 class FuselagePlugin final : public plugin::BasicPlugin {
  public:
   void offerServices(plugin::ServiceRegistry& services) const override {
@@ -86,7 +96,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
 
   FuselagePlugin()
       : BasicPlugin("fuselage", "0.3.0", "CPACS fuselages (profiles, sections, segments) and ducts lofted as they are",
-                    {{"fuselage", "fuselages/fuselage"}, {"fuselageSegment", ""}, {"duct", ""}, {"ductSegment", ""}}) {}
+                    declaredNodeTypes()) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"fuselage_count", "", "-> number of fuselages of the model",

@@ -10,16 +10,29 @@
 namespace airshape::generic {
 namespace {
 
+/// Systems and decks (groups of their components), their components, and external objects.
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  using plugin::NodeType;
+  std::vector<NodeType> types = {NodeType{"deck", "decks/deck"}.inside("fuselage").asGroup()};
+  for (const char* kind :
+       {"seatModules/seatModule", "galleys/galley", "lavatories/lavatory", "classDividers/classDivider",
+        "genericFloorModules/genericFloorModule", "cargoContainers/cargoContainer", "sidewallPanels/sidewallPanel",
+        "luggageCompartments/luggageCompartment", "ceilingPanels/ceilingPanel"})
+    types.push_back(NodeType{"deckComponent", kind}.inside("deck").typed("deck_component"));
+  types.push_back(NodeType{"genericSystem", "systems/genericSystems/genericSystem"}.typed("generic_system").asGroup());
+  types.push_back(
+      NodeType{"systemComponent", "components/component"}.inside("genericSystem").typed("system_component"));
+  types.push_back(NodeType{"genericGeometryComponent", "genericGeometryComponents/genericGeometryComponent"}
+                      .typed("external_object")
+                      .inBox());
+  return types;
+}
+
 class GenericPlugin final : public plugin::BasicPlugin {
  public:
   GenericPlugin()
       : BasicPlugin("generic", "0.2.0", "systems, decks and their components, external objects (CAD files)",
-                    {{"deck", ""},
-                     {"deckComponent", ""},
-                     {"genericSystem", ""},
-                     {"systemComponent", ""},
-                     {"genericGeometryComponent", ""}},
-                    {{"fuselage", "0.3.0", "1.0.0"}}) {}
+                    declaredNodeTypes(), {{"fuselage", "0.3.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     fuselages_ = services.find<fuselage::FuselageServices>(fuselage::kFuselageServices);

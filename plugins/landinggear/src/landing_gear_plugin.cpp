@@ -11,11 +11,21 @@ constexpr const char* kWhyNotBuilt =
     "CPACS 3.5 gives its struts no frame, and its one public example is in millimetres, not metres "
     "(docs/landinggear.md)";
 
+/// An aircraft's gears, and a rotorcraft's kind by kind (CPACS 3.5 rotorcraftModelType). The
+/// reference library has no component for them.
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  std::vector<plugin::NodeType> types;
+  for (const char* path : {"landingGears/landingGear", "landingGear/noseGears/noseGear",
+                           "landingGear/mainGears/mainGear", "landingGear/skidGears/skidGear"})
+    types.push_back(plugin::NodeType{"landingGear", path}.typed("landing_gear").unlisted());
+  return types;
+}
+
 class LandingGearPlugin final : public plugin::BasicPlugin {
  public:
   LandingGearPlugin()
       : BasicPlugin("landinggear", "0.1.0", "landing gears: listed, not built yet (their frame is undefined)",
-                    {{"landingGear", ""}}) {}
+                    declaredNodeTypes()) {}
 
   void registerShapeBuilders(ComponentShapes& shapes) const override { shapes.decline("landingGear", kWhyNotBuilt); }
 };

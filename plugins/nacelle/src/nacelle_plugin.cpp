@@ -10,11 +10,19 @@
 namespace airshape::nacelle {
 namespace {
 
+/// Engines (with their nacelles) and pylons with their segments (parts of the pylon's solid).
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  using plugin::NodeType;
+  return {NodeType{"engine", "engines/engine"}.typed("engine_nacelle").placedByItsTransformation(),
+          NodeType{"enginePylon", "enginePylons/enginePylon"}.typed("engine_pylon").inBox().placedByItsTransformation(),
+          NodeType{"pylonSegment", "segments/segment"}.inside("enginePylon").typed("wing_segment").asPart()};
+}
+
 class NacellePlugin final : public plugin::BasicPlugin {
  public:
   NacellePlugin()
       : BasicPlugin("nacelle", "0.2.0", "engine nacelles (cowls of one section) and pylons with their segments",
-                    {{"engine", ""}, {"enginePylon", ""}, {"pylonSegment", ""}}, {{"wing", "0.1.0", "1.0.0"}}) {}
+                    declaredNodeTypes(), {{"wing", "0.1.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     wing_ = services.find<wing::WingServices>(wing::kWingServices);

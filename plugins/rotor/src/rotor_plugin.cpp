@@ -25,10 +25,15 @@ const schema::RotorType& selectRotor(const Configuration& configuration, const J
   return *rotors[query::selectByIndexOrUid(query, "rotor", uids, "rotor")];
 }
 
+/// Rotors (their hubs with the blades attached).
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  return {plugin::NodeType{"rotor", "rotors/rotor"}.inBox().placedByItsTransformation()};
+}
+
 class RotorPlugin final : public plugin::BasicPlugin {
  public:
   RotorPlugin()
-      : BasicPlugin("rotor", "0.2.0", "rotors with their hubs and attached blades", {{"rotor", ""}},
+      : BasicPlugin("rotor", "0.2.0", "rotors with their hubs and attached blades", declaredNodeTypes(),
                     {{"wing", "0.1.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {

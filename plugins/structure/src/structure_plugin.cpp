@@ -35,6 +35,64 @@ struct HeldServices {
   StructureServices operator*() const { return {*wing, *devices}; }
 };
 
+/// Structure lies inside its parent's solid (exported when named, not in the configuration's
+/// box). A wing's: spars, ribs and cells in its component segments and in their control devices,
+/// and its fuel tanks. A body's skin stiffening (a fuselage's, a tank vessel's): frames,
+/// stringers, walls; and a fuselage's further structure. The reference library has no component
+/// for wing fuel tanks, frames, stringers, floor panels, windows, intercostals and general
+/// structural members: built, but not listed.
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  using plugin::NodeType;
+  std::vector<NodeType> types;
+  for (const char* holder : {"wingComponentSegment", "trailingEdgeDevice", "leadingEdgeDevice", "spoiler"}) {
+    types.push_back(NodeType{"sparSegment", "structure/spars/sparSegments/sparSegment"}
+                        .inside(holder)
+                        .typed("wing_spar")
+                        .asStructure());
+    types.push_back(NodeType{"ribsDefinition", "structure/ribsDefinitions/ribsDefinition"}
+                        .inside(holder)
+                        .typed("wing_rib")
+                        .asStructure());
+    for (const char* shell : {"structure/upperShell/cells/cell", "structure/lowerShell/cells/cell"})
+      types.push_back(NodeType{"wingCell", shell}.inside(holder).typed("wing_cell").asInsideParent());
+  }
+  types.push_back(NodeType{"wingFuelTank", "wingFuelTanks/wingFuelTank"}
+                      .inside("wingComponentSegment")
+                      .typed("tank")
+                      .asInsideParent()
+                      .unlisted());
+  for (const char* body : {"fuselage", "tankHull"}) {
+    types.push_back(NodeType{"frame", "structure/frames/frame"}.inside(body).asStructure().unlisted());
+    types.push_back(NodeType{"stringer", "structure/stringers/stringer"}.inside(body).asStructure().unlisted());
+    types.push_back(NodeType{"wallSegment", "structure/walls/wallSegments/wallSegment"}
+                        .inside(body)
+                        .typed("fuselage_wall")
+                        .asStructure());
+  }
+  const std::vector<NodeType> inFuselageStructure = {
+      NodeType{"pressureBulkhead", "pressureBulkheads/pressureBulkhead"}.typed("pressure_bulkhead"),
+      NodeType{"door", "cargoDoors/cargoDoor"}.typed("cargo_door"),
+      NodeType{"door", "paxDoors/paxDoor"}.typed("cargo_door"),
+      // the reference's type for cross beams
+      NodeType{"crossBeam", "paxCrossBeams/paxCrossBeam"}.typed("generic_system"),
+      NodeType{"crossBeam", "cargoCrossBeams/cargoCrossBeam"}.typed("generic_system"),
+      NodeType{"crossBeamStrut", "paxCrossBeamStruts/paxCrossBeamStrut"}.typed("cross_beam_strut"),
+      NodeType{"crossBeamStrut", "cargoCrossBeamStruts/cargoCrossBeamStrut"}.typed("cross_beam_strut"),
+      NodeType{"longFloorBeam", "longFloorBeams/longFloorBeam"}.typed("long_floor_beam"),
+      NodeType{"floorPanel", "floorPanels/floorPanel"}.typed("floor_panel").unlisted(),
+      NodeType{"window", "windows/window"}.unlisted(),
+      NodeType{"intercostal", "intercostals/intercostal"}.unlisted(),
+      NodeType{"structuralMember", "generalStructuralMembers/generalStructuralMember"}
+          .typed("structural_member")
+          .unlisted(),
+  };
+  for (NodeType type : inFuselageStructure) {
+    type.pathInModel = "structure/" + type.pathInModel;
+    types.push_back(type.inside("fuselage").asStructure());
+  }
+  return types;
+}
+
 class StructurePlugin final : public plugin::BasicPlugin {
  public:
   StructurePlugin()
@@ -42,22 +100,7 @@ class StructurePlugin final : public plugin::BasicPlugin {
             "structure", "0.7.0",
             "wing and fuselage structure: spar webs, ribs, cells, wing fuel tanks, frames and stringers (lines), "
             "pressure bulkheads, doors, walls, cross beams, struts and long floor beams",
-            {{"sparSegment", ""},
-             {"ribsDefinition", ""},
-             {"wingCell", ""},
-             {"wingFuelTank", ""},
-             {"frame", ""},
-             {"stringer", ""},
-             {"pressureBulkhead", ""},
-             {"door", ""},
-             {"crossBeam", ""},
-             {"crossBeamStrut", ""},
-             {"longFloorBeam", ""},
-             {"wallSegment", ""},
-             {"floorPanel", ""},
-             {"window", ""},
-             {"intercostal", ""},
-             {"structuralMember", ""}},
+            declaredNodeTypes(),
             {{"wing", "0.1.0", "1.0.0"},
              {"fuselage", "0.1.0", "1.0.0"},
              {"tank", "0.2.0", "1.0.0"},

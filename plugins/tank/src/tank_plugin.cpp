@@ -30,11 +30,26 @@ NamedShape tankShape(const Configuration& configuration, const fuselage::Fuselag
   return compoundOfNamedShapes(solids);
 }
 
+/// Tanks with their vessels and the vessels' segments (parts of the vessel's solid): the model's
+/// own tanks (model/fuelTanks/fuelTank/vessels/vessel, newer than CPACS 3.5's schema; real files
+/// and the reference use it) and CPACS 3.5's tanks in fuselages, which the reference does not
+/// read: built, but not listed.
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  using plugin::NodeType;
+  return {
+      NodeType{"fuelTank", "fuelTanks/fuelTank"}.typed("tank"),
+      NodeType{"fuelTank", "fuelTanks/genericFuelTanks/genericFuelTank"}.inside("fuselage").typed("tank").unlisted(),
+      NodeType{"fuelTank", "fuelTanks/integralFuelTanks/integralFuelTank"}.inside("fuselage").typed("tank").unlisted(),
+      NodeType{"tankHull", "vessels/vessel"}.inside("fuelTank").typed("tank_hull"),
+      NodeType{"tankHull", "hulls/hull"}.inside("fuelTank").typed("tank_hull"),
+      NodeType{"hullSegment", "segments/segment"}.inside("tankHull").typed("fuselage_segment").asPart()};
+}
+
 class TankPlugin final : public plugin::BasicPlugin {
  public:
   TankPlugin()
       : BasicPlugin("tank", "0.2.0", "fuel tanks and their vessels: lofted bodies or cylinders between domes",
-                    {{"fuelTank", ""}, {"tankHull", ""}, {"hullSegment", ""}}, {{"fuselage", "0.3.0", "1.0.0"}}) {}
+                    declaredNodeTypes(), {{"fuselage", "0.3.0", "1.0.0"}}) {}
 
   void useServices(const plugin::ServiceRegistry& services) override {
     fuselages_ = services.find<fuselage::FuselageServices>(fuselage::kFuselageServices);

@@ -70,6 +70,23 @@ query::Handler segmentMeasure(double (WingShape::*measure)(std::size_t) const) {
   };
 }
 
+/// Wings and rotor blades, and inside each its segments and component segments (parts of its
+/// solid that queries measure).
+std::vector<plugin::NodeType> declaredNodeTypes() {
+  using plugin::NodeType;
+  std::vector<NodeType> types = {
+      NodeType{"wing", "wings/wing"}.inBox().placedByItsTransformation(),
+      NodeType{"rotorBlade", "rotorBlades/rotorBlade"}.typed("rotor_blade").placedByItsTransformation()};
+  for (const char* body : {"wing", "rotorBlade"}) {
+    types.push_back(NodeType{"wingSegment", "segments/segment"}.inside(body).typed("wing_segment").asPart());
+    types.push_back(NodeType{"wingComponentSegment", "componentSegments/componentSegment"}
+                        .inside(body)
+                        .typed("wing_component_segment")
+                        .asPart());
+  }
+  return types;
+}
+
 class WingPlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
@@ -100,7 +117,7 @@ class WingPlugin final : public plugin::BasicPlugin {
 
   WingPlugin()
       : BasicPlugin("wing", "0.1.0", "CPACS wings: profiles, sections, segments, component segments",
-                    {{"wing", ""}, {"rotorBlade", ""}, {"wingSegment", ""}, {"wingComponentSegment", ""}}) {}
+                    declaredNodeTypes()) {}
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"wing_count", "", "-> number of wings of the model",

@@ -9,57 +9,75 @@
 
 namespace airshape::graph {
 
-/// Where components of one node type live, relative to a model element
-/// (/cpacs/vehicles/aircraft/model or /cpacs/vehicles/rotorcraft/model).
+/// Where components of one node type live and what they are. Plugins declare these for the
+/// node types they build (docs/plugins.md, "Declaring node types"); the core knows no kind by
+/// name. A declaration either gives a path relative to a model element
+/// (/cpacs/vehicles/aircraft/model or /cpacs/vehicles/rotorcraft/model), or a path relative to
+/// every element of another node type (`inside`): the core composes the two.
 struct ComponentLocation {
-  std::string nodeType;     ///< what plugins claim, e.g. "wing" or "sparSegment"
-  std::string pathInModel;  ///< e.g. "wings/wing"; a node type may live at several paths; "" the model
-  std::string typeName;     ///< the component type of the query protocol, e.g. "wing_spar"
-  /// A part of its parent's solid (a wing's segments and component segments, a fuselage's
-  /// segments) or the model itself: a component that queries measure, but that `build` and
-  /// `export` do not build on their own.
+  std::string nodeType{};     ///< what plugins claim, e.g. "sensorPod"
+  std::string pathInModel{};  ///< e.g. "sensorPods/sensorPod"; "" the model; relative to `within` if set
+  std::string typeName{};     ///< the component type of the query protocol; empty: the node type
+  /// A part of its parent's solid (segments of a lofted body) or the model itself: a component
+  /// that queries measure, but that `build` and `export` do not build on their own.
   bool part = false;
-  /// Lies inside its parent's solid (control devices cut from it, structure within it):
-  /// built and measured on its own, but exported only when named, and not part of the
-  /// configuration's box (its parent covers it).
+  /// Lies inside its parent's solid (devices cut from it, structure within it): built and
+  /// measured on its own, but exported only when named, and not part of the configuration's
+  /// box (its parent covers it).
   bool insideParent = false;
-  /// Structure of its parent (spars, ribs, cells, frames, ...): surfaces that `export
-  /// --structure` joins with its parent's faces into one connected shell.
+  /// Structure of its parent: surfaces that `export --structure` joins with its parent's faces
+  /// into one connected shell.
   bool structure = false;
   /// Counts in the configuration's box and length (QUERY-components §7): the flying and the
-  /// external parts, not what lies in or on them (nacelles, ducts, tanks, decks, systems).
+  /// external parts, not what lies in or on them.
   bool inConfigurationBox = false;
-  /// Listed by `component_list`: a component the reference library registers (QUERY-components
-  /// §1). Spoilers, wing fuel tanks, frames, stringers and a few more are built and measured
-  /// like any component, but the reference has no component for them.
+  /// Listed by `component_list` (a component the reference library registers, QUERY-components
+  /// §1). A declaration inside an unlisted node type's elements is unlisted too.
   bool listed = true;
-  /// A compound of components that are exported on their own (a system's and a deck's
-  /// components, a duct assembly's ducts): built, measured and listed like any component, but
-  /// exported only when named, so that an export writes no solid twice.
+  /// A compound of components that are exported on their own: built, measured and listed like
+  /// any component, but exported only when named, so that an export writes no solid twice.
   bool group = false;
+  /// Placed by its own `transformation` and its parent's origin (model::componentTransform):
+  /// the components a model holds directly, not what lies in them.
+  bool placedByTransformation = false;
+  /// The node type whose elements hold this one; empty: the model element.
+  std::string within{};
+
+  /// The same declaration with another trait; they read as a sentence in a plugin:
+  /// `ComponentLocation{"probe", "probes/probe"}.inside("sensorPod").asInsideParent()`.
+  ComponentLocation inside(std::string container) const;
+  ComponentLocation typed(std::string protocolType) const;
+  ComponentLocation asPart() const;
+  ComponentLocation asInsideParent() const;
+  /// Inside its parent and joined with it by `export --structure`.
+  ComponentLocation asStructure() const;
+  ComponentLocation inBox() const;
+  ComponentLocation unlisted() const;
+  ComponentLocation asGroup() const;
+  ComponentLocation placedByItsTransformation() const;
 };
 
 /// The node type of the model element itself (type `plane`), which has no shape.
 inline const char* const kModelNodeType = "model";
 
-/// Every geometric element CPACS 3.5 defines, in the order `info` lists them: the components
-/// of a model (wings, fuselages, engines, ...) and the elements inside them that are geometry
-/// of their own (control devices, spars, ribs, cells, frames, decks, tanks, ...), and as parts
-/// the model itself, the segments and component segments.
-const std::vector<ComponentLocation>& standardComponentLocations();
+/// The locations of the given declarations relative to a model element, the model's own first:
+/// each declaration inside another node type once for every location of that type (recursively;
+/// one inside a type nobody declares has none), its type name defaulting to its node type.
+std::vector<ComponentLocation> resolveLocations(const std::vector<ComponentLocation>& declared);
 
 /// One geometric component of a model.
 struct Component {
   std::string uid;  ///< empty for an element without one (the schema requires it; validate says so)
   std::string nodeType;
-  std::string typeName;             ///< ComponentLocation::typeName
-  bool part = false;                ///< ComponentLocation::part
-  bool insideParent = false;        ///< ComponentLocation::insideParent
-  bool structure = false;           ///< ComponentLocation::structure
-  bool inConfigurationBox = false;  ///< ComponentLocation::inConfigurationBox
-  bool listed = true;               ///< ComponentLocation::listed
-  bool group = false;               ///< ComponentLocation::group
-  std::string parentUid;            ///< its parentUID, else the component it lies in; empty: attached to nothing
+  std::string typeName;                 ///< ComponentLocation::typeName
+  bool part = false;                    ///< ComponentLocation::part
+  bool insideParent = false;            ///< ComponentLocation::insideParent
+  bool structure = false;               ///< ComponentLocation::structure
+  bool inConfigurationBox = false;      ///< ComponentLocation::inConfigurationBox
+  bool listed = true;                   ///< ComponentLocation::listed
+  bool group = false;                   ///< ComponentLocation::group
+  bool placedByTransformation = false;  ///< ComponentLocation::placedByTransformation
+  std::string parentUid;                ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
   const xercesc::DOMElement* element = nullptr;
@@ -68,8 +86,9 @@ struct Component {
 /// Components connected by parentUID, in an order that builds every parent before its children.
 class ComponentGraph {
  public:
-  /// Collects the components of every model. A component inside another one (a spar in a
-  /// wing) is attached to it unless its parentUID names another component. A parentUID that
+  /// Collects the components of every model, in document order, at the given locations
+  /// (resolved: relative to a model element). A component inside another one is attached to
+  /// it unless its parentUID names another component. A parentUID that
   /// names no component (nor an element the component lies in) is reported in `warnings` and
   /// the component is built on its own; a cycle throws Error(InvalidModel) naming the uIDs in it.
   static ComponentGraph build(const xercesc::DOMElement& cpacsRoot, const std::vector<ComponentLocation>& locations,
@@ -86,7 +105,7 @@ class ComponentGraph {
   const Component& named(const std::string& uid) const;
 
  private:
-  /// Adds a component found at `location`, unless an earlier one holds its uID.
+  /// Adds a component found at `location`, unless one before it in the document holds its uID.
   void add(const xercesc::DOMElement& element, const ComponentLocation& location, std::size_t model);
   /// Attaches each component to its parent: the one its parentUID names, else the one it lies in.
   void resolveParents(Problems& warnings);

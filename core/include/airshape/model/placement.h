@@ -26,10 +26,10 @@ gp_Pnt apply(const Transform& transform, const gp_Pnt& point);
 /// convention the reference applies, even to scaling). Null gives the identity.
 Transform transformationMatrix(const schema::TransformationType* transformation);
 
-/// The component matrix C of a wing, fuselage, rotor blade, rotor, engine placement, engine
-/// pylon or duct: its own transformation, translated by its
+/// The component matrix C of a component its plugin declares placed by its own transformation
+/// (graph::ComponentLocation::placedByTransformation): that transformation, translated by its
 /// parent's origin (through the whole parentUID chain) unless its translation's refType is
-/// absGlobal. Rotation and scaling of the parent are not inherited.
+/// absGlobal. Rotation and scaling of the parent are not inherited. The identity for any other.
 Transform componentTransform(const Configuration& configuration, const std::string& uid);
 
 /// The placement of an element with a transformation of its own and a parent that is a

@@ -15,16 +15,15 @@
 /// against; the host refuses plugins whose value differs from its own. Raise it whenever
 /// a change to Plugin, QueryRegistry, Configuration or the generated model breaks plugins.
 #ifndef AIRSHAPE_PLUGIN_ABI_VERSION
-#define AIRSHAPE_PLUGIN_ABI_VERSION 8
+#define AIRSHAPE_PLUGIN_ABI_VERSION 9
 #endif
 
 namespace airshape::plugin {
 
-/// A CPACS node type a plugin builds, and where its nodes live in a model.
-struct NodeType {
-  std::string name;         ///< e.g. "wing"
-  std::string pathInModel;  ///< e.g. "wings/wing", relative to /cpacs/vehicles/aircraft/model
-};
+/// A node type a plugin builds, where its nodes live and what they are for exports and
+/// measures (graph::ComponentLocation; docs/plugins.md, "Declaring node types"). A plugin may
+/// declare one node type at several places.
+using NodeType = graph::ComponentLocation;
 
 /// A plugin another one builds on, in the versions it works with: minimum <= version < below
 /// (versions compare number by number: 0.10.0 comes after 0.9.2; an empty bound is open).
@@ -42,7 +41,7 @@ class Plugin {
   virtual std::string version() const = 0;
   /// One line on what the plugin builds.
   virtual std::string description() const = 0;
-  /// The CPACS node types this plugin builds.
+  /// The node types this plugin builds, each where it lives and what it is.
   virtual std::vector<NodeType> nodeTypes() const = 0;
   /// Adds this plugin's query ops (their owner is this plugin's name).
   virtual void registerQueries(query::QueryRegistry& registry) const = 0;
