@@ -25,7 +25,7 @@ const NamedShape& ComponentShapes::cleanNamedShapeOf(const Configuration& config
 const NamedShape& ComponentShapes::namedShapeOf(const Configuration& configuration, const std::string& uid) const {
   const NamedShape& clean = cleanNamedShapeOf(configuration, uid);
   if (!anyCutOutsOn(configuration)) return clean;
-  // The cut depends on the cutters too (a duct edited elsewhere): kept for the whole model,
+  // The cut depends on the cutters too (a cutter edited elsewhere): kept for the whole model,
   // which any edit forgets.
   return *configuration.cache().obtainForWholeModel<NamedShape>("with cut-outs of others " + uid, [&] {
     std::vector<NamedShape> tools;

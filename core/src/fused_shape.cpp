@@ -36,8 +36,8 @@ NamedShape cutNamedShape(const NamedShape& argument, const NamedShape& tool) {
   cut.SetArguments(arguments);
   cut.SetTools(tools);
   cut.SetRunParallel(true);
-  // Oriented boxes pass over more of the pairs of a cutter's plane faces and a wing's skins
-  // that cannot meet (docs/performance.md, the flaps file's main wing).
+  // Oriented boxes pass over more of the pairs of a cutter's plane faces and a lifting surface's skins
+  // that cannot meet (docs/performance.md, CPACS_30_aircraft_flaps.xml).
   cut.SetUseOBB(true);
   cut.Build();
   if (!cut.IsDone() || cut.HasErrors()) throw Error(ErrorCode::InvalidModel, "the Boolean cut failed");

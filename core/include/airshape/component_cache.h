@@ -16,7 +16,7 @@ struct CacheStatistics {
   std::size_t built = 0;        ///< objects built (first use, or again after an edit)
   std::size_t reused = 0;       ///< requests answered from the cache
   std::size_t invalidated = 0;  ///< objects forgotten because the model changed
-  /// Builds per key ("wing-geometry:W1", "shape:F1", ...), to see what an edit rebuilt.
+  /// Builds per key ("geometry:W1", "shape:F1", ...), to see what an edit rebuilt.
   std::map<std::string, std::size_t> buildsByKey;
 };
 
@@ -30,7 +30,7 @@ class ComponentCache {
   std::shared_ptr<const T> obtain(const std::string& key, const std::function<std::shared_ptr<const T>()>& build) {
     return obtainFor(key, componentOfKey(key), build);
   }
-  /// The same for an object that depends on more than one component (a wing cut by the ducts
+  /// The same for an object that depends on more than one component (a component cut by the cutters
   /// that pass through it): kept under `key` whatever it holds, forgotten on every edit.
   template <class T>
   std::shared_ptr<const T> obtainForWholeModel(const std::string& key,

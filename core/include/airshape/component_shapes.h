@@ -18,7 +18,7 @@ class Configuration;
 using ShapeBuilder = std::function<NamedShape(const Configuration& configuration, const std::string& uid)>;
 
 /// How a component moves inside the component it was cut from, by one control parameter (a
-/// flap in its wing), as the plugin that builds it says; the core poses such components for
+/// device in the surface it was cut from), as the plugin that builds it says; the core poses such components for
 /// exports without knowing what they are.
 struct ComponentMotion {
   /// The control parameters of its first and its last position.
@@ -30,8 +30,8 @@ struct ComponentMotion {
   std::function<NamedShape(const Configuration& configuration, const std::string& uid)> cutOut;
 };
 
-/// Solids that some components cut out of others while a build option is on (the duct
-/// assemblies' cut-outs in wings and fuselages, as the plugin that builds the ducts declares
+/// Solids that some components cut out of others while a build option is on (the cut-outs
+/// that passages through other components make, as the plugin that builds the passages declares
 /// them). Options are off by default; Configuration::setOption turns one on.
 struct ComponentCutOuts {
   std::string option;       ///< the option's name, e.g. "duct_cutouts"
@@ -40,8 +40,8 @@ struct ComponentCutOuts {
   std::function<std::vector<NamedShape>(const Configuration& configuration, const std::string& uid)> tools;
 };
 
-/// The shape builders plugins register, by CPACS node type, so that any code (a wing asking
-/// for its parent fuselage, the bounding box, exports) gets a component's solid without
+/// The shape builders plugins register, by CPACS node type, so that any code (a component asking
+/// for its parent's solid, the bounding box, exports) gets a component's solid without
 /// knowing which plugin builds it.
 class ComponentShapes {
  public:
@@ -61,7 +61,7 @@ class ComponentShapes {
     return entry == declined_.end() ? nullptr : &entry->second;
   }
 
-  /// A detailed shape for components whose shape is a simplification: frames and stringers
+  /// A detailed shape for components whose shape is a simplification: stiffeners
   /// are lines, and their detailed shape the profile swept along the line. Exports ask for it
   /// (ExportOptions::profiles); queries always measure the shape `add` builds.
   void addDetailed(const std::string& nodeType, ShapeBuilder builder) {
@@ -88,8 +88,8 @@ class ComponentShapes {
   /// in the configuration, with what others cut out of it while their option is on. Throws
   /// Error when no component has the uID or no plugin builds its type.
   const NamedShape& namedShapeOf(const Configuration& configuration, const std::string& uid) const;
-  /// The solid as its plugin builds it, whatever cut-outs are on: what lies inside a wing or a
-  /// fuselage (its devices, its structure) is made from this one.
+  /// The solid as its plugin builds it, whatever cut-outs are on: what lies inside a component
+  /// (its devices, its structure) is made from this one.
   const NamedShape& cleanNamedShapeOf(const Configuration& configuration, const std::string& uid) const;
   /// Whether namedShapeOf gives the component with cut-outs taken out of it (false at once,
   /// building nothing, while no cut-out option is on).

@@ -41,7 +41,7 @@ class Error : public std::runtime_error {
   std::string cpacsPath_;
 };
 
-/// A component that exists but has no shape (an engine without a nacelle, a pylon without
+/// A component that exists but has no shape (an element placed without a body, a lofted component without
 /// segments): measures refuse it with this error, the configuration's box leaves it out.
 class NoShape : public Error {
  public:

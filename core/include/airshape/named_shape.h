@@ -15,8 +15,8 @@ class gp_Trsf;
 namespace airshape {
 
 /// A component's solid with a name on each of its faces, so that a face can be found again
-/// by what it is: "<segment uID>/upper", "<wing uID>/root", "<fuselage uID>/front", ...
-/// (docs/wing.md and docs/fuselage.md list the names). The faces are faces of `shape`.
+/// by what it is: "<segment uID>/upper", "<uID>/root", "<uID>/front", ...
+/// (each plugin's docs list its names). The faces are faces of `shape`.
 struct NamedShape {
   TopoDS_Shape shape;
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
@@ -33,7 +33,7 @@ NamedShape sewnNamedSolid(const std::vector<std::pair<std::string, TopoDS_Face>>
 /// a split face inherit it; faces of inputs that name none of their faces stay unnamed.
 NamedShape namedBooleanResult(BRepAlgoAPI_BuilderAlgo& operation, const std::vector<const NamedShape*>& inputs);
 
-/// Named shapes side by side as one compound (a tank of vessels, a system of components),
+/// Named shapes side by side as one compound (a group of components),
 /// each face keeping its name; one shape is returned as it is.
 NamedShape compoundOfNamedShapes(const std::vector<const NamedShape*>& shapes);
 

@@ -35,7 +35,7 @@ std::vector<std::size_t> selectedComponents(const Configuration& configuration, 
   const graph::ComponentGraph& graph = configuration.components();
   std::vector<bool> wanted(graph.components().size(), false);
   // Every component on its own; parts (segments) and what lies inside its parent (devices at
-  // rest) are in their parents already, and groups (systems, decks, duct assemblies) in their
+  // rest) are in their parents already, and groups (ComponentLocation::group) in their
   // components.
   if (options.components.empty())
     for (std::size_t index = 0; index < wanted.size(); ++index) {
@@ -170,7 +170,7 @@ std::optional<NamedShape> detailedShape(const Configuration& configuration, cons
 
 /// The selected components that host posed ones, each with its moving parts' cut-outs cut
 /// out (and posed itself, if it moves), keyed by uID. The cuts are independent Boolean
-/// operations: made on every core, so that a tail's cut runs beside the main wing's.
+/// operations: made on every core, so that one component's cut runs beside another's.
 std::map<std::string, NamedShape> cutHosts(const Configuration& configuration, const std::vector<std::size_t>& selected,
                                            const std::vector<bool>& failed, const std::set<std::string>& hosts,
                                            const std::map<std::string, PosedComponent>& posed,

@@ -129,8 +129,8 @@ std::vector<std::string> componentsLeftOutOf(const ExportScene& scene, Format fo
 void writeScene(const ExportScene& scene, const std::string& path, Format format, const ExportOptions& options) {
   if (!scene.components.empty() && componentsLeftOutOf(scene, format).size() == scene.components.size())
     throw Error(ErrorCode::InvalidArgument,
-                formatName(format) + " holds triangles only, and every component to write is lines (frames, " +
-                    "stringers, beams): write .vtp, .glb, .gltf, .obj, .step, .iges or .brep, or sweep their "
+                formatName(format) + " holds triangles only, and every component to write is lines (stiffeners, " +
+                    "beams): write .vtp, .glb, .gltf, .obj, .step, .iges or .brep, or sweep their "
                     "profiles with --profiles",
                 path);
   quietenKernelMessages();

@@ -1,4 +1,4 @@
-// Lines in glTF: OCCT's glTF writer writes the triangles of faces only, so frames, stringers
+// Lines in glTF: OCCT's glTF writer writes the triangles of faces only, so stiffeners
 // and beams (edges outside faces) are added to its file afterwards as LINE_STRIP primitives.
 #include "gltf_lines.h"
 

@@ -6,7 +6,7 @@
 
 namespace airshape::exporting {
 
-/// Adds the scene's lines (edges outside faces: frames, stringers, beams, as the mesher's
+/// Adds the scene's lines (edges outside faces: stiffeners and beams, as the mesher's
 /// polylines) to the glTF or GLB file OCCT's writer made at `path`, which writes triangles
 /// only: each line component's node (by its uID; a new one under the root where OCCT wrote
 /// none) gets a mesh of LINE_STRIP primitives, y up as the triangles are. Without `path`

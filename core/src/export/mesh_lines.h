@@ -9,7 +9,7 @@
 
 namespace airshape::exporting {
 
-/// Whether a scene holds lines: edges outside faces (frames, stringers, beams).
+/// Whether a scene holds lines: edges outside faces (stiffeners, beams).
 bool hasLines(const ExportScene& scene);
 
 /// Whether a shape has faces (not lines alone), and whether any component of a scene has.

@@ -1,4 +1,4 @@
-// Lines in OBJ: OCCT's OBJ writer writes the triangles of faces only, so frames, stringers and
+// Lines in OBJ: OCCT's OBJ writer writes the triangles of faces only, so stiffeners and
 // beams (edges outside faces) are appended to its file as `l` records.
 #include "obj_lines.h"
 

@@ -6,7 +6,7 @@
 
 namespace airshape::exporting {
 
-/// Adds the scene's lines (edges outside faces: frames, stringers, beams, as the mesher's
+/// Adds the scene's lines (edges outside faces: stiffeners and beams, as the mesher's
 /// polylines) to the OBJ file OCCT's writer made at `path`, which writes triangles only: a
 /// group `<file>/<uID>` per line component, its points as vertices after the file's own and
 /// an `l` record per polyline. Without `path` existing (a scene of lines alone, which OCCT

@@ -87,9 +87,9 @@ std::map<std::string, PosedComponent> ownPoses(const Configuration& configuratio
 
 /// A component with the cut-outs of the moving parts it hosts (`guests`) cut out of it: the
 /// cut-outs fused into one tool first, then one cut. (Cut by them as several tools at once,
-/// OCCT 7.6 goes wrong where they overlap one another: the flaps file's main wing, whose
-/// spoilers overlap its flaps, lost 0.56 m³ where it loses 1.97, by the fused tool as by the
-/// flaps' and then the spoilers' cut-outs in turn.)
+/// OCCT 7.6 goes wrong where they overlap one another: the main lifting surface of
+/// CPACS_30_aircraft_flaps.xml, whose devices overlap, lost 0.56 m³ where it loses 1.97, by the
+/// fused tool as by the cut-outs of one group of devices and then the other's in turn.)
 NamedShape withCutOuts(const Configuration& configuration, const std::string& uid,
                        const std::vector<std::string>& guests) {
   const NamedShape& built = configuration.shapes().namedShapeOf(configuration, uid);
@@ -144,8 +144,8 @@ NamedShape posedSolid(const Configuration& configuration, const std::string& uid
     }
   // The cut-outs lie where the parts are at rest, so the cut is the same whatever their
   // deflections: kept for the configuration (under a whole-model key, which any edit forgets),
-  // a further export at other deflections moves the parts and reuses it (0.8 s of the flaps
-  // file's main wing).
+  // a further export at other deflections moves the parts and reuses it (0.8 s of
+  // CPACS_30_aircraft_flaps.xml's main lifting surface).
   const NamedShape solid = guests.empty()
                                ? withCutOuts(configuration, uid, guests)
                                : *configuration.cache().obtainForWholeModel<NamedShape>(key, [&] {

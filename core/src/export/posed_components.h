@@ -20,12 +20,12 @@ struct PosedComponent {
   std::string uid;
   double parameter = 0.0;
   /// Where it is written: its own rigid motion after that of every posed moving component it
-  /// lies in (a tab moves with its flap).
+  /// lies in (a tab moves with its device).
   gp_Trsf motion;
   /// The component that loses its cut-out: the nearest one it lies in that is posed too, or
-  /// else the exported component it lies in (a flap's wing).
+  /// else the exported component it lies in (a device's host).
   std::string host;
-  /// The components it lies in, nearest first (a tab's flap, component segment, wing).
+  /// The components it lies in, nearest first (a tab's device, then its hosts outwards).
   std::vector<std::string> within;
   /// Whether the poses name it on its own (not only by `all`).
   bool named = false;

@@ -17,8 +17,8 @@ namespace airshape::exporting {
 
 namespace {
 
-/// 1 % of the volume / area ratio, a thickness: the sagitta this leaves on a wing of
-/// relative thickness t or a round fuselage loses a few tenths of a percent of volume.
+/// 1 % of the volume / area ratio, a thickness: the sagitta this leaves on an airfoil of
+/// relative thickness t or a round body loses a few tenths of a percent of volume.
 /// Shapes without volume fall back to 0.1 % of their box diagonal.
 double automaticDeflection(const TopoDS_Shape& shape) {
   const double volume = geometry::volumeOf(shape);
@@ -38,7 +38,7 @@ bool isTriangulated(const TopoDS_Shape& shape) {
   return true;
 }
 
-/// Whether every edge outside the faces (a frame's or a stringer's line) has its polyline.
+/// Whether every edge outside the faces (a stiffener's line) has its polyline.
 bool linesDiscretised(const TopoDS_Shape& shape) {
   for (TopExp_Explorer edge(shape, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next()) {
     TopLoc_Location location;
@@ -68,7 +68,7 @@ void triangulateFinerWhereNeeded(const SceneComponent& component, const IMeshToo
 }  // namespace
 
 void triangulate(const ExportScene& scene, const ExportOptions& options) {
-  // Components on every core as well as their faces: a component of few faces (an engine's
+  // Components on every core as well as their faces: a component of few faces (a revolved
   // six revolved faces) keeps the mesher's own parallel loop on one core, and its mirrored half
   // waits for it. Each component is its own copy (no shared edges), so they mesh apart.
   parallelFor(scene.components.size(), [&](std::size_t index) {
@@ -81,7 +81,7 @@ void triangulate(const ExportScene& scene, const ExportOptions& options) {
         options.linearDeflection > 0 ? options.linearDeflection : automaticDeflection(component.shape.shape);
     parameters.Angle = options.angularDeflection;
     parameters.InParallel = true;
-    // Delabella's first triangulation of a face: the engine's revolved cowl 0.76 s -> 0.14 s
+    // Delabella's first triangulation of a face: a revolved cowl 0.76 s -> 0.14 s
     // by Watson's, crm.xml's STL 6.5 s -> 3.5 s, the same closed meshes (docs/performance.md).
     parameters.MeshAlgo = IMeshTools_MeshAlgoType_Delabella;
     BRepMesh_IncrementalMesh mesher(component.shape.shape, parameters);

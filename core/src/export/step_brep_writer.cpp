@@ -80,7 +80,7 @@ bool writableFace(const TopoDS_Face& face) {
   const Handle(Geom_Surface) surface = basisSurface(face);
   if (face.Location().Transformation().IsNegative() || !writableSurface(surface)) return false;
   // A pole (degenerate edge) is left out of its loop, and readers restore it from the edges
-  // around it: exactly on B-spline surfaces (fuselage noses, to 1e-15 in volume), but a
+  // around it: exactly on B-spline surfaces (lofted noses, to 1e-15 in volume), but a
   // spinner revolved from pole to pole came back 3e-6 off. Such faces go to OCCT's writer.
   const bool polesAllowed = surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface));
   for (TopoDS_Iterator wire(face); wire.More(); wire.Next()) {

@@ -34,8 +34,8 @@ std::map<std::string, std::vector<std::string>> structureByHost(const Configurat
   return byHost;
 }
 
-/// Whether a host was asked for: by its uID or its parent's (a wing names its component
-/// segments), or every host when none is named.
+/// Whether a host was asked for: by its uID or its parent's (naming a component selects the
+/// hosts that are its parts), or every host when none is named.
 bool wanted(const Configuration& configuration, const std::string& host, const ExportOptions& options) {
   if (options.components.empty()) return true;
   const long index = configuration.components().find(host);

@@ -21,7 +21,7 @@ std::vector<std::size_t> structuralModelComponents(const Configuration& configur
 /// The structural models `export --structure` writes (ExportOptions::structure): one per
 /// component that holds structure, named "<uID> structure", its faces named as the host's and
 /// the structure's faces they came from. Structure that fails to build is left out and said in
-/// `leftOut`. `step` is told before each model is joined (which takes seconds on a large wing).
+/// `leftOut`. `step` is told before each model is joined (which takes seconds on a large model).
 /// Throws Error naming the host when the faces cannot be joined.
 std::vector<SceneComponent> structuralModels(const Configuration& configuration, const ExportOptions& options,
                                              std::vector<std::string>& leftOut,

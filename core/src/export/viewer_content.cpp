@@ -48,7 +48,7 @@ nlohmann::json faceNamesInMeshOrder(const NamedShape& shape) {
 }
 
 /// The component's B-rep edges (section profiles, guide curves, segment and patch borders,
-/// seams) as polylines in the page's frame (glTF's: y up, so CPACS (x, y, z) is (x, z, -y)),
+/// seams) as polylines in the page's axes (glTF's: y up, so CPACS (x, y, z) is (x, z, -y)),
 /// each a flat list x0, y0, z0, x1, ...; sampled within a thousandth of the component's size.
 nlohmann::json edgePolylines(const TopoDS_Shape& shape) {
   Bnd_Box box;

@@ -1,7 +1,7 @@
 // VTK XML PolyData (.vtp): every triangle of every face and every line outside the faces (a
-// frame's, a stringer's, as a polyline), with two per-cell string arrays, "component" (the
+// stiffener's, as a polyline), with two per-cell string arrays, "component" (the
 // uID) and "face" (the face's name; "line" for a line), so that a post-processor can pick out
-// a component or a wing's upper side.
+// a component or one side of it.
 #include <fstream>
 #include <sstream>
 

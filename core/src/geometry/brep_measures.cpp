@@ -31,7 +31,7 @@ namespace {
 
 constexpr double kIntegrationAccuracy = 1e-9;
 /// Intervals per direction of a coarse integration (a sign, a scale): a few dozen points per
-/// face where a fuselage's skin has hundreds of spans.
+/// face where a lofted body's skin has hundreds of spans.
 constexpr int kCoarseIntervals = 8;
 
 /// The faces of a shape, each as often and with the orientation the shape uses it.
@@ -43,8 +43,8 @@ std::vector<TopoDS_Face> facesOf(const TopoDS_Shape& shape) {
 }
 
 /// Each face's measure, the faces on every core where there are many knot spans to integrate
-/// (a guided fuselage's skin: 800,000, seconds on one core), else one after the other
-/// (starting threads costs more than the few spans of a wing's faces).
+/// (a guided body's skin: 800,000, seconds on one core), else one after the other
+/// (starting threads costs more than the few spans of a ruled surface's faces).
 template <typename Measure>
 std::vector<double> measuredFaces(const std::vector<TopoDS_Face>& faces,
                                   const std::vector<std::optional<RectangularPatch>>& patches, Measure measure) {
@@ -137,7 +137,7 @@ double patchVolume(const RectangularPatch& patch, const gp_XYZ& origin, Accuracy
 }
 
 /// The same on a coarse grid (two Gauss points on each of at most kCoarseIntervals intervals
-/// per direction, whatever the knots): a few dozen points per face where a fuselage's skin
+/// per direction, whatever the knots): a few dozen points per face where a lofted body's skin
 /// has hundreds of spans.
 double coarsePatchVolume(const RectangularPatch& patch, const gp_XYZ& origin) {
   return integrateBetweenBreaks(patch, coarseBreaks(patch.uBreaks, kCoarseIntervals),
@@ -157,7 +157,7 @@ double cellArea(const GeomAdaptor_Surface& evaluator, const GaussRule& uRule, co
 }
 
 /// The Gauss rules an area is taken with, per direction of degree p: 2p + 4 points, and two
-/// fewer to check it; where the direction has many knot spans (a guided fuselage's skin has two
+/// fewer to check it; where the direction has many knot spans (a guided body's skin has two
 /// thousand round it), each span is so short that p + 1 points, checked by p, are as exact,
 /// at a sixth of the evaluations.
 struct AreaRules {
@@ -180,7 +180,7 @@ struct AreaRules {
 /// A cell's area, refined where the two rules disagree by more than `tolerance` (an absolute
 /// area): |S_u × S_v| is smooth on a knot span unless S_u and S_v nearly line up somewhere in it
 /// (a strongly cambered airfoil ruled over a long span), where the fixed rule is off by 6e-8 of
-/// the area and OCCT's adaptive one too, or at a degenerate corner (a wing tip). Such a cell is
+/// the area and OCCT's adaptive one too, or at a degenerate corner (a pointed tip). Such a cell is
 /// halved both ways, at most kDeepest times (at six, D250's winglet segment was 2.4e-10 off
 /// the limit; at eight it is there).
 double refinedCellArea(const GeomAdaptor_Surface& evaluator, const AreaRules& rules, double u0, double u1, double v0,
@@ -268,16 +268,16 @@ double areaAlong(const TopoDS_Shape& boundary, const gp_Dir& normal) {
 
 /// The area of a plane face, exactly from its boundary (Green's theorem): robust where its
 /// boundary curves have many knots, and cheaper than OCCT's integration over the face even
-/// when only a rough value is needed (a fifth of its instructions on a wing's caps).
+/// when only a rough value is needed (a fifth of its instructions on a lifting surface's caps).
 double planeArea(const TopoDS_Face& face, const Geom_Plane& plane) {
   return std::abs(areaAlong(face, plane.Position().Direction()));
 }
 
 /// A plane face's share of the volume about O: (P − O)·n is constant on it.
 double planeFaceVolume(const TopoDS_Face& face, const Geom_Plane& plane, const gp_XYZ& origin) {
-  const gp_Ax3& frame = plane.Position();
-  const double offset = gp_Vec(frame.Location().XYZ() - origin).Dot(gp_Vec(frame.Direction()));
-  const double orientation = frame.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
+  const gp_Ax3& axes = plane.Position();
+  const double offset = gp_Vec(axes.Location().XYZ() - origin).Dot(gp_Vec(axes.Direction()));
+  const double orientation = axes.Direct() ? 1.0 : -1.0;  // the plane's normal is X × Y
   return orientation * offset * planeArea(face, plane) / 3.0;
 }
 

@@ -109,7 +109,7 @@ void normaliseParameters(Geom_BSplineSurface& surface) {
 
 /// The patches of one row side by side in u (cell l over [l, l+1]), joined C0. They share
 /// their v knots and degrees; each keeps its own u knots (made compatible in u too, every cell
-/// carried every other's: a guided fuselage's rings had 1,900 u knots, mostly a millionth apart,
+/// carried every other's: a guided body's rings had 1,900 u knots, mostly a millionth apart,
 /// instead of 130).
 Handle(Geom_BSplineSurface) sideBySide(std::vector<Handle(Geom_BSplineSurface)> patches) {
   makeCompatibleAlongV(patches);
@@ -173,7 +173,7 @@ std::vector<Handle(Geom_BSplineSurface)> buildCoonsPatchRows(
     throw Error(ErrorCode::InvalidModel, "a patch network needs two profiles and two guides at least");
   const auto& p = crossings.profileParameters;
   const auto& g = crossings.guideParameters;
-  // Rows are independent: they are filled on every core (a guided fuselage's patches were
+  // Rows are independent: they are filled on every core (a guided body's patches were
   // two thirds of its building).
   std::vector<Handle(Geom_BSplineSurface)> rows(profiles.size() - 1);
   parallelFor(rows.size(), [&](std::size_t row) {

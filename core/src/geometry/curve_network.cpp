@@ -169,7 +169,7 @@ int direction(const Family& family, Eigen::Index c, const std::vector<Eigen::Ind
 
 /// Whether curve c runs against the (already oriented) curve r: compares the points at a
 /// quarter and three quarters of both. For curves whose crossings cannot tell, such as
-/// sharp-edged wing profiles crossed only at the trailing and leading edge.
+/// sharp-edged airfoils crossed only at the trailing and leading edge.
 bool runsAgainst(const Geom_BSplineCurve& c, const Geom_BSplineCurve& r) {
   auto at = [](const Geom_BSplineCurve& curve, double share) {
     return curve.Value(curve.FirstParameter() + share * (curve.LastParameter() - curve.FirstParameter()));

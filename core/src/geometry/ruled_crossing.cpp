@@ -101,7 +101,7 @@ struct Hit {
 };
 
 /// Which points of a line count: all of it, or the half from its base (rays from inside a
-/// fuselage); s is the point's place along the line's direction from its base.
+/// body); s is the point's place along the line's direction from its base.
 bool counts(const RuledLines& lines, double s) { return !lines.rays || s >= 0.0; }
 /// Only the ruling between its two curves counts (a little beyond them, for rounding).
 bool counts(const RulingSegments&, double s) {
@@ -148,13 +148,13 @@ double startAlong(const PatchCurves& curves, int guess) {
 
 /// How far off a second crossing of a line may lie and be left out, as a multiple of the
 /// nearest one's distance from the line's base: whole lines may meet the other side of a
-/// box wing far off; a ruling is a piece of its surface, where every crossing counts.
+/// closed box surface far off; a ruling is a piece of its surface, where every crossing counts.
 double ignoredBeyond(const RuledLines&) { return 10.0; }
 double ignoredBeyond(const RulingSegments&) { return std::numeric_limits<double>::infinity(); }
 double ignoredBeyond(const PatchCurves&) { return std::numeric_limits<double>::infinity(); }
 
 /// Whether every sampled line is searched for a second crossing while the crossing is being
-/// followed: a ruled face may meet a skin in several separate lines (a bump through a wing),
+/// followed: a ruled face may meet a skin in several separate lines (a bump through a thin surface),
 /// which following one would miss.
 bool searchedEveryLine(const RuledLines&) { return false; }
 bool searchedEveryLine(const RulingSegments&) { return true; }
@@ -219,7 +219,7 @@ using Piece = CrossingPiece;
 
 /// The one point where the line at `lambda` meets the skin, on the patch the crossing goes on
 /// over towards `ahead`; nothing when it misses the skin. A line may meet the skin again far
-/// off (a box wing's other wing): the point nearest the line's base counts where every other
+/// off (the far side of a closed box surface): the point nearest the line's base counts where every other
 /// lies at least ten times as far from the base. Throws FoldedSkin where the line meets the
 /// skin at two points otherwise.
 template <class Lines>

@@ -247,7 +247,7 @@ RuledLoft ruledLoft(const std::vector<Handle(Geom_BSplineCurve)>& first,
   builder.MakeSolid(solid);
   builder.Add(solid, shell);
   // Two different profiles in one plane bound a flat ring of no volume, which the reference
-  // builds too (CPACS_30_D250_10.xml's wing steps from its tip airfoil to a smaller one
+  // builds too (CPACS_30_D250_10.xml's main surface steps from its tip airfoil to a smaller one
   // there); only coinciding profiles, a segment of no length, are refused.
   if (profilesCoincide(first, last))
     throw Error(ErrorCode::InvalidModel, "the faces enclose no volume (the two profiles coincide)");

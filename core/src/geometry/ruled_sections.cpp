@@ -17,8 +17,8 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 
-#include "airshape/geometry/brep_building.h"
 #include "airshape/core_module.h"
+#include "airshape/geometry/brep_building.h"
 
 namespace airshape::geometry {
 
@@ -66,9 +66,9 @@ std::optional<gp_Pln> planeOfPoles(const Geom_BSplineSurface& surface, double fl
 }
 
 /// OCCT lofts even a flat ruled face as a B-spline surface; its Booleans intersect a plane with
-/// a wing's many-knotted skins by a far cheaper method than two B-splines (the eleven devices'
-/// cut-outs of a wing: 1.26 -> 1.10 s). So the loft's faces flat to a billionth of its size become planes:
-/// the same points (a ruled face between straight edges in one plane is that plane), the same
+/// a lifting surface's many-knotted skins by a far cheaper method than two B-splines (the eleven devices'
+/// cut-outs of CPACS_30_aircraft_flaps.xml's main surface: 1.26 -> 1.10 s). So the loft's faces flat to a billionth of
+/// its size become planes: the same points (a ruled face between straight edges in one plane is that plane), the same
 /// edges.
 void flatFacesAsPlanes(RuledSections& loft) {
   Bnd_Box box;

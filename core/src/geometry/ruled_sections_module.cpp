@@ -1,7 +1,7 @@
 // OCCT's ruled loft through sections (and its ruled face between two edges) in a module of its own
-// (libairshape_ruled_sections.so, beside the core), loaded only when something lofts so (control devices, wing cells,
-// nacelle cowls): OCCT's offset toolkit and the fillet and Boolean toolkits it links are built with BIND_NOW on Debian,
-// and loading them with the plugins cost every process about 5 ms.
+// (libairshape_ruled_sections.so, beside the core), loaded only when something lofts so (control devices, cells,
+// revolved cowls): OCCT's offset toolkit and the fillet and Boolean toolkits it links are built with BIND_NOW on
+// Debian, and loading them with the plugins cost every process about 5 ms.
 #include <vector>
 
 #include <BRepFill.hxx>

@@ -41,7 +41,7 @@ bool isPlane(const TopoDS_Face& face) {
 /// the face's boundary: then each line where a patch meets the face's plane lies wholly inside
 /// the face or wholly outside, and one point of each tells. Only patches whose poles' box
 /// reaches the face are intersected with its plane (OCCT's Boolean section would also meet the
-/// face's edges, a wing's airfoil of many knots, with every face: ten times as slow).
+/// face's edges, an airfoil of many knots, with every face: ten times as slow).
 bool missesPlaneFace(const std::vector<Patch>& patches, const TopoDS_Face& face) {
   const Handle(Geom_Surface) plane = BRep_Tool::Surface(face);
   Bnd_Box faceBox;
@@ -93,8 +93,8 @@ std::optional<TopoDS_Edge> edgeAlong(const CrossingPiece& piece, const Patch& pa
 
 std::optional<std::vector<TopoDS_Edge>> tracedSection(const TopoDS_Shape& ruled, const TopoDS_Shape& skin,
                                                       double tolerance) {
-  // The skin's curved faces must be patches; its planes (a fuselage's end caps) and the ruled
-  // shape's planes (a wing's root and tip) are checked to be met nowhere.
+  // The skin's curved faces must be patches; its planes (a body's end caps) and the ruled
+  // shape's planes (a lifting surface's root and tip) are checked to be met nowhere.
   std::vector<Patch> patches, ruledPatches;
   std::vector<TopoDS_Face> skinPlanes, ruledPlanes;
   for (TopExp_Explorer explorer(skin, TopAbs_FACE); explorer.More(); explorer.Next()) {
@@ -122,10 +122,10 @@ std::optional<std::vector<TopoDS_Edge>> tracedSection(const TopoDS_Shape& ruled,
     Bnd_Box faceBox;
     BRepBndLib::Add(face, faceBox, false);
     if (faceBox.IsOut(skinBox)) continue;
-    // A ruled face along its rulings, another along its v-curves (a guided wing's faces run
+    // A ruled face along its rulings, another along its v-curves (a guided lifting surface's faces run
     // along the span in v): each must meet the skin at most once. Where those meet it nowhere
     // although the face reaches it, its curves the other way may: a blunt trailing edge is ruled
-    // across its thickness, nearly along its crossing with a fuselage.
+    // across its thickness, nearly along its crossing with a body.
     std::optional<std::vector<CrossingPiece>> pieces;
     try {
       const std::optional<RulingSegments> rulings = rulingsOf(*patch);

@@ -19,7 +19,7 @@ double degrees(double value) { return value * M_PI / 180.0; }
 
 /// The largest translation, scaling or angle a transformation may hold. Beyond it neighbouring
 /// doubles lie more than OCCT's confusion distance (1e-7) apart, so that no shape placed there
-/// can be built or checked (OCCT's shape check crashed on a nacelle moved by 1e300).
+/// can be built or checked (OCCT's shape check crashed on a body moved by 1e300).
 constexpr double kLargestPlacement = 1e9;
 
 /// One coordinate of a point type of a transformation, `absent` where it is left out.

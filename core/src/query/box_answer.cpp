@@ -33,7 +33,7 @@ std::array<double, 6> boundsOf(const Bnd_Box& box) {
 }  // namespace
 
 Bnd_Box tightBox(const TopoDS_Shape& shape) {
-  // OCCT's exact box of a part searches its surface for extremes, seconds on a fuselage of
+  // OCCT's exact box of a part searches its surface for extremes, seconds on a lofted body of
   // many-knotted skins. Only the parts that may hold one of the six extremes need it: a
   // part's box from its control points bounds it, so once a part's exact bound reaches beyond
   // every other part's rough one in a direction, no other part matters there.

@@ -41,7 +41,7 @@ Json componentEntry(const graph::Component& component) {
 
 /// Every component of the model queries address (the first model) that the reference
 /// registers (QUERY-components §1), sorted by uID; with "all": true every component Airshape
-/// knows (spoilers, frames, CPACS 3.5 tanks, ...).
+/// knows (a plugin declares them `unlisted()`).
 Json componentList(Configuration& configuration, const Json& query) {
   const bool all = query.contains("all") && query.at("all").is_boolean() && query.at("all").get<bool>();
   std::vector<const graph::Component*> listed;
@@ -55,7 +55,7 @@ Json componentList(Configuration& configuration, const Json& query) {
   return list;
 }
 
-/// The components directly inside one (its segments, component segments, devices, spars, ...).
+/// The components directly inside one (its parts and what lies in it).
 Json componentChildren(Configuration& configuration, const Json& query) {
   const std::string& parent = componentArgument(configuration, query, "uid").uid;
   Json children = Json::array();
@@ -86,7 +86,7 @@ int solidCount(const TopoDS_Shape& shape) {
 /// The area of the component's section by an infinite plane: the faces the plane and the
 /// shape have in common (none for a shape without solids). For one solid, from the closed
 /// lines where the plane cuts it, without building the faces (OCCT's Boolean common also
-/// splits every face of the solid the plane crosses: 1.3 s on a guided fuselage of 800,000
+/// splits every face of the solid the plane crosses: 1.3 s on a guided body of 800,000
 /// knot spans); where a line does not close or the lines cross, by the common.
 Json crossSectionArea(Configuration& configuration, const Json& query) {
   const TopoDS_Shape& shape = measuredShape(configuration, componentArgument(configuration, query, "uid"));
@@ -130,10 +130,10 @@ void registerComponentQueries(QueryRegistry& registry) {
                 "all: true lists every one",
                 componentList});
   registry.add({"component_children", "core",
-                "uid -> [{uid, type}] of the components directly inside it (segments, devices, spars, ...)",
+                "uid -> [{uid, type}] of the components directly inside it (its parts and what lies in it)",
                 componentChildren});
-  registry.add(
-      {"component_type", "core", "uid -> the component's type (wing, wing_segment, plane, ...)", componentType});
+  registry.add({"component_type", "core", "uid -> the component's type (as its plugin declares it; the model: plane)",
+                componentType});
   registry.add(
       {"component_volume", "core", "uid -> volume of the component's solids and closed shells", componentVolume});
   registry.add(

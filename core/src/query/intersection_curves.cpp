@@ -70,7 +70,7 @@ std::vector<TopoDS_Edge> sectionEdges(const TopoDS_Shape& first, const TopoDS_Sh
   section.Approximation(true);
   // With the curves on both faces OCCT checks the tolerance the section curves reached along
   // those curves; without them it projects points onto the (many-knotted) surfaces, which was
-  // 60 % of a wing-fuselage section's instructions.
+  // 60 % of a lifting surface's section with a body.
   section.ComputePCurveOn1(true);
   section.ComputePCurveOn2(true);
   section.SetRunParallel(true);     // the face pairs on every core: 2.4 times as fast on two
@@ -104,7 +104,7 @@ bool closed(const TopoDS_Wire& wire) {
 }
 
 /// The lines where a shape of ruled faces meets the other's skin, traced along the rulings
-/// (geometry/traced_section.h): a tenth of the Boolean section's time on a wing and a fuselage,
+/// (geometry/traced_section.h): a tenth of the Boolean section's time on a lifting surface and a body,
 /// whose surface-surface walking over skins of many knots dominates. Two closed solids meet in
 /// closed lines: nothing unless every line closes, and nothing where the tracing does not apply
 /// (then the Boolean section answers).
@@ -122,7 +122,7 @@ std::optional<std::vector<TopoDS_Wire>> tracedLines(const TopoDS_Shape& ruled, c
 }
 
 /// The boxes of a shape's faces, each widened by a ten-thousandth of the shape's size (room
-/// for rounding): tighter round a thin part (a pylon) than the shape's one box.
+/// for rounding): tighter round a thin part than the shape's one box.
 geometry::Region faceBoxes(const TopoDS_Shape& shape) {
   Bnd_Box whole;
   BRepBndLib::Add(shape, whole, false);
@@ -139,8 +139,8 @@ geometry::Region faceBoxes(const TopoDS_Shape& shape) {
 }
 
 /// Each shape's faces cut down to where the other's faces are (geometry/faces_near.h): so that
-/// the Boolean section samples a pylon's few faces against the part of a nacelle's cowl beside
-/// it, not its whole circumference (simpletest-pylon-nacelle: 26 s -> 6 s).
+/// the Boolean section samples a thin part's few faces against the part of a revolved cowl beside
+/// it, not its whole circumference (26 s -> 6 s on one shared file, docs/performance.md).
 std::pair<TopoDS_Shape, TopoDS_Shape> partsWhereTheyMayMeet(const TopoDS_Shape& first, const TopoDS_Shape& second) {
   return {geometry::facesNear(first, faceBoxes(second)), geometry::facesNear(second, faceBoxes(first))};
 }
@@ -164,7 +164,7 @@ std::vector<TopoDS_Wire> intersectionLines(const TopoDS_Shape& first, const Topo
     const auto [nearFirst, nearSecond] = partsWhereTheyMayMeet(first, second);
     wires = chained(sectionEdges(nearFirst, nearSecond, names));
   }
-  // A wing's root laid on a fuselage's side touches it along a line the section misses.
+  // A root laid on a body's side touches it along a line the section misses.
   if (const auto touching = geometry::withTangentContacts(edgesOf(*wires), first, second, kContactTolerance))
     wires = chained(*touching);
   std::vector<TopoDS_Wire> lines;

@@ -39,7 +39,7 @@ ParseError parseDouble(std::string_view text, double& out) {
   return std::nullopt;
 }
 
-// Some CPACS editors write every number as a decimal ("1.000000" for a rib number); an integral
+// Some CPACS editors write every number as a decimal ("1.000000" for a count); an integral
 // decimal means that integer, as a reader of the file would take it.
 std::optional<long long> integralDecimal(std::string_view number) {
   double value = 0.0;

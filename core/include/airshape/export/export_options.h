@@ -13,11 +13,11 @@ struct ExportProgress {
   std::size_t componentsBuilt = 0;
   std::size_t componentsTotal = 0;
   double seconds = 0;  ///< since the export started
-  std::string step;    ///< what is being done now, e.g. "built Wing", "meshing", "writing STEP"
+  std::string step;    ///< what is being done now, e.g. "built W1", "meshing", "writing STEP"
 };
 
-/// The control parameter at which an export shows a moving component (a flap, a slat, a
-/// spoiler): `airshape export --deflect UID=P`.
+/// The control parameter at which an export shows a moving component (a control
+/// device): `airshape export --deflect UID=P`.
 struct Pose {
   enum class At { Parameter, Minimum, Maximum };
   std::string uid;  ///< a moving component's uID, or "all" for every one
@@ -38,13 +38,13 @@ struct ExportOptions {
   /// it, in one Boolean operation. Empty: every component as built, at rest.
   std::vector<Pose> poses;
   /// Write the structural model instead of the components: for each component with structure
-  /// inside (a wing's component segments with their spars and ribs), one connected shell of
+  /// inside (a host's parts with the structure declared inside them), one connected shell of
   /// its faces split where the structure meets them and the structure's faces, sharing their
   /// edges (a FEM mesher meshes it conformally). `components` then names the hosts (or their
   /// parents) whose structure to write.
   bool structure = false;
-  /// Write components that have a detailed shape (ComponentShapes::addDetailed: frames and
-  /// stringers with their profiles swept along their lines) with it instead of their shape;
+  /// Write components that have a detailed shape (ComponentShapes::addDetailed: stiffeners
+  /// with their profiles swept along their lines) with it instead of their shape;
   /// where the detailed shape cannot be built, the shape is written and ExportScene::notes
   /// says why.
   bool profiles = false;
@@ -54,7 +54,7 @@ struct ExportOptions {
   /// Largest distance (model units, metres) between a triangle and the surface for the
   /// triangulated formats; 0 chooses it per component as 1 % of its volume / area
   /// ratio (a measure of its thickness), which keeps the enclosed volume within a few
-  /// tenths of a percent for wings and fuselages alike.
+  /// tenths of a percent for thin and round bodies alike.
   double linearDeflection = 0;
   /// Largest angle (radians) between the normals along a triangle edge.
   double angularDeflection = 0.2;
@@ -62,7 +62,7 @@ struct ExportOptions {
   std::function<void(const ExportProgress&)> progress;
 };
 
-/// The items of a comma-separated list ("Wing,HTP" for `components`), empty ones dropped.
+/// The items of a comma-separated list ("W1,W2" for `components`), empty ones dropped.
 inline std::vector<std::string> splitAtCommas(const std::string& list) {
   std::vector<std::string> items;
   std::stringstream stream(list);

@@ -27,7 +27,7 @@ struct ExportScene {
   std::vector<SceneComponent> components;
   /// Components left out because they failed to build (with skipFailed): "uID: why".
   std::vector<std::string> leftOut;
-  /// Components written otherwise than asked, "uID: what and why" (a frame written as its line
+  /// Components written otherwise than asked, "uID: what and why" (a stiffener written as its line
   /// because its profile cannot be swept).
   std::vector<std::string> notes;
 };

@@ -24,8 +24,8 @@ std::string formatName(Format format);
 /// The extensions formatOfPath knows, for help texts.
 std::string knownExtensions();
 
-/// The components of a scene that a format cannot hold: those made of lines alone (frames,
-/// stringers, cross beams without --profiles) in STL, which holds triangles only. VTK
+/// The components of a scene that a format cannot hold: those made of lines alone (stiffeners
+/// and beams without --profiles) in STL, which holds triangles only. VTK
 /// PolyData, glTF (and so the viewer page), OBJ, STEP, IGES and BREP hold lines.
 std::vector<std::string> componentsLeftOutOf(const ExportScene& scene, Format format);
 

@@ -8,9 +8,9 @@
 namespace airshape::exporting {
 
 /// What the browser viewer (docs/viewer.md) shows of each component of a scene besides its
-/// triangles, as a JSON array: name, type, volume [m³], area [m²], box (CPACS frame), the
+/// triangles, as a JSON array: name, type, volume [m³], area [m²], box (CPACS axes), the
 /// names of its faces in the order of the glTF primitives, and its B-rep edges (section
-/// profiles, guide curves, borders) as polylines in glTF's frame. The scene must be
+/// profiles, guide curves, borders) as polylines in glTF's axes. The scene must be
 /// triangulated.
 std::string viewerComponentsJson(const ExportScene& scene);
 

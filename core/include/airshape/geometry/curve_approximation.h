@@ -27,7 +27,7 @@ struct InterpolationConstraints {
 };
 
 /// Where a fit of a list of points compares a closed curve's ends (fitPointsCorrectingParameters):
-/// at the ends of its range, or, as the reference library fits approximated fuselage profiles,
+/// at the ends of its range, or, as the reference library fits approximated body profiles,
 /// at the list's first and last point's current parameters (fixed where they are pinned).
 enum class SeamAt { RangeEnds, EndPoints };
 

@@ -15,7 +15,7 @@ using Region = std::vector<Bnd_Box>;
 /// into one of the region's boxes (the same surface over fewer spans, the same parameters), a face whose box
 /// misses them is left out, any other face is kept whole. What a Boolean section needs
 /// of a large skin where a small part meets it: OCCT samples a face pair over both faces'
-/// whole parameter ranges, seconds a pair for a nacelle cowl of 600 × 30 spans.
+/// whole parameter ranges, seconds a pair for a revolved cowl of 600 × 30 spans.
 TopoDS_Shape facesNear(const TopoDS_Shape& shape, const Region& region);
 
 }  // namespace airshape::geometry

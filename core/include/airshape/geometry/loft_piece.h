@@ -11,7 +11,7 @@ namespace airshape::geometry {
 
 /// A stretch of a loft surface (u along its profiles, v across them) as B-rep: the skin
 /// face over [vStart, vEnd], for open profiles the face that closes them (ruled between the
-/// skin's u-boundaries: a fuselage's symmetry plane, a wing's blunt trailing edge), and
+/// skin's u-boundaries: a half body's symmetry plane, a blunt trailing edge), and
 /// planar caps on the profiles at vStart and vEnd where they are not points.
 struct LoftPiece {
   TopoDS_Face skin, closingFace, startCap, endCap;

@@ -25,7 +25,7 @@ struct LoftStretch {
   double vStart = 0.0, vEnd = 1.0;
 };
 
-/// The same for a loft of stretches of different surfaces (a guided fuselage's rows of
+/// The same for a loft of stretches of different surfaces (a guided body's rows of
 /// patches, one per segment): consecutive stretches must meet with the same parameters (the
 /// end profile of one the start profile of the next at every u, within the B-rep tolerance,
 /// over the same u range), else Error, so that the caller can sew instead.

@@ -20,7 +20,7 @@ struct RuledLines {
   gp_Pnt from, to;
   gp_Vec fromDirection, toDirection;
   /// Whether only the half-lines from the bases along their directions count (s ≥ 0): rays
-  /// from inside a fuselage, which meet its skin once.
+  /// from inside a closed body, which meet its skin once.
   bool rays = false;
 
   gp_Pnt base(double t) const { return gp_Pnt(from.XYZ() + t * (to.XYZ() - from.XYZ())); }
@@ -41,9 +41,9 @@ struct RulingSegments {
 };
 
 /// A patch's v-curves: the one at t in [0, 1] is its curve at u = u0 + t (u1 − u0), all of it
-/// counting (a guided wing's face, whose curves along its span meet a fuselage once each); or
+/// counting (a guided lifting surface's face, whose curves along its span meet a body once each); or
 /// with `alongU` its u-curves, at v = v0 + t (v1 − v0) (a blunt trailing edge, ruled across
-/// its thickness, whose curves along the span are the ones that cross a fuselage).
+/// its thickness, whose curves along the span are the ones that cross a body).
 struct PatchCurves {
   Patch patch;
   bool alongU = false;
@@ -65,7 +65,7 @@ struct CrossingPiece {
   Handle(Geom2d_BSplineCurve) curve;
 };
 
-/// Thrown where a line meets the skin at two points (a wing folding back over itself).
+/// Thrown where a line meets the skin at two points (a surface folding back over itself).
 struct FoldedSkin {};
 
 /// Where the lines meet the skin's patches, piece by patch in order of t: each line met by

@@ -11,7 +11,7 @@
 
 namespace airshape::geometry {
 
-/// A bilinear surface given by its lines (global frame): the line at t = 0 runs from `a0`
+/// A bilinear surface given by its lines (global axes): the line at t = 0 runs from `a0`
 /// towards `b0`, the one at t = 1 from `a1` towards `b1`, s along them (0 at a, 1 at b). The
 /// side of a ruled solid between two outlines (a control device's cutter), a wall's strip.
 struct RuledSide {
@@ -22,7 +22,7 @@ struct RuledSide {
 RuledSide ruledSide(const gp_Pnt& a0, const gp_Pnt& b0, const gp_Pnt& a1, const gp_Pnt& b1);
 
 /// What bounds a side's part along its lines: one end of the lines (s = 0 or 1) or where they
-/// meet a skin. A skin that whole lines meet twice (a closed fuselage skin) is met by rays
+/// meet a skin. A skin that whole lines meet twice (a closed body's skin) is met by rays
 /// instead: from the lines' points at s = `raysFrom`, along the lines (`raysTowards` +1) or
 /// against them (-1); 0 takes the whole lines.
 struct SideBound {

@@ -11,11 +11,11 @@
 
 namespace airshape::geometry {
 
-/// A closed loop of ruled sides across a skin (global frame): side k joins the line through
+/// A closed loop of ruled sides across a skin (global axes): side k joins the line through
 /// `points[k]` along `directions[k]` to the line through the next point along the next
 /// direction (the lines between them interpolated linearly), as the sides of a prism whose
 /// outline is the loop. `rays`: only the half-lines from the points along the directions count
-/// (rays from inside a fuselage).
+/// (rays from inside a closed body).
 struct RuledLoop {
   std::vector<gp_Pnt> points;
   std::vector<gp_Vec> directions;
@@ -34,7 +34,7 @@ std::optional<std::vector<TopoDS_Face>> skinSplitByLoop(const TopoDS_Shape& skin
                                                         double tolerance);
 
 /// The pieces of the split skin (skinSplitByLoop) a point inside which passes `keep` (global
-/// frame); nothing where the split does not apply.
+/// axes); nothing where the split does not apply.
 std::optional<std::vector<TopoDS_Face>> skinPiecesWhere(const TopoDS_Shape& skin, const RuledLoop& loop,
                                                         const std::function<bool(const gp_Pnt&)>& keep,
                                                         double tolerance);

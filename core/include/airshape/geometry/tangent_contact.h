@@ -9,7 +9,7 @@
 namespace airshape::geometry {
 
 /// The lines along which a plane face of one shape touches a curved face of the other without
-/// the two crossing (a wing's root laid on a fuselage's side, which is tangent to it), both ways
+/// the two crossing (a root laid on a body's side, which is tangent to it), both ways
 /// round: where an untrimmed B-spline patch lies on one side of the face's plane and reaches it
 /// within `tolerance` along a curve, the part of that curve inside the face. A section of the two
 /// surfaces misses such lines, or finds bits of them, since the surfaces meet without crossing.

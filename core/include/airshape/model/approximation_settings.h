@@ -14,7 +14,7 @@ XERCES_CPP_NAMESPACE_END
 namespace airshape::model {
 
 /// What a point list's `approximationSettings` (the reference's extension, outside CPACS 3.5,
-/// for wing airfoils and fuselage profiles) ask for: a least-squares cubic with `poles`
+/// for airfoils and profiles) ask for: a least-squares cubic with `poles`
 /// control points instead of the interpolating one, its error measured as `measure`, passing
 /// exactly through the points `interpolated` (0-based, in the file's order).
 struct ApproximationSettings {

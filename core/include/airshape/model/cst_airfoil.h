@@ -28,7 +28,7 @@ class CstSide {
   double sign_;
 };
 
-/// A `cst2D` profile (a wing airfoil, a nacelle or a curve profile) read and checked: both sides and whether its
+/// A `cst2D` profile (an airfoil, a cowl's or a curve profile) read and checked: both sides and whether its
 /// trailing edge is blunt.
 struct CstAirfoil {
   CstSide upper, lower;

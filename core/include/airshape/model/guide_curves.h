@@ -20,7 +20,7 @@ struct ProfilePosition {
   bool isCurveParameter = false;
 };
 
-/// What a component (wing or fuselage) tells the guide-curve builder about its sections,
+/// What a lofted component (one with sections and segments) tells the guide-curve builder about its sections,
 /// in chain order (section k starts segment k; the last one ends the last segment).
 struct GuideCurveSections {
   std::size_t count = 0;

@@ -44,7 +44,7 @@ auto placedElements(const Component& component, const Transform& componentMatrix
   return placed;
 }
 
-/// Every section element of a wing or fuselage (any component with sections, elements and
+/// Every section element of a lofted component (any component with sections, elements and
 /// positionings) placed by its component transformation, by element uID.
 template <class Component>
 auto placedElements(const Configuration& configuration, const Component& component) {

@@ -33,7 +33,7 @@ Transform transformationMatrix(const schema::TransformationType* transformation)
 Transform componentTransform(const Configuration& configuration, const std::string& uid);
 
 /// The placement of an element with a transformation of its own and a parent that is a
-/// component (tanks, system components, decks, external objects): its matrix, translated by
+/// component (elements placed in or on others): its matrix, translated by
 /// the parent's origin (as componentTransform translates) unless there is no parent or its
 /// translation is absGlobal.
 Transform placedOnParent(const Configuration& configuration, const schema::TransformationType* transformation,

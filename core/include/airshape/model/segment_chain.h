@@ -6,7 +6,7 @@
 
 namespace airshape::model {
 
-/// The two element uIDs a wing or fuselage segment runs between.
+/// The two element uIDs a segment of a lofted component runs between.
 struct SegmentEnds {
   std::string fromElementUid;
   std::string toElementUid;

@@ -7,8 +7,8 @@
 namespace airshape::plugin {
 
 /// What plugins offer each other: objects behind small abstract interfaces that the providing
-/// plugin keeps in its own folder (plugins/wing/include/airshape/wing/...), by name. The name
-/// carries the interface's version ("airshape.wing/1"), since plugins are separate libraries
+/// plugin keeps in its own folder (plugins/NAME/include/airshape/NAME/...), by name. The name
+/// carries the interface's version ("airshape.NAME/1"), since plugins are separate libraries
 /// and share no type information: a consumer gets exactly the interface the name promises.
 class ServiceRegistry {
  public:

@@ -21,7 +21,7 @@ bool booleanArgument(const Json& query, const char* name);
 std::array<double, 3> pointArgument(const Json& query, const char* name);
 
 /// Selects one of `uids` by a 1-based index or by uID, as the query protocol addresses
-/// components; `what` names the kind in messages ("wing"). Returns the 0-based index.
+/// components; `what` names the kind in messages. Returns the 0-based index.
 std::size_t selectByIndexOrUid(const Json& query, const char* name, const std::vector<std::string>& uids,
                                const std::string& what);
 

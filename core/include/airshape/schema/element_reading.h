@@ -13,7 +13,7 @@ namespace airshape::schema {
 
 /// An element read into a schema node of its own, outside the document's model: parts of
 /// layouts newer than the CPACS 3.5 schema the model is generated from (a model's fuel
-/// tanks, systems and decks of later CPACS versions), read into the 3.5 types they share.
+/// elements of later CPACS versions), read into the 3.5 types they share.
 /// What the type does not know is skipped; the node is bound to the element, which is left
 /// unchanged.
 template <class Node>

@@ -34,7 +34,7 @@ class Node {
   /// The DOM element this node was read from or written to; nullptr for a node made in memory.
   xercesc::DOMElement* binding = nullptr;
 
-  /// The CPACS path of the element, e.g. /cpacs/vehicles/aircraft/model[1]/wings/wing[2].
+  /// The CPACS path of the element, e.g. /cpacs/vehicles/aircraft/model[1]/systems[1].
   std::string xpath;
 
   /// Field indices of required values that the document did not contain. The writer leaves

@@ -17,7 +17,7 @@ struct XPathTarget {
 };
 
 /// Resolves the absolute XPaths CPACS tools use, from the document's root element:
-/// `/cpacs/vehicles/aircraft/model[1]/wings/wing[@uID='W']/sections/section[2]/name`,
+/// `/cpacs/vehicles/aircraft/model[1]/systems/genericSystems/genericSystem[@uID='S']/name`,
 /// ending in an element or in `/@attribute`. A step is a name with at most one predicate, a
 /// 1-based position `[k]` or an attribute test `[@name='value']` (or "value"); without a
 /// predicate it takes the first element of that name. Throws Error(InvalidArgument)
