@@ -8,7 +8,6 @@
 #include <benchmark/benchmark.h>
 
 #include "airshape/configuration.h"
-#include "airshape/model/primary_model.h"
 #include "airshape/query/query_service.h"
 #include "bench_support.h"
 
@@ -22,7 +21,8 @@ void openAndBuildWings(benchmark::State& state, const std::string& name) {
   if (!std::filesystem::exists(path)) return state.SkipWithError((path + " is absent").c_str());
   for (auto _ : state) {
     airshape::Configuration configuration = airshape::Configuration::open(path, host().componentLocations());
-    const std::size_t wings = airshape::model::primaryModel(configuration.cpacs()).wings.size();
+    const std::size_t wings =
+        airshape::query::answer(configuration, host().queries(), R"({"op":"wing_count"})")["ok"].get<std::size_t>();
     for (std::size_t w = 1; w <= wings; ++w)
       benchmark::DoNotOptimize(airshape::query::answer(configuration, host().queries(),
                                                        R"({"op":"wing_volume","wing":)" + std::to_string(w) + "}"));

@@ -8,7 +8,6 @@
 #include "airshape/cpacs_version.h"
 #include "airshape/error.h"
 #include "airshape/model/component_fingerprints.h"
-#include "airshape/model/primary_model.h"
 #include "airshape/schema/dom_reader.h"
 #include "airshape/schema/dom_writer.h"
 #include "airshape/schema/generated/cpacs_model.h"
@@ -45,11 +44,9 @@ void Configuration::load() {
   Problems warnings;
   for (const Problem& problem : uids.problems())
     warnings.push_back({Problem::Severity::Warning, problem.xpath, problem.message});
-  for (const model::ModelComponents& model : model::everyModel(*cpacs))
-    warnings.insert(warnings.end(), model.skipped.begin(), model.skipped.end());
   graph::ComponentGraph components;
   try {
-    components = graph::ComponentGraph::build(root, locations_, warnings);
+    components = graph::ComponentGraph::build(root, locations_, *cpacs, warnings);
   } catch (const Error& error) {
     throw error.inFile(document_.source());
   }

@@ -5,12 +5,20 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/model/primary_model.h"
 #include "airshape/schema/generated/cpacs_model.h"
 #include "test_support.h"
 
 namespace airshape {
 namespace {
+
+/// The wings the typed model holds in the aircraft models.
+std::vector<schema::WingType*> wingsOf(const Configuration& configuration) {
+  std::vector<schema::WingType*> wings;
+  for (auto& model : configuration.cpacs().vehicles->aircraft->model)
+    if (model.wings)
+      for (auto& wing : model.wings->wing) wings.push_back(&wing);
+  return wings;
+}
 
 bool hasProblem(const Problems& problems, const std::string& xpath, const std::string& text) {
   return std::any_of(problems.begin(), problems.end(),
@@ -20,7 +28,7 @@ bool hasProblem(const Problems& problems, const std::string& xpath, const std::s
 TEST(ModelReading, TypedValuesAreRead) {
   const auto configuration = Configuration::fromString(
       test::cpacsDocument("<wings>" + test::wingXml("W", "", " symmetry=\"x-z-plane\"") + "</wings>"));
-  const auto wings = model::primaryModel(configuration.cpacs()).wings;
+  const auto wings = wingsOf(configuration);
   ASSERT_EQ(wings.size(), 1u);
   EXPECT_EQ(wings[0]->uID, "W");
   ASSERT_TRUE(wings[0]->symmetry.has_value());
@@ -71,7 +79,7 @@ TEST(ModelWriting, AnUneditedModelLeavesTheDocumentAsItWas) {
 
 TEST(ModelWriting, EditsReachTheDocumentInSchemaOrder) {
   auto configuration = Configuration::fromString(test::cpacsDocument("<wings>" + test::wingXml("W") + "</wings>"));
-  schema::WingType& wing = *model::primaryModel(configuration.cpacs()).wings[0];
+  schema::WingType& wing = *wingsOf(configuration)[0];
   wing.name = "Renamed";
   wing.description = "added";
   wing.transformation->scaling->x = 2.5;
@@ -95,7 +103,7 @@ TEST(ModelWriting, TextTheModelCannotHoldStaysAsWritten) {
 TEST(ModelWriting, RepeatedUidsAreLeftOutOfTheModelButSaved) {
   auto configuration =
       Configuration::fromString(test::cpacsDocument("<wings>" + test::wingXml("W") + test::wingXml("W") + "</wings>"));
-  EXPECT_EQ(model::primaryModel(configuration.cpacs()).wings.size(), 1u);
+  EXPECT_EQ(wingsOf(configuration).size(), 1u);
   EXPECT_FALSE(configuration.warnings().empty());
   const std::string before = configuration.document().toString();
   configuration.writeModel();

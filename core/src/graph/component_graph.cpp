@@ -13,6 +13,7 @@
 #include <xercesc/dom/DOM.hpp>
 
 #include "airshape/error.h"
+#include "airshape/schema/node_lookup.h"
 #include "airshape/xml/text.h"
 
 namespace airshape::graph {
@@ -147,6 +148,13 @@ ComponentLocation ComponentLocation::placedByItsTransformation() const {
   return copy;
 }
 
+ComponentLocation ComponentLocation::leftOutWhen(
+    std::function<std::optional<Problem>(const schema::Node&)> check) const {
+  ComponentLocation copy = *this;
+  copy.unbuildable = std::move(check);
+  return copy;
+}
+
 std::vector<ComponentLocation> resolveLocations(const std::vector<ComponentLocation>& declared) {
   std::vector<ComponentLocation> resolved = {ComponentLocation{kModelNodeType, "", "plane"}.asPart()};
   for (const ComponentLocation& declaration : declared) {
@@ -159,6 +167,15 @@ std::vector<ComponentLocation> resolveLocations(const std::vector<ComponentLocat
 long ComponentGraph::find(const std::string& uid) const {
   const auto entry = byUid_.find(uid);
   return entry == byUid_.end() || uid.empty() ? -1 : static_cast<long>(entry->second);
+}
+
+std::string ComponentGraph::leftOutReason(const Component& component) const {
+  for (const Component* above = &component; above != nullptr;) {
+    if (above->unbuildable) return above->unbuildable->message;
+    const long parent = find(above->parentUid);
+    above = parent < 0 ? nullptr : &components_[static_cast<std::size_t>(parent)];
+  }
+  return {};
 }
 
 const Component& ComponentGraph::named(const std::string& uid) const {
@@ -190,6 +207,17 @@ void ComponentGraph::add(const DOMElement& element, const ComponentLocation& loc
   components_.push_back(std::move(component));
 }
 
+void ComponentGraph::checkBuildable(const DOMElement& element, const ComponentLocation& location,
+                                    schema::Node& typedModel, Problems& warnings) {
+  if (components_.empty() || components_.back().element != &element) return;  // a repeated uID: not added
+  const schema::Node* node = schema::nodeBoundTo(typedModel, element);
+  if (node == nullptr) return;
+  if (std::optional<Problem> why = location.unbuildable(*node)) {
+    warnings.push_back(*why);
+    components_.back().unbuildable = std::move(why);
+  }
+}
+
 void ComponentGraph::resolveParents(Problems& warnings) {
   std::unordered_map<const DOMNode*, std::size_t> byElement;
   for (std::size_t i = 0; i < components_.size(); ++i) byElement.emplace(components_[i].element, i);
@@ -216,7 +244,7 @@ void ComponentGraph::resolveParents(Problems& warnings) {
 }
 
 ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vector<ComponentLocation>& locations,
-                                     Problems& warnings) {
+                                     schema::Node& typedModel, Problems& warnings) {
   ComponentGraph result;
   const std::vector<const DOMElement*> modelElements = models(cpacsRoot);
   std::map<std::string, std::size_t> atPath;  // the first location declared at a path claims it
@@ -231,8 +259,10 @@ ComponentGraph ComponentGraph::build(const DOMElement& cpacsRoot, const std::vec
   for (std::size_t model = 0; model < modelElements.size(); ++model) {
     const auto modelLocation = atPath.find("");
     if (modelLocation != atPath.end()) result.add(*modelElements[model], locations[modelLocation->second], model);
-    collect(*modelElements[model], "", atPath, prefixes,
-            [&](const DOMElement& element, std::size_t location) { result.add(element, locations[location], model); });
+    collect(*modelElements[model], "", atPath, prefixes, [&](const DOMElement& element, std::size_t location) {
+      result.add(element, locations[location], model);
+      if (locations[location].unbuildable) result.checkBuildable(element, locations[location], typedModel, warnings);
+    });
   }
   result.resolveParents(warnings);
 

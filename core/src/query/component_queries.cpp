@@ -13,7 +13,6 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
 #include "airshape/geometry/loop_area.h"
-#include "airshape/model/primary_model.h"
 #include "airshape/query/arguments.h"
 #include "intersection_curves.h"
 
@@ -47,7 +46,7 @@ Json componentList(Configuration& configuration, const Json& query) {
   std::vector<const graph::Component*> listed;
   for (const graph::Component& component : configuration.components().components())
     if (component.model == 0 && !component.uid.empty() &&
-        (all || (component.listed && !model::leftOut(configuration, component))))
+        (all || (component.listed && configuration.components().leftOutReason(component).empty())))
       listed.push_back(&component);
   std::sort(listed.begin(), listed.end(), [](const auto* a, const auto* b) { return a->uid < b->uid; });
   Json list = Json::array();

@@ -9,7 +9,6 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
-#include "airshape/model/primary_model.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/query/arguments.h"
 #include "airshape/query/box_answer.h"
@@ -37,7 +36,7 @@ Bnd_Box mirrored(const Bnd_Box& box, const std::string& symmetry) {
 Bnd_Box configurationBox(Configuration& configuration) {
   Bnd_Box all;
   for (const auto& component : configuration.components().components()) {
-    if (!component.inConfigurationBox || model::leftOut(configuration, component) ||
+    if (!component.inConfigurationBox || !configuration.components().leftOutReason(component).empty() ||
         configuration.shapes().find(component.nodeType) == nullptr)
       continue;
     Bnd_Box box;

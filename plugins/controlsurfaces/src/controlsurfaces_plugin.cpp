@@ -11,11 +11,11 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_measures.h"
-#include "airshape/model/primary_model.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
 #include "airshape/query/box_answer.h"
 #include "airshape/query/model_selection.h"
+#include "airshape/wing/wing_list.h"
 #include "device_geometry.h"
 #include "device_list.h"
 #include "device_services.h"
@@ -28,7 +28,8 @@ using query::Json;
 using Services = std::shared_ptr<const wing::WingServices>;
 
 const schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
-  return query::selectInFirstModel(configuration, model::primaryModel(configuration).wings, query, "wing", "wing");
+  return query::selectInFirstModel(configuration, wing::wingsOf(configuration), wing::wingNodeTypes(), query, "wing",
+                                   "wing");
 }
 
 /// The uID of the device a query's 1-based `index` names among `devices`.

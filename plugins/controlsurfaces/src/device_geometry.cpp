@@ -22,7 +22,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/ruled_sections.h"
 #include "airshape/model/placement.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/wing/wing_list.h"
 #include "device_from_skins.h"
 #include "hinge_motion.h"
 #include "line_crossings.h"
@@ -33,11 +33,6 @@ namespace airshape::controlsurfaces {
 namespace {
 
 using Surface = wing::WingServices::Surface;
-
-const schema::WingType& wingNamed(const Configuration& configuration, const std::string& uid) {
-  const model::ModelComponents& model = model::modelHolding(configuration, uid);
-  return model::findByUid(configuration, model, model.wings, uid, "wing");
-}
 
 }  // namespace
 
@@ -405,7 +400,7 @@ gp_Pnt DeviceGeometry::hingePoint(const schema::ControlSurfaceHingePointType& hi
   const gp_Pnt between(lower.XYZ() + hinge.hingeRelHeight * (upper.XYZ() - lower.XYZ()));
 
   // The reference places hinge points by the wing's own transformation only.
-  const schema::WingType& wing = wingNamed(configuration_, device_.wingUid);
+  const schema::WingType& wing = wing::wingNamed(configuration_, device_.wingUid);
   gp_Pnt local = model::apply(model::componentTransform(configuration_, device_.wingUid).inverse(), between);
   if (hinge.translation) {
     const schema::PointType& t = *hinge.translation;

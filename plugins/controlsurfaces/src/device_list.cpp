@@ -3,7 +3,7 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/model/placement.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/wing/wing_list.h"
 
 namespace airshape::controlsurfaces {
 
@@ -104,7 +104,7 @@ std::vector<Device> spoilersOf(const schema::WingType& wing) {
 }
 
 Device deviceNamed(const Configuration& configuration, const std::string& uid) {
-  for (const schema::WingType* wing : model::primaryModel(configuration).wings)
+  for (const schema::WingType* wing : wing::wingsOf(configuration))
     for (const Device& device : allDevicesOf(*wing, true))
       if (device.uid == uid) return device;
   throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");
@@ -113,8 +113,8 @@ Device deviceNamed(const Configuration& configuration, const std::string& uid) {
 Device deviceInAnyModel(const Configuration& configuration, const std::string& uid) {
   // Cached: the structure inside a device asks for its coordinates point by point.
   return *configuration.cache().obtain<Device>("device:" + uid, [&] {
-    for (const model::ModelComponents& model : model::everyModel(configuration))
-      for (const schema::WingType* wing : model.wings)
+    for (std::size_t model = 0; model < model::modelCount(configuration); ++model)
+      for (const schema::WingType* wing : wing::wingsOf(configuration, model))
         for (const Device& device : allDevicesOf(*wing, true))
           if (device.uid == uid) return std::make_shared<const Device>(device);
     throw Error(ErrorCode::InvalidArgument, "no control surface with uID '" + uid + "'");

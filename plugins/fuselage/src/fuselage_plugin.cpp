@@ -9,8 +9,9 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/fused_shape.h"
+#include "airshape/fuselage/fuselage_list.h"
 #include "airshape/geometry/brep_measures.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/model/segment_chain.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
@@ -27,7 +28,7 @@ namespace {
 
 /// The fuselage a query names by index or uID, in the model queries address (the first one).
 schema::FuselageType& selectFuselage(const Configuration& configuration, const Json& query) {
-  return query::selectInFirstModel(configuration, model::primaryModel(configuration).fuselages, query, "fuselage",
+  return query::selectInFirstModel(configuration, fuselagesOf(configuration), fuselageNodeTypes(), query, "fuselage",
                                    "fuselage");
 }
 
@@ -53,7 +54,8 @@ std::size_t segmentOf(const FuselageGeometry& geometry, const Json& q) {
 /// a duct assembly is a group of ducts.
 std::vector<plugin::NodeType> declaredNodeTypes() {
   using plugin::NodeType;
-  return {NodeType{"fuselage", "fuselages/fuselage"}.inBox().placedByItsTransformation(),
+  return {NodeType{"fuselage", "fuselages/fuselage"}.inBox().placedByItsTransformation().leftOutWhen(
+              model::segmentsFormNoChain<schema::FuselageType>),
           NodeType{"fuselageSegment", "segments/segment"}.inside("fuselage").typed("fuselage_segment").asPart(),
           NodeType{"duct", "ducts/duct"}.placedByItsTransformation(), NodeType{"duct", "ducts/ductAssembly"}.asGroup(),
           NodeType{"ductSegment", "ducts/duct/segments/segment"}.typed("fuselage_segment").asPart()};
@@ -71,8 +73,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
                        "(off by default, as in the reference library)",
                        ductCutOutsOf});
     shapes.add("fuselage", [](const Configuration& c, const std::string& uid) {
-      const model::ModelComponents& model = model::modelHolding(c, uid);
-      return FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, uid, "fuselage"))->solid(uid);
+      return FuselageGeometry::of(c, fuselageNamed(c, uid))->solid(uid);
     });
     shapes.add("duct", [](const Configuration& c, const std::string& uid) {
       if (const schema::DuctType* duct = ductNamed(c, uid)) return FuselageGeometry::of(c, *duct)->solid(uid);
@@ -86,9 +87,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
     });
     shapes.add("fuselageSegment", [](const Configuration& c, const std::string& uid) {
       const std::string& fuselageUid = c.components().named(uid).parentUid;
-      const model::ModelComponents& model = model::modelHolding(c, fuselageUid);
-      const auto geometry =
-          FuselageGeometry::of(c, model::findByUid(c, model, model.fuselages, fuselageUid, "fuselage"));
+      const auto geometry = FuselageGeometry::of(c, fuselageNamed(c, fuselageUid));
       const auto& uids = geometry->segmentUids();
       return geometry->segmentSolid(static_cast<std::size_t>(std::find(uids.begin(), uids.end(), uid) - uids.begin()));
     });
@@ -100,7 +99,7 @@ class FuselagePlugin final : public plugin::BasicPlugin {
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"fuselage_count", "", "-> number of fuselages of the model",
-                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c).fuselages.size(); }});
+                  [](Configuration& c, const Json&) -> Json { return fuselagesOf(c).size(); }});
     registry.add({"fuselage_uid", "", "fuselage -> uID",
                   [](Configuration& c, const Json& q) -> Json { return selectFuselage(c, q).uID; }});
     registry.add(

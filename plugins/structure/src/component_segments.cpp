@@ -1,14 +1,14 @@
 #include "component_segments.h"
 
 #include "airshape/configuration.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/wing/wing_list.h"
 
 namespace airshape::structure {
 
 std::vector<WingComponentSegment> everyComponentSegment(const Configuration& configuration) {
   std::vector<WingComponentSegment> all;
-  for (const model::ModelComponents& model : model::everyModel(configuration))
-    for (const schema::WingType* wing : model.wings) {
+  for (std::size_t model = 0; model < model::modelCount(configuration); ++model)
+    for (const schema::WingType* wing : wing::wingsOf(configuration, model)) {
       if (!wing->componentSegments) continue;
       for (const auto& componentSegment : wing->componentSegments->componentSegment)
         all.push_back({wing, &componentSegment});

@@ -2,7 +2,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/fuselage/fuselage_list.h"
 
 namespace airshape::structure {
 
@@ -12,8 +12,8 @@ namespace {
 /// uID is `uid`, in any fuselage of any model.
 template <class Node, class ListOf>
 FuselageElement<Node> findInFuselages(const Configuration& configuration, const std::string& uid, ListOf listOf) {
-  for (const model::ModelComponents& model : model::everyModel(configuration))
-    for (const schema::FuselageType* fuselage : model.fuselages) {
+  for (std::size_t model = 0; model < model::modelCount(configuration); ++model)
+    for (const schema::FuselageType* fuselage : fuselage::fuselagesOf(configuration, model)) {
       if (!fuselage->structure) continue;
       for (const Node* node : listOf(*fuselage->structure))
         if (node->uID == uid) return {node, fuselage, &*fuselage->structure, fuselage->uID, std::nullopt, nullptr};

@@ -2,7 +2,7 @@
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/wing/wing_list.h"
 
 namespace airshape::wing {
 
@@ -11,8 +11,7 @@ const schema::WingType& wingHolding(const Configuration& configuration, const st
   const long part = graph.find(partUid);
   if (part < 0) throw Error(ErrorCode::InvalidArgument, "no component with uID '" + partUid + "'");
   const std::string& wingUid = graph.components()[static_cast<std::size_t>(part)].parentUid;
-  const model::ModelComponents& model = model::modelHolding(configuration, wingUid);
-  return model::findByUid(configuration, model, model.wings, wingUid, "wing");
+  return wingNamed(configuration, wingUid);
 }
 
 const schema::ComponentSegmentType& componentSegmentNamed(const schema::WingType& wing, const std::string& uid) {

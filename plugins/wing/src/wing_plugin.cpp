@@ -9,11 +9,12 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/brep_measures.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/model/segment_chain.h"
 #include "airshape/model/symmetry.h"
 #include "airshape/plugin/basic_plugin.h"
 #include "airshape/query/arguments.h"
 #include "airshape/query/model_selection.h"
+#include "airshape/wing/wing_list.h"
 #include "component_segment.h"
 #include "segment_locator.h"
 #include "wing_geometry.h"
@@ -30,7 +31,7 @@ namespace {
 
 /// The wing a query names by index or uID, in the model queries address (the first one).
 schema::WingType& selectWing(const Configuration& configuration, const Json& query) {
-  return query::selectInFirstModel(configuration, model::primaryModel(configuration).wings, query, "wing", "wing");
+  return query::selectInFirstModel(configuration, wingsOf(configuration), wingNodeTypes(), query, "wing", "wing");
 }
 
 std::size_t segmentCount(const schema::WingType& wing) { return wing.segments ? wing.segments->segment.size() : 0; }
@@ -74,9 +75,12 @@ query::Handler segmentMeasure(double (WingShape::*measure)(std::size_t) const) {
 /// solid that queries measure).
 std::vector<plugin::NodeType> declaredNodeTypes() {
   using plugin::NodeType;
-  std::vector<NodeType> types = {
-      NodeType{"wing", "wings/wing"}.inBox().placedByItsTransformation(),
-      NodeType{"rotorBlade", "rotorBlades/rotorBlade"}.typed("rotor_blade").placedByItsTransformation()};
+  std::vector<NodeType> types = {NodeType{"wing", "wings/wing"}.inBox().placedByItsTransformation().leftOutWhen(
+                                     model::segmentsFormNoChain<schema::WingType>),
+                                 NodeType{"rotorBlade", "rotorBlades/rotorBlade"}
+                                     .typed("rotor_blade")
+                                     .placedByItsTransformation()
+                                     .leftOutWhen(model::segmentsFormNoChain<schema::WingType>)};
   for (const char* body : {"wing", "rotorBlade"}) {
     types.push_back(NodeType{"wingSegment", "segments/segment"}.inside(body).typed("wing_segment").asPart());
     types.push_back(NodeType{"wingComponentSegment", "componentSegments/componentSegment"}
@@ -91,8 +95,7 @@ class WingPlugin final : public plugin::BasicPlugin {
  public:
   void registerShapeBuilders(ComponentShapes& shapes) const override {
     const ShapeBuilder wingSolid = [](const Configuration& c, const std::string& uid) {
-      const model::ModelComponents& model = model::modelHolding(c, uid);
-      const schema::WingType& wing = model::findByUid(c, model, model.wings, uid, "wing");
+      const schema::WingType& wing = wingNamed(c, uid);
       return WingShape::of(c, wing)->solid();
     };
     shapes.add("wing", wingSolid);
@@ -121,7 +124,7 @@ class WingPlugin final : public plugin::BasicPlugin {
 
   void registerQueries(query::QueryRegistry& registry) const override {
     registry.add({"wing_count", "", "-> number of wings of the model",
-                  [](Configuration& c, const Json&) -> Json { return model::primaryModel(c).wings.size(); }});
+                  [](Configuration& c, const Json&) -> Json { return wingsOf(c).size(); }});
     registry.add(
         {"wing_uid", "", "wing -> uID", [](Configuration& c, const Json& q) -> Json { return selectWing(c, q).uID; }});
     registry.add({"wing_segment_count", "", "wing -> number of segments",

@@ -10,7 +10,7 @@
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/model/placement.h"
-#include "airshape/model/primary_model.h"
+#include "airshape/wing/wing_list.h"
 #include "component_segment.h"
 #include "wing_geometry.h"
 #include "wing_lookup.h"
@@ -24,12 +24,6 @@ namespace {
 /// An airfoil side (profile coordinates) placed by a segment end's transformation.
 Handle(Geom_BSplineCurve) placedSide(const SegmentEnd& end, bool upper) {
   return geometry::transformed(upper ? end.profile->upperCurve() : end.profile->lowerCurve(), end.transform);
-}
-
-/// The wing or rotor blade of this uID; throws Error when none has it.
-const schema::WingType& wingNamed(const Configuration& configuration, const std::string& uid) {
-  const model::ModelComponents& model = model::modelHolding(configuration, uid);
-  return model::findByUid(configuration, model, model.wings, uid, "wing");
 }
 
 gp_Vec applyLinear(const model::Transform& transform, const gp_Vec& v) {

@@ -1,10 +1,13 @@
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "airshape/problem.h"
+#include "airshape/schema/node.h"
 #include "airshape/xml/path.h"
 
 namespace airshape::graph {
@@ -42,6 +45,10 @@ struct ComponentLocation {
   bool placedByTransformation = false;
   /// The node type whose elements hold this one; empty: the model element.
   std::string within{};
+  /// Why an element cannot be built at all (given its node in the typed model), or nothing:
+  /// such a component is left out of its model's lists (graph::ComponentGraph::leftOutReason)
+  /// and a warning names it when the file is opened.
+  std::function<std::optional<Problem>(const schema::Node&)> unbuildable{};
 
   /// The same declaration with another trait; they read as a sentence in a plugin:
   /// `ComponentLocation{"probe", "probes/probe"}.inside("sensorPod").asInsideParent()`.
@@ -55,6 +62,7 @@ struct ComponentLocation {
   ComponentLocation unlisted() const;
   ComponentLocation asGroup() const;
   ComponentLocation placedByItsTransformation() const;
+  ComponentLocation leftOutWhen(std::function<std::optional<Problem>(const schema::Node&)> check) const;
 };
 
 /// The node type of the model element itself (type `plane`), which has no shape.
@@ -77,6 +85,7 @@ struct Component {
   bool listed = true;                   ///< ComponentLocation::listed
   bool group = false;                   ///< ComponentLocation::group
   bool placedByTransformation = false;  ///< ComponentLocation::placedByTransformation
+  std::optional<Problem> unbuildable;   ///< why it cannot be built (ComponentLocation::unbuildable)
   std::string parentUid;                ///< its parentUID, else the component it lies in; empty: attached to nothing
   std::string xpath;
   std::size_t model = 0;  ///< index of the model (aircraft models first, then rotorcraft models)
@@ -91,8 +100,10 @@ class ComponentGraph {
   /// it unless its parentUID names another component. A parentUID that
   /// names no component (nor an element the component lies in) is reported in `warnings` and
   /// the component is built on its own; a cycle throws Error(InvalidModel) naming the uIDs in it.
+  /// `typedModel` (the document read into the generated model) is handed to the locations'
+  /// `unbuildable` checks.
   static ComponentGraph build(const xercesc::DOMElement& cpacsRoot, const std::vector<ComponentLocation>& locations,
-                              Problems& warnings);
+                              schema::Node& typedModel, Problems& warnings);
 
   const std::vector<Component>& components() const { return components_; }
   /// Indices into components(): parents before children, siblings in document order.
@@ -103,10 +114,16 @@ class ComponentGraph {
   long find(const std::string& uid) const;
   /// The component with this uID; throws Error(InvalidArgument) when no component has it.
   const Component& named(const std::string& uid) const;
+  /// Why the component, or one it lies in, cannot be built ("" when nothing says so).
+  std::string leftOutReason(const Component& component) const;
 
  private:
   /// Adds a component found at `location`, unless one before it in the document holds its uID.
   void add(const xercesc::DOMElement& element, const ComponentLocation& location, std::size_t model);
+  /// Records why the component just added for `element` cannot be built, if its location's
+  /// check says so.
+  void checkBuildable(const xercesc::DOMElement& element, const ComponentLocation& location, schema::Node& typedModel,
+                      Problems& warnings);
   /// Attaches each component to its parent: the one its parentUID names, else the one it lies in.
   void resolveParents(Problems& warnings);
 
