@@ -1,7 +1,6 @@
 #include "fuselage_wall.h"
 
 #include <optional>
-#include <set>
 #include <vector>
 
 #include <BRepAlgoAPI_Splitter.hxx>
@@ -21,6 +20,7 @@
 #include <gp_Pln.hxx>
 
 #include "airshape/configuration.h"
+#include "airshape/construction_guard.h"
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
 #include "airshape/geometry/ruled_side.h"
@@ -33,25 +33,6 @@
 namespace airshape::structure {
 
 namespace {
-
-/// The walls being built on this thread: a wall placed on a wall that is placed on it again
-/// would never finish.
-thread_local std::set<std::string> wallsUnderConstruction;
-
-class ConstructionGuard {
- public:
-  ConstructionGuard(const std::string& uid, const std::string& xpath) : uid_(uid) {
-    if (!wallsUnderConstruction.insert(uid).second)
-      throw Error(ErrorCode::InvalidModel, "wall '" + uid + "' depends on itself through its wall positions", {},
-                  xpath);
-  }
-  ~ConstructionGuard() { wallsUnderConstruction.erase(uid_); }
-  ConstructionGuard(const ConstructionGuard&) = delete;
-  ConstructionGuard& operator=(const ConstructionGuard&) = delete;
-
- private:
-  std::string uid_;
-};
 
 /// A wall position placed: its base point (global) and the element it lies on, if any.
 struct BasePoint {
@@ -283,7 +264,9 @@ std::vector<TopoDS_Face> boundingFaces(const Configuration& configuration, const
 
 NamedShape fuselageWall(const Configuration& configuration, const tank::TankServices* tanks, const std::string& uid) {
   const auto wall = wallSegmentNamed(configuration, uid, tanks);
-  const ConstructionGuard guard(uid, wall.node->xpath);
+  // A wall placed on a wall that is placed on it again would never finish.
+  const ConstructionGuard guard("wall", uid, "wall '" + uid + "' depends on itself through its wall positions",
+                                wall.node->xpath);
   const WallLayout layout = layoutOf(configuration, wall);
   const FuselageFrame fuselage =
       FuselageFrame::ofHost(configuration, wall.hostUid, wall.fuselage, wall.vesselPlacement);

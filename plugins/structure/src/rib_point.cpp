@@ -1,8 +1,7 @@
 #include "rib_point.h"
 
-#include <set>
-
 #include "airshape/configuration.h"
+#include "airshape/construction_guard.h"
 #include "airshape/error.h"
 #include "rib_cutter.h"
 #include "rib_faces.h"
@@ -25,32 +24,11 @@ gp_Pln ribPlane(const Configuration& configuration, const StructureFrame& frame,
   }
 }
 
-namespace {
-
-/// The ribs definitions whose ribs are being looked at on this thread: a spar on a rib of a
-/// definition whose ribs end at that spar would be built forever.
-thread_local std::set<std::string> ribsInUse;
-
-class RibsGuard {
- public:
-  RibsGuard(const std::string& uid, const std::string& where) : uid_(uid) {
-    if (!ribsInUse.insert(uid).second)
-      throw Error(ErrorCode::InvalidModel,
-                  "the ribs of '" + uid + "' and a spar positioned on them depend on each other", {}, where);
-  }
-  ~RibsGuard() { ribsInUse.erase(uid_); }
-  RibsGuard(const RibsGuard&) = delete;
-  RibsGuard& operator=(const RibsGuard&) = delete;
-
- private:
-  std::string uid_;
-};
-
-}  // namespace
-
 gp_Pnt pointOnRib(const Configuration& configuration, const StructureFrame& frame, const std::string& ribsUid,
                   long long number, double xsi, const std::string& where) {
-  const RibsGuard guard(ribsUid, where);
+  // A spar on a rib of a definition whose ribs end at that spar would be built for ever.
+  const ConstructionGuard guard(
+      "ribs", ribsUid, "the ribs of '" + ribsUid + "' and a spar positioned on them depend on each other", where);
   const gp_Pln plane = ribPlane(configuration, frame, ribsUid, number, where);
   const RibsDefinition ribs = ribsDefinitionNamed(configuration, ribsUid);
   const RibCutter cutter(configuration, frame, *ribs.structure);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include <BRepBndLib.hxx>
 #include <BRep_Builder.hxx>
@@ -11,6 +10,7 @@
 #include <TopoDS_Compound.hxx>
 
 #include "airshape/configuration.h"
+#include "airshape/construction_guard.h"
 #include "airshape/error.h"
 #include "rib_cutter.h"
 #include "rib_point.h"
@@ -21,25 +21,6 @@ namespace airshape::structure {
 namespace {
 
 using Surface = wing::WingServices::Surface;
-
-/// The spars whose lines are being looked at on this thread: a spar positioned on a spar that
-/// is itself positioned on the first would be built forever.
-thread_local std::set<std::string> sparsInUse;
-
-class SparsGuard {
- public:
-  SparsGuard(const std::string& uid, const std::string& where) : uid_(uid) {
-    if (!sparsInUse.insert(uid).second)
-      throw Error(ErrorCode::InvalidModel,
-                  "spar '" + uid + "' is positioned on itself through spar positions on curves", {}, where);
-  }
-  ~SparsGuard() { sparsInUse.erase(uid_); }
-  SparsGuard(const SparsGuard&) = delete;
-  SparsGuard& operator=(const SparsGuard&) = delete;
-
- private:
-  std::string uid_;
-};
 
 gp_Vec linearly(const model::Transform& transform, const gp_Vec& v) {
   return gp_Vec(model::apply(transform, gp_Pnt(0, 0, 0)), model::apply(transform, gp_Pnt(v.XYZ())));
@@ -187,7 +168,10 @@ gp_Pnt StructureFrame::positionPoint(const SparPosition& position) const {
                         position.xpath + "/sparPositionRib");
     case SparPosition::Kind::OnCurve: {
       const std::string where = position.xpath + "/sparPositionCurve/referenceUID";
-      const SparsGuard guard(position.referenceUid, where);
+      // A spar positioned on a spar that is itself positioned on the first would be built for ever.
+      const ConstructionGuard guard(
+          "spar", position.referenceUid,
+          "spar '" + position.referenceUid + "' is positioned on itself through spar positions on curves", where);
       return lineNamed(position.referenceUid, where).at(position.eta);
     }
   }
