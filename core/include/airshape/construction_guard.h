@@ -6,7 +6,7 @@ namespace airshape {
 
 /// Stops a construction that would need itself: while a guard for (`what`, `uid`) lives on a
 /// thread, making another one for the same pair on that thread throws Error(InvalidModel) with
-/// `message`, naming `xpath` (a spar positioned on a spar positioned on it, a wall placed on a
+/// `message`, naming `xpath` (an element positioned on one positioned on it, a wall placed on a
 /// wall placed on it), where the construction would otherwise recurse for ever.
 class ConstructionGuard {
  public:

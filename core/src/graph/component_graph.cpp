@@ -92,67 +92,37 @@ void collect(const DOMElement& element, const std::string& path, const std::map<
   }
 }
 
+/// A copy of a declaration with one trait changed: the steps of the declarations' sentences.
+template <class Trait>
+ComponentLocation with(ComponentLocation location, Trait ComponentLocation::*trait, Trait value) {
+  location.*trait = std::move(value);
+  return location;
+}
+
 }  // namespace
 
 ComponentLocation ComponentLocation::inside(std::string container) const {
-  ComponentLocation copy = *this;
-  copy.within = std::move(container);
-  return copy;
+  return with(*this, &ComponentLocation::within, std::move(container));
 }
-
 ComponentLocation ComponentLocation::typed(std::string protocolType) const {
-  ComponentLocation copy = *this;
-  copy.typeName = std::move(protocolType);
-  return copy;
+  return with(*this, &ComponentLocation::typeName, std::move(protocolType));
 }
-
-ComponentLocation ComponentLocation::asPart() const {
-  ComponentLocation copy = *this;
-  copy.part = true;
-  return copy;
-}
-
+ComponentLocation ComponentLocation::asPart() const { return with(*this, &ComponentLocation::part, true); }
 ComponentLocation ComponentLocation::asInsideParent() const {
-  ComponentLocation copy = *this;
-  copy.insideParent = true;
-  return copy;
+  return with(*this, &ComponentLocation::insideParent, true);
 }
-
 ComponentLocation ComponentLocation::asStructure() const {
-  ComponentLocation copy = asInsideParent();
-  copy.structure = true;
-  return copy;
+  return with(asInsideParent(), &ComponentLocation::structure, true);
 }
-
-ComponentLocation ComponentLocation::inBox() const {
-  ComponentLocation copy = *this;
-  copy.inConfigurationBox = true;
-  return copy;
-}
-
-ComponentLocation ComponentLocation::unlisted() const {
-  ComponentLocation copy = *this;
-  copy.listed = false;
-  return copy;
-}
-
-ComponentLocation ComponentLocation::asGroup() const {
-  ComponentLocation copy = *this;
-  copy.group = true;
-  return copy;
-}
-
+ComponentLocation ComponentLocation::inBox() const { return with(*this, &ComponentLocation::inConfigurationBox, true); }
+ComponentLocation ComponentLocation::unlisted() const { return with(*this, &ComponentLocation::listed, false); }
+ComponentLocation ComponentLocation::asGroup() const { return with(*this, &ComponentLocation::group, true); }
 ComponentLocation ComponentLocation::placedByItsTransformation() const {
-  ComponentLocation copy = *this;
-  copy.placedByTransformation = true;
-  return copy;
+  return with(*this, &ComponentLocation::placedByTransformation, true);
 }
-
 ComponentLocation ComponentLocation::leftOutWhen(
     std::function<std::optional<Problem>(const schema::Node&)> check) const {
-  ComponentLocation copy = *this;
-  copy.unbuildable = std::move(check);
-  return copy;
+  return with(*this, &ComponentLocation::unbuildable, std::move(check));
 }
 
 std::vector<ComponentLocation> resolveLocations(const std::vector<ComponentLocation>& declared) {
