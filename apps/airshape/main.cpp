@@ -100,7 +100,10 @@ const std::map<std::string, Command>& commands() {
         "file that no longer loads is said in the page, which keeps the last good geometry.\n"
         "Ends on Ctrl-C or when the page's 'stop the server' is pressed. See docs/viewer.md."}},
       {"plugins",
-       {runPlugins, "airshape plugins", "Lists the loaded plugins: name, version, file, node types, query ops."}},
+       {runPlugins, "airshape plugins [--json]",
+        "Lists the loaded plugins: name, version, file, node types, query ops. With --json: the\n"
+        "plugins and every query op with its owner, arguments (required and optional) and answer,\n"
+        "as one JSON object (what the Python binding's methods are generated from)."}},
   };
   return table;
 }

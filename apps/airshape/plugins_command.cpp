@@ -3,13 +3,38 @@
 
 #include "airshape/error.h"
 #include "airshape/plugin/plugin_host.h"
+#include "airshape/query/op_signature.h"
 #include "commands.h"
 #include "open_configuration.h"
 
 namespace airshape::cli {
 
+namespace {
+
+/// The plugins and every op with its signature, as JSON (what the bindings are generated from).
+int printJson(plugin::PluginHost& host) {
+  query::Json plugins = query::Json::array();
+  for (const auto& loaded : host.plugins()) {
+    std::set<std::string> types;
+    for (const auto& type : loaded.nodeTypes) types.insert(type.nodeType);
+    plugins.push_back({{"name", loaded.plugin->name()},
+                       {"version", loaded.plugin->version()},
+                       {"file", loaded.file},
+                       {"node_types", types}});
+  }
+  std::cout << query::Json{{"plugin_abi", AIRSHAPE_PLUGIN_ABI_VERSION},
+                           {"plugins", plugins},
+                           {"ops", query::describeOps(host.queries())}}
+                   .dump(2)
+            << '\n';
+  return kSuccess;
+}
+
+}  // namespace
+
 int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
-  if (!arguments.empty()) throw Error(ErrorCode::InvalidArgument, "usage: airshape plugins");
+  if (arguments.size() == 1 && arguments[0] == "--json") return printJson(host);
+  if (!arguments.empty()) throw Error(ErrorCode::InvalidArgument, "usage: airshape plugins [--json]");
   std::cout << "plugin ABI version " << AIRSHAPE_PLUGIN_ABI_VERSION << "; core plugins from "
             << plugin::PluginHost::coreLibraryFolder() << '\n';
   for (const auto& loaded : host.plugins()) {

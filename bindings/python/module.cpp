@@ -13,6 +13,7 @@
 #include "airshape/error.h"
 #include "airshape/export/exporter.h"
 #include "airshape/plugin/plugin_host.h"
+#include "airshape/query/op_signature.h"
 #include "airshape/query/query_registry.h"
 
 namespace py = pybind11;
@@ -131,6 +132,9 @@ void translateErrors() {
 PYBIND11_MODULE(_airshape, m) {
   m.doc() = "Airshape's compiled core: CPACS configurations, their query ops, editing and exports.";
   translateErrors();
+  m.def(
+      "ops_description", [] { return airshape::query::describeOps(host().queries()).dump(); },
+      "Every query op of the loaded plugins with its owner, summary, arguments and answer, as JSON.");
   py::class_<PyConfiguration>(m, "Configuration", "A CPACS 3 file opened for geometry.")
       .def_static("open", &openFile, py::arg("path"), "Opens a CPACS 3 file.")
       .def_static("from_string", &openString, py::arg("xml"), py::arg("name") = "<string>",

@@ -41,11 +41,12 @@ def installed(tmp_path_factory):
                                capture_output=True, text=True)
     assert configure.returncode == 0, configure.stdout + configure.stderr
     assert str(BUILD) not in open(build / "CMakeCache.txt").read(), "built against the install, not the build tree"
-    compile_ = subprocess.run(["cmake", "--build", str(build), "--target", "sensor_array", "-j", "2"],
+    compile_ = subprocess.run(["cmake", "--build", str(build), "--target", "sensor_array", "wing_tip", "-j", "2"],
                               capture_output=True, text=True)
     assert compile_.returncode == 0, compile_.stdout + compile_.stderr
     plugins = tmp_path_factory.mktemp("plugins")
     shutil.copy(build / "libsensor_array.so", plugins)
+    shutil.copy(build / "libwing_tip.so", plugins)  # an op of its own, for the generated methods
     aircraft = tmp_path_factory.mktemp("aircraft") / "sensors.xml"
     text = open(os.path.join(SOURCE, "examples", "generic-airliner.xml")).read()
     text = text.replace("</componentSegments>", "</componentSegments>" + SENSOR, 1).replace("</model>", ARRAY + "</model>")
@@ -170,6 +171,10 @@ for uid in ("WingSensor", "Array", "BoxA", "Cable"):
     c = config.component(uid)
     out[uid] = [c.type, c.volume, c.surface_area, [child.uid for child in c.children]]
 config.component("Array").export({str(tmp_path / "array.step")!r})
+# A third-party plugin's op is a method too, with no line written for it.
+out["tip"] = [config.ops.component_segment_tip(component_segment="Wing_CS"),
+              config.query("component_segment_tip", component_segment="Wing_CS"),
+              config.ops.component_segment_tip.__doc__]
 print(json.dumps(out))
 """
     result = subprocess.run([python, "-c", script], capture_output=True, text=True, timeout=300,
@@ -181,3 +186,6 @@ print(json.dumps(out))
     assert out["Cable"][1:3] == [0.0, 0.0]
     assert out["WingSensor"][1] == pytest.approx(4.0 / 3.0 * math.pi * RADIUS ** 3, rel=1e-9)
     assert step_solids(tmp_path / "array.step") == pytest.approx([1.0, 1.0], rel=1e-9)
+    method, query, doc = out["tip"]
+    assert method == query and len(method) == 3
+    assert "leading edge at its outer end (op of plugin wingtip)" in doc

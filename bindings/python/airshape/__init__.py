@@ -18,6 +18,7 @@ from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _airshape
+from ._ops import Ops
 from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetError, PluginError,
                      WriteError)
 
@@ -582,6 +583,12 @@ class Configuration:
     def rotors(self) -> _Components:
         """The rotors of the model the queries address (a rotorcraft model's)."""
         return _Components(self, "rotor", Rotor)
+
+    @property
+    def ops(self) -> Ops:
+        """Every query op of the loaded plugins as a method, its parameters and docstring from
+        the op's signature: config.ops.wing_span(wing=1) (docs/python.md)."""
+        return Ops(self.query)
 
     def component(self, uid: str) -> Component:
         """Any component by uID (spars, ribs, cells, devices, segments, ...)."""

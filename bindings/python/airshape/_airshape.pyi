@@ -3,6 +3,9 @@ from typing import Any, Dict, List
 
 import numpy as np
 
+
+def ops_description() -> str: ...
+
 class Configuration:
     @staticmethod
     def open(path: str) -> "Configuration": ...
