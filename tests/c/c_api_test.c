@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "airshape.h"
+#include "airshape_ops.h"
 
 static int failures = 0;
 
@@ -311,6 +312,33 @@ static void duct_cutouts(void) {
   airshape_close(c);
 }
 
+/* The functions generated from the query registry (airshape_ops.h): each op with its arguments,
+ * its result as JSON, the same text airshape_query gives. */
+static void generated_op_functions(void) {
+  airshape_configuration* c = NULL;
+  CHECK(airshape_open(airliner, &c) == AIRSHAPE_OK);
+  char* generated = NULL;
+  char* queried_text = NULL;
+  CHECK(airshape_op_wing_span(c, 1, &generated) == AIRSHAPE_OK);
+  CHECK(airshape_query(c, "{\"op\":\"wing_span\",\"wing\":1}", &queried_text) == AIRSHAPE_OK);
+  CHECK(generated != NULL && queried_text != NULL && strcmp(generated, queried_text) == 0);
+  airshape_free(generated);
+  airshape_free(queried_text);
+  const double point[3] = {20.0, 0.0, 0.0}, normal[3] = {1.0, 0.0, 0.0};
+  CHECK(airshape_op_cross_section_area(c, "Fuselage", point, normal, &generated) == AIRSHAPE_OK);
+  CHECK(generated != NULL && atof(generated) > 1.0);
+  airshape_free(generated);
+  const int mirrored = 1; /* an optional argument: a pointer, NULL leaves it out */
+  CHECK(airshape_op_component_faces(c, "Wing", &mirrored, &generated) == AIRSHAPE_OK);
+  CHECK(generated != NULL && strstr(generated, "\"name\"") != NULL);
+  airshape_free(generated);
+  CHECK(airshape_op_bounding_box(c, NULL, &generated) == AIRSHAPE_OK && strstr(generated, "\"min\"") != NULL);
+  airshape_free(generated);
+  CHECK(airshape_op_wing_span(c, 9, &generated) == AIRSHAPE_INVALID_ARGUMENT);
+  CHECK(strstr(airshape_last_error(), "wing") != NULL);
+  airshape_close(c);
+}
+
 int main(int argc, char** argv) {
   if (argc != 6) {
     fprintf(stderr,
@@ -330,6 +358,7 @@ int main(int argc, char** argv) {
   structure_components(argv[2]);
   rotors();
   duct_cutouts();
+  generated_op_functions();
   if (failures == 0) printf("c_api_test: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

@@ -1,5 +1,5 @@
 """Every query op is a method of `Configuration.ops`, generated from the query registry
-(bindings/python/generate_ops.py): its parameters are the op's arguments, its docstring the op's
+(bindings/generate_ops.py): its parameters are the op's arguments, its docstring the op's
 summary, and a type checker holds calls to them."""
 import inspect
 import json

@@ -7,8 +7,8 @@
 
 namespace airshape::query {
 
-/// What an op takes and answers, as its one-line summary states it: "wing, segment, eta, xsi ->
-/// point on the upper skin". The names before the arrow are its arguments, those written in
+/// What an op takes and answers, as its one-line summary states it: "uid, point, normal -> area
+/// of the component's section by the plane". The names before the arrow are its arguments, those written in
 /// brackets (`["deflection": metres]`) optional; the text after it is its answer. Bindings are
 /// generated from it (docs/python.md, "Every op as a method").
 struct OpSignature {
