@@ -16,7 +16,7 @@ using Polynomial = std::vector<double>;
 
 /// One accepted piece: its parameter range and the Chebyshev coefficients of x, y and z
 /// through the approximation degree.
-struct Piece {
+struct ChebyshevPiece {
   double first = 0.0, last = 0.0;
   std::vector<gp_XYZ> coefficients;
 };
@@ -38,7 +38,7 @@ std::vector<gp_XYZ> chebyshevCoefficients(const std::function<gp_Pnt(double)>& f
 }
 
 void approximatePieces(const std::function<gp_Pnt(double)>& f, double a, double b, int depth,
-                       const ChebyshevSettings& settings, std::vector<Piece>& pieces) {
+                       const ChebyshevSettings& settings, std::vector<ChebyshevPiece>& pieces) {
   const int degree = settings.degree;
   std::vector<gp_XYZ> coefficients = chebyshevCoefficients(f, a, b, degree + 5);
   gp_XYZ tail(0, 0, 0);  // the sums of |c_j| beyond the degree, per coordinate
@@ -66,7 +66,7 @@ std::vector<Polynomial> shiftedChebyshevPolynomials(int degree) {
 }
 
 /// The Bézier control points of one piece's polynomial on its range.
-std::vector<gp_XYZ> bezierPoles(const Piece& piece, const std::vector<Polynomial>& chebyshev) {
+std::vector<gp_XYZ> bezierPoles(const ChebyshevPiece& piece, const std::vector<Polynomial>& chebyshev) {
   const int degree = static_cast<int>(piece.coefficients.size()) - 1;
   std::vector<gp_XYZ> monomial(degree + 1, gp_XYZ(0, 0, 0));
   for (int j = 0; j <= degree; ++j)
@@ -88,7 +88,7 @@ std::vector<gp_XYZ> bezierPoles(const Piece& piece, const std::vector<Polynomial
 Handle(Geom_BSplineCurve) approximateByChebyshevPieces(const std::function<gp_Pnt(double)>& f, double first,
                                                        double last, const ChebyshevSettings& settings) {
   const int degree = settings.degree;
-  std::vector<Piece> pieces;
+  std::vector<ChebyshevPiece> pieces;
   approximatePieces(f, first, last, 1, settings, pieces);
   const std::vector<Polynomial> chebyshev = shiftedChebyshevPolynomials(degree);
 

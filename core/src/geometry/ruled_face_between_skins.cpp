@@ -30,7 +30,7 @@ struct LinePoint {
 
 /// A part of a skin's crossing on one skin patch, in the surface's parameters: its points and
 /// the curve through them, by t.
-struct Run {
+struct SkinRun {
   std::vector<LinePoint> points;
   Handle(Geom2d_BSplineCurve) curve;
 };
@@ -54,13 +54,13 @@ Handle(Geom2d_BSplineCurve) curveThrough(const std::vector<LinePoint>& run) {
 
 /// The run of a crossing piece: the curve through its points, with points added halfway
 /// between two where it strays from the piece's own curve by more than the tolerance.
-std::optional<Run> runOf(const geometry::CrossingPiece& piece, const geometry::Patch& patch, const RuledLines& lines,
+std::optional<SkinRun> runOf(const geometry::CrossingPiece& piece, const geometry::Patch& patch, const RuledLines& lines,
                          double tolerance) {
   auto onPiece = [&](double t) {
     const gp_Pnt2d uv = piece.curve->Value(t);
     return LinePoint{t, alongLine(lines, t, patch.surface->Value(uv.X(), uv.Y()))};
   };
-  Run run;
+  SkinRun run;
   for (const geometry::PatchPoint& point : piece.points)
     run.points.push_back({point.t, alongLine(lines, point.t, point.point)});
   for (int round = 0; round < 8; ++round) {
@@ -81,12 +81,12 @@ std::optional<Run> runOf(const geometry::CrossingPiece& piece, const geometry::P
 
 /// One skin's crossing, run by run from the line at t = 0 to the line at t = 1; nothing when
 /// it leaves a gap.
-std::optional<std::vector<Run>> crossingOf(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance) {
+std::optional<std::vector<SkinRun>> crossingOf(const TopoDS_Shape& skin, const RuledLines& lines, double tolerance) {
   const auto patches = geometry::skinPatches(skin);
   if (!patches) return std::nullopt;
   const auto pieces = geometry::ruledCrossing(patches->patches, lines, tolerance);
   if (!pieces || !geometry::coversAllLines(*pieces)) return std::nullopt;
-  std::vector<Run> runs;
+  std::vector<SkinRun> runs;
   for (const geometry::CrossingPiece& piece : *pieces) {
     const auto run = runOf(piece, patches->patches[piece.patch], lines, tolerance);
     if (!run) return std::nullopt;
@@ -123,7 +123,7 @@ std::optional<TopoDS_Edge> edgeOn(const Handle(Geom_Surface) & surface, const Ha
 
 /// The edges along a skin's crossing, from vertex `first` to vertex `last`, in order of t.
 std::optional<std::vector<TopoDS_Edge>> crossingEdges(const Handle(Geom_Surface) & surface,
-                                                      const std::vector<Run>& runs, const TopoDS_Vertex& first,
+                                                      const std::vector<SkinRun>& runs, const TopoDS_Vertex& first,
                                                       const TopoDS_Vertex& last, double tolerance) {
   std::vector<TopoDS_Edge> edges;
   TopoDS_Vertex from = first;
@@ -152,13 +152,13 @@ std::optional<TopoDS_Edge> alongLineEdge(const Handle(Geom_Surface) & surface, d
 
 /// The face of the ruled surface between two runs of its points, each from the line at t = 0 to
 /// the line at t = 1, and those lines; throws OCCT's failures.
-std::optional<TopoDS_Face> faceBetween(const std::optional<std::vector<Run>>& upper,
-                                       const std::optional<std::vector<Run>>& lower, const RuledLines& lines,
+std::optional<TopoDS_Face> faceBetween(const std::optional<std::vector<SkinRun>>& upper,
+                                       const std::optional<std::vector<SkinRun>>& lower, const RuledLines& lines,
                                        double tolerance) {
   if (!upper || !lower) return std::nullopt;
   double reach = 1.0;
   for (const auto* runs : {&*upper, &*lower})
-    for (const Run& run : *runs)
+    for (const SkinRun& run : *runs)
       for (const LinePoint& point : run.points) reach = std::max(reach, 2.0 * std::abs(point.s) + 1.0);
   const Handle(Geom_BSplineSurface) surface = surfaceOf(lines, reach);
 
@@ -196,8 +196,8 @@ std::optional<TopoDS_Face> sectionOf(const TopoDS_Shape& upperSkin, const TopoDS
 }
 
 /// The base line s = 0 of the ruled surface as a run.
-std::vector<Run> baseLine() {
-  Run run;
+std::vector<SkinRun> baseLine() {
+  SkinRun run;
   run.points = {{0.0, 0.0}, {1.0, 0.0}};
   run.curve = curveThrough(run.points);
   return {run};

@@ -14,7 +14,7 @@ constexpr int kDegree = 3;
 constexpr int kFewestSpans = 8;
 constexpr int kFewestSamples = 101;
 constexpr double kCornerAngle = 6.0 * M_PI / 180.0;
-constexpr double kSameKnot = 1e-12;
+constexpr double kKnotOnEnd = 1e-12;
 constexpr double kKnotSnap = 1e-4;  ///< a corner this close to a uniform knot sits on that knot
 
 /// Spans of the curve counting the point parameters as knots too: a measure of how much
@@ -23,9 +23,9 @@ int detailSpans(const Geom_BSplineCurve& curve, const std::vector<double>& point
   std::vector<std::pair<double, int>> interior;
   for (int i = 2; i < curve.NbKnots(); ++i) interior.emplace_back(curve.Knot(i), curve.Multiplicity(i));
   for (double t : pointParameters) {
-    if (t <= curve.FirstParameter() + kSameKnot || t >= curve.LastParameter() - kSameKnot) continue;
+    if (t <= curve.FirstParameter() + kKnotOnEnd || t >= curve.LastParameter() - kKnotOnEnd) continue;
     const bool known = std::any_of(interior.begin(), interior.end(),
-                                   [t](const auto& knot) { return std::abs(knot.first - t) <= kSameKnot; });
+                                   [t](const auto& knot) { return std::abs(knot.first - t) <= kKnotOnEnd; });
     if (!known) interior.emplace_back(t, 1);
   }
   int spans = 1;
@@ -88,7 +88,7 @@ Handle(Geom_BSplineCurve)
   kept.insert(kept.end(), corners.begin(), corners.end());
   std::vector<double> fitted;
   for (double t : samples)
-    if (std::none_of(kept.begin(), kept.end(), [t](double k) { return std::abs(k - t) <= kSameKnot; }))
+    if (std::none_of(kept.begin(), kept.end(), [t](double k) { return std::abs(k - t) <= kKnotOnEnd; }))
       fitted.push_back(t);
   constraints.parameters = kept;
   constraints.points.resize(static_cast<Eigen::Index>(kept.size()), 3);

@@ -13,7 +13,7 @@ namespace airshape::nacelle {
 
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
+constexpr double kGuideRadiansPerDegree = M_PI / 180.0;
 /// Points sampled on each sector of a guide (enough for the chevrons of a guide curve profile).
 constexpr int kSectorSamples = 32;
 constexpr double kSameZeta = 1e-9;
@@ -97,7 +97,7 @@ void sampleSector(const PlacedProfile& a, const PlacedProfile& b, double angleA,
     const double x = start.X() + step * (end.X() - start.X()) + ((1 - u) * chordA + u * chordB) * axialOffset;
     const double r = startR + step * (endR - startR) + ((1 - u) * a.radius + u * b.radius) * radialOffset;
     const double angle = angleA + u * (angleB - angleA);
-    points.emplace_back(x, -r * std::sin(angle * kDegree), r * std::cos(angle * kDegree));
+    points.emplace_back(x, -r * std::sin(angle * kGuideRadiansPerDegree), r * std::cos(angle * kGuideRadiansPerDegree));
     parameters.push_back(angle / 360.0);
   }
 }

@@ -16,7 +16,7 @@ namespace airshape::nacelle {
 
 namespace {
 
-constexpr double kSamePoint = 1e-10;
+constexpr double kJoinTolerance = 1e-10;
 
 const schema::ProfileGeometry2DType* findProfile(const Configuration& configuration, const std::string& uid,
                                                  bool curveProfile) {
@@ -50,7 +50,7 @@ void cstSides(const schema::Cst2DType& cst, const std::string& xpath, Handle(Geo
 /// Two curves that meet, one after the other, as one B-spline (C0 where they meet).
 Handle(Geom_BSplineCurve) joined(const Handle(Geom_BSplineCurve) & first, const Handle(Geom_BSplineCurve) & second) {
   GeomConvert_CompCurveToBSplineCurve joiner(first);
-  if (!joiner.Add(second, kSamePoint))
+  if (!joiner.Add(second, kJoinTolerance))
     throw Error(ErrorCode::InvalidModel, "the profile's sides do not meet at the leading edge");
   return joiner.BSplineCurve();
 }
@@ -92,7 +92,7 @@ NacelleProfile NacelleProfile::named(const Configuration& configuration, const s
     throw Error(ErrorCode::InvalidModel, "x and y need the same number of values, at least two", {}, listPath);
   std::vector<gp_Pnt> points;
   for (std::size_t i = 0; i < x.size(); ++i)
-    if (points.empty() || points.back().Distance(gp_Pnt(x[i], 0.0, y[i])) > kSamePoint)
+    if (points.empty() || points.back().Distance(gp_Pnt(x[i], 0.0, y[i])) > kJoinTolerance)
       points.emplace_back(x[i], 0.0, y[i]);
   if (points.size() < 2)
     throw Error(ErrorCode::InvalidModel, "the profile has fewer than two distinct points", {}, listPath);
@@ -109,7 +109,7 @@ NacelleProfile NacelleProfile::named(const Configuration& configuration, const s
     throw Error(ErrorCode::InvalidModel, "the profile's leading edge is one of its ends", {}, listPath);
   profile.lower_ = curvePiece(profile.whole_, parameters.front(), parameters[leadingEdge]);
   profile.upper_ = curvePiece(profile.whole_, parameters[leadingEdge], parameters.back());
-  if (points.front().Distance(points.back()) > kSamePoint)
+  if (points.front().Distance(points.back()) > kJoinTolerance)
     profile.trailingEdge_ = std::make_pair(points.back(), points.front());
   return profile;
 }
@@ -119,7 +119,7 @@ NacelleProfile NacelleProfile::fromCst(const schema::Cst2DType& cst, const std::
   cstSides(cst, xpath, profile.lower_, profile.upper_);
   profile.whole_ = joined(profile.lower_, profile.upper_);
   const gp_Pnt first = profile.lower_->StartPoint(), last = profile.upper_->EndPoint();
-  if (first.Distance(last) > kSamePoint) profile.trailingEdge_ = std::make_pair(last, first);
+  if (first.Distance(last) > kJoinTolerance) profile.trailingEdge_ = std::make_pair(last, first);
   return profile;
 }
 

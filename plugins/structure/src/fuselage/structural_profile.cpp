@@ -13,7 +13,7 @@ namespace airshape::structure {
 
 namespace {
 
-constexpr double kDegrees = M_PI / 180.0;
+constexpr double kRadiansPerDegree = M_PI / 180.0;
 
 const schema::ProfileBasedStructuralElementType* elementNamed(const Configuration& configuration,
                                                               const std::string& uid) {
@@ -43,7 +43,7 @@ gp_Pnt2d placed(const schema::ProfileBasedStructuralElementType& element, double
     x *= transformation.scaling->x;
     y *= transformation.scaling->y;
   }
-  const double angle = transformation.rotation ? transformation.rotation->z * kDegrees : 0.0;
+  const double angle = transformation.rotation ? transformation.rotation->z * kRadiansPerDegree : 0.0;
   gp_Pnt2d point(std::cos(angle) * x - std::sin(angle) * y, std::sin(angle) * x + std::cos(angle) * y);
   if (transformation.translation)
     point.Translate(gp_Vec2d(transformation.translation->x, transformation.translation->y));
