@@ -54,8 +54,8 @@ Handle(Geom2d_BSplineCurve) curveThrough(const std::vector<LinePoint>& run) {
 
 /// The run of a crossing piece: the curve through its points, with points added halfway
 /// between two where it strays from the piece's own curve by more than the tolerance.
-std::optional<SkinRun> runOf(const geometry::CrossingPiece& piece, const geometry::Patch& patch, const RuledLines& lines,
-                         double tolerance) {
+std::optional<SkinRun> runOf(const geometry::CrossingPiece& piece, const geometry::Patch& patch,
+                             const RuledLines& lines, double tolerance) {
   auto onPiece = [&](double t) {
     const gp_Pnt2d uv = piece.curve->Value(t);
     return LinePoint{t, alongLine(lines, t, patch.surface->Value(uv.X(), uv.Y()))};
