@@ -57,6 +57,28 @@ class Ops:
                 method.__doc__ = f"{op['summary']} (op of plugin {op['owner']})"
                 return method
         raise AttributeError(f"no query op '{name}' in the loaded plugins")
+
+
+class ComponentOps:
+    """Every query op that takes a component's `uid` as a method of that component, the uID filled
+    in: `spar.ops.component_faces(mirrored=True)`. Ops of plugins loaded at run time too."""
+
+    def __init__(self, query: Callable[..., Any], uid: str) -> None:
+        self._query = query
+        self._uid = uid
+
+    def __getattr__(self, name: str) -> Callable[..., Any]:
+        for op in _runtime_ops():
+            if op["name"] == name and "uid" in op["arguments"]:
+                query, uid = self._query, self._uid
+
+                def method(**arguments: Any) -> Any:
+                    return query(name, uid=uid, **arguments)
+
+                method.__name__ = name
+                method.__doc__ = f"{op['summary']} (op of plugin {op['owner']}; uid: this component)"
+                return method
+        raise AttributeError(f"no query op '{name}' taking a component's uid in the loaded plugins")
 '''
 
 
@@ -155,10 +177,20 @@ def write(path, text):
     os.replace(temporary, path)
 
 
+def component_method(op):
+    """The method of ComponentOps for an op that takes a `uid`: the same without it."""
+    rest = dict(op, arguments=[name for name in op["arguments"] if name != "uid"])
+    text = method(rest).replace(f"self._query({op['name']!r}", f"self._query({op['name']!r}, uid=self._uid", 1)
+    return text.replace("(op of plugin " + op["owner"] + ")", "(op of plugin " + op["owner"] + "; uid: this component)")
+
+
 def main(language, binary, *outputs):
     ops = registry(binary)
     if language == "python":
-        write(outputs[0], HEADER + "".join("\n" + method(op) + "\n" for op in ops))
+        ops_class, component_class = HEADER.split("\n\nclass ComponentOps:")
+        write(outputs[0], ops_class + "".join("\n" + method(op) + "\n" for op in ops) +
+              "\n\nclass ComponentOps:" + component_class +
+              "".join("\n" + component_method(op) + "\n" for op in ops if "uid" in op["arguments"]))
     elif language == "c":
         functions = [c_function(op) for op in ops]
         write(outputs[0], C_HEADER + "".join("\n" + declaration for declaration, _ in functions) + C_FOOTER)

@@ -18,7 +18,7 @@ from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _airshape
-from ._ops import Ops
+from ._ops import ComponentOps, Ops
 from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetError, PluginError,
                      WriteError)
 
@@ -148,14 +148,24 @@ def _children(config: "Configuration", xpath: str):
     return list(ElementTree.fromstring(config._core.xml(xpath)))
 
 
-class _Component:
-    """What wings and fuselages share: a uID, the node of its element, the ops."""
-
-    _kind = ""
+class _ByUid:
+    """What every component object holds: its configuration and its uID, and through them every
+    query op that takes a component's uid, as methods generated from the query registry:
+    spar.ops.component_faces(mirrored=True) (docs/python.md, "Every op as a method")."""
 
     def __init__(self, config: "Configuration", uid: str) -> None:
         self._config = config
         self.uid = uid
+
+    @property
+    def ops(self) -> ComponentOps:
+        return ComponentOps(self._config.query, self.uid)
+
+
+class _Component(_ByUid):
+    """What wings and fuselages share: a uID, the node of its element, the ops."""
+
+    _kind = ""
 
     def _op(self, name: str, **arguments: Any) -> Any:
         return self._config.query(f"{self._kind}_{name}", **{self._kind: self.uid}, **arguments)
@@ -260,13 +270,9 @@ class Wing(_Component):
         return _Devices(self, "spoiler")
 
 
-class Component:
+class Component(_ByUid):
     """Any component by uID (QUERY-components §1): a spar, a rib set, a cell, a component
     segment, a device, ...: its type, its measures, the components inside it, its shape."""
-
-    def __init__(self, config: "Configuration", uid: str) -> None:
-        self._config = config
-        self.uid = uid
 
     @property
     def type(self) -> str:
@@ -364,14 +370,10 @@ def _component(config: "Configuration", uid: str, kind: str) -> Component:
     return classes.get(kind, Component)(config, uid)
 
 
-class ControlSurface:
+class ControlSurface(_ByUid):
     """A control device of a wing (trailing-edge device, leading-edge device or spoiler): its
     kind, its control parameter range, its rigid motion and its measures at rest or deflected
     (docs/controlsurfaces.md)."""
-
-    def __init__(self, config: "Configuration", uid: str) -> None:
-        self._config = config
-        self.uid = uid
 
     @property
     def type(self) -> str:
