@@ -82,21 +82,22 @@ class ComponentOps:
 '''
 
 
-def method(op):
-    required = [f"{name}: {TYPES.get(name, 'Any')}" for name in op["arguments"]]
+def method(op, bound_uid=False):
+    """A method of Ops, or with `bound_uid` of ComponentOps: the op's `uid` is the component's."""
+    arguments = [name for name in op["arguments"] if not (bound_uid and name == "uid")]
+    required = [f"{name}: {TYPES.get(name, 'Any')}" for name in arguments]
     optional = [f"{name}: Optional[{TYPES.get(name, 'Any')}] = None" for name in op["optional"]]
     parameters = ", ".join(["self", *(["*"] if required or optional else []), *required, *optional])
-    passed = ", ".join(f"{name}={name}" for name in op["arguments"])
-    lines = [f"    def {op['name']}({parameters}) -> Any:",
-             f"        {json.dumps(op['summary'] + ' (op of plugin ' + op['owner'] + ')')}"]
+    passed = "".join(f", {name}={name}" for name in arguments) + (", uid=self._uid" if bound_uid else "")
+    owner = f"op of plugin {op['owner']}" + ("; uid: this component" if bound_uid else "")
+    lines = [f"    def {op['name']}({parameters}) -> Any:", f"        {json.dumps(op['summary'] + ' (' + owner + ')')}"]
     if op["optional"]:
         lines.append("        given = {k: v for k, v in {" + ", ".join(f'"{n}": {n}' for n in op["optional"]) +
                      "}.items() if v is not None}")
-        lines.append(f"        return self._query({op['name']!r}{', ' + passed if passed else ''}, **given)")
+        lines.append(f"        return self._query({op['name']!r}{passed}, **given)")
     else:
-        lines.append(f"        return self._query({op['name']!r}{', ' + passed if passed else ''})")
+        lines.append(f"        return self._query({op['name']!r}{passed})")
     return "\n".join(lines)
-
 
 # C types by the Python type of an argument: required, and optional (a pointer, NULL for absent).
 C_TYPES = {"float": ("double", "const double*"), "int": ("int", "const int*"), "bool": ("int", "const int*"),
@@ -177,20 +178,13 @@ def write(path, text):
     os.replace(temporary, path)
 
 
-def component_method(op):
-    """The method of ComponentOps for an op that takes a `uid`: the same without it."""
-    rest = dict(op, arguments=[name for name in op["arguments"] if name != "uid"])
-    text = method(rest).replace(f"self._query({op['name']!r}", f"self._query({op['name']!r}, uid=self._uid", 1)
-    return text.replace("(op of plugin " + op["owner"] + ")", "(op of plugin " + op["owner"] + "; uid: this component)")
-
-
 def main(language, binary, *outputs):
     ops = registry(binary)
     if language == "python":
         ops_class, component_class = HEADER.split("\n\nclass ComponentOps:")
         write(outputs[0], ops_class + "".join("\n" + method(op) + "\n" for op in ops) +
               "\n\nclass ComponentOps:" + component_class +
-              "".join("\n" + component_method(op) + "\n" for op in ops if "uid" in op["arguments"]))
+              "".join("\n" + method(op, bound_uid=True) + "\n" for op in ops if "uid" in op["arguments"]))
     elif language == "c":
         functions = [c_function(op) for op in ops]
         write(outputs[0], C_HEADER + "".join("\n" + declaration for declaration, _ in functions) + C_FOOTER)

@@ -1,5 +1,7 @@
 #include <iostream>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "airshape/error.h"
 #include "airshape/plugin/plugin_host.h"
@@ -11,16 +13,24 @@ namespace airshape::cli {
 
 namespace {
 
+/// The node types a plugin builds, each once, in the order it declares them (a node type may be
+/// declared at several places).
+std::vector<std::string> nodeTypeNames(const plugin::LoadedPlugin& loaded) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const auto& type : loaded.nodeTypes)
+    if (seen.insert(type.nodeType).second) names.push_back(type.nodeType);
+  return names;
+}
+
 /// The plugins and every op with its signature, as JSON (what the bindings are generated from).
 int printJson(plugin::PluginHost& host) {
   query::Json plugins = query::Json::array();
   for (const auto& loaded : host.plugins()) {
-    std::set<std::string> types;
-    for (const auto& type : loaded.nodeTypes) types.insert(type.nodeType);
     plugins.push_back({{"name", loaded.plugin->name()},
                        {"version", loaded.plugin->version()},
                        {"file", loaded.file},
-                       {"node_types", types}});
+                       {"node_types", nodeTypeNames(loaded)}});
   }
   std::cout << query::Json{{"plugin_abi", AIRSHAPE_PLUGIN_ABI_VERSION},
                            {"plugins", plugins},
@@ -44,9 +54,7 @@ int runPlugins(const Arguments& arguments, plugin::PluginHost& host) {
     for (const plugin::Requirement& requirement : loaded.plugin->requirements())
       std::cout << "\n  requires:   " << requirement.plugin << plugin::describeRange(requirement);
     std::cout << "\n  node types:";
-    std::set<std::string> shown;  // a node type may be declared at several places
-    for (const auto& type : loaded.nodeTypes)
-      if (shown.insert(type.nodeType).second) std::cout << ' ' << type.nodeType;
+    for (const std::string& name : nodeTypeNames(loaded)) std::cout << ' ' << name;
     std::cout << "\n  query ops: ";
     for (const query::Op* op : host.queries().ops())
       if (op->owner == loaded.plugin->name()) std::cout << ' ' << op->name;

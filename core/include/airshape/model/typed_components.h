@@ -57,6 +57,15 @@ T& findByUid(const Configuration& configuration, std::size_t model, const std::v
   throwNotInModel(configuration, model, nodeTypes, uid, kind);
 }
 
+/// The buildable component of `nodeTypes` with this uID, in whichever model holds it; Error saying
+/// why not (throwNotInModel).
+template <class T>
+T& typedComponentNamed(const Configuration& configuration, const std::vector<std::string>& nodeTypes,
+                       const std::string& uid, const std::string& kind) {
+  const std::size_t model = modelHolding(configuration, uid);
+  return findByUid(configuration, model, typedComponents<T>(configuration, model, nodeTypes), nodeTypes, uid, kind);
+}
+
 /// The uIDs of a list of nodes, for selection by index or uID.
 template <class T>
 std::vector<std::string> uidsOf(const std::vector<T*>& nodes) {

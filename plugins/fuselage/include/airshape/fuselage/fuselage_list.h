@@ -23,9 +23,7 @@ inline std::vector<schema::FuselageType*> fuselagesOf(const Configuration& confi
 
 /// The buildable fuselage with this uID, in whichever model holds it; Error saying why not.
 inline schema::FuselageType& fuselageNamed(const Configuration& configuration, const std::string& uid) {
-  const std::size_t model = model::modelHolding(configuration, uid);
-  return model::findByUid(configuration, model, fuselagesOf(configuration, model), fuselageNodeTypes(), uid,
-                          "fuselage");
+  return model::typedComponentNamed<schema::FuselageType>(configuration, fuselageNodeTypes(), uid, "fuselage");
 }
 
 }  // namespace airshape::fuselage

@@ -24,8 +24,7 @@ inline std::vector<schema::WingType*> wingsOf(const Configuration& configuration
 
 /// The buildable wing with this uID, in whichever model holds it; Error saying why not.
 inline schema::WingType& wingNamed(const Configuration& configuration, const std::string& uid) {
-  const std::size_t model = model::modelHolding(configuration, uid);
-  return model::findByUid(configuration, model, wingsOf(configuration, model), wingNodeTypes(), uid, "wing");
+  return model::typedComponentNamed<schema::WingType>(configuration, wingNodeTypes(), uid, "wing");
 }
 
 }  // namespace airshape::wing
