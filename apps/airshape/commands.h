@@ -25,8 +25,11 @@ int runGordon(const Arguments& arguments, plugin::PluginHost& host);
 int runBuild(const Arguments& arguments, plugin::PluginHost& host);
 int runExport(const Arguments& arguments, plugin::PluginHost& host);
 int runView(const Arguments& arguments, plugin::PluginHost& host);
-/// Load the export module and run `export` or `view` there (export_module.cpp).
+int runMesh(const Arguments& arguments, plugin::PluginHost& host);
+/// Load the module of `export` and `view`, or of `mesh`, and run the command there
+/// (command_modules.cpp).
 int runExportModule(const Arguments& arguments, plugin::PluginHost& host);
 int runViewModule(const Arguments& arguments, plugin::PluginHost& host);
+int runMeshModule(const Arguments& arguments, plugin::PluginHost& host);
 
 }  // namespace airshape::cli

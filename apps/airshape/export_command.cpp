@@ -214,7 +214,7 @@ int runExport(const Arguments& given, plugin::PluginHost& host) {
 
 }  // namespace airshape::cli
 
-// The entry the airshape command looks up when it loads this module (export_module.cpp).
+// The entry the airshape command looks up when it loads this module (command_modules.cpp).
 extern "C" BOOST_SYMBOL_EXPORT int airshape_run_export(const airshape::cli::Arguments& arguments,
                                                        airshape::plugin::PluginHost& host) {
   return airshape::cli::runExport(arguments, host);

@@ -84,6 +84,30 @@ const std::map<std::string, Command>& commands() {
         "nothing is written when none could be built or one named with --components failed\n"
         "(status 1), or when no plugin builds any (status 0, said). 2: unusable input.\n"
         "Prints progress on stderr and a summary (volume and area per solid) on stdout."}},
+      {"mesh",
+       {runMeshModule,
+        "airshape mesh FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--deflect UID=P,...]\n"
+        "                 [--size SIZE] [--size UID=SIZE,...] [--min-size SIZE] [--curvature N]\n"
+        "                 [--farfield [box:|sphere:]D[L]] [--symmetry] [--duct-cutouts] [--force] [--quiet]",
+        "Meshes the aircraft through Gmsh (docs/meshing.md) and writes the mesh in the format each\n"
+        "OUT's extension names: .msh (Gmsh 4.1, ASCII: OpenFOAM's gmshToFoam reads it), .su2,\n"
+        ".vtu, .inp (Abaqus/CalculiX), .stl. Without --farfield: the surface of the fused\n"
+        "aircraft, watertight, a physical group per component uID and per named face.\n"
+        "--components   only these uIDs            --mirror  with the mirrored halves\n"
+        "--deflect      control devices at control parameter P, as for export\n"
+        "--size         largest element size in metres (default: the aircraft's length / 50);\n"
+        "               UID=SIZE: on that component's surfaces\n"
+        "--min-size     smallest element size (default: size / 50)\n"
+        "--curvature    elements per full turn of the surface's curvature (default 24)\n"
+        "--farfield     a CFD domain: the fluid between the aircraft and a box (or sphere) D\n"
+        "               metres (DL: D aircraft lengths) around it, in tetrahedra; groups\n"
+        "               farfield, symmetry, each component's uID, and the volume fluid\n"
+        "--symmetry     the half domain y >= 0 with a symmetry plane (a half model; far field\n"
+        "               20L unless given)\n"
+        "--force        replace existing outputs     --quiet  no progress\n"
+        "Prints one summary line per mesh on stdout: nodes, elements by type, the worst\n"
+        "element quality (Gmsh's inverse condition number), time. A component that cannot be\n"
+        "built or meshed is said on stderr with its CPACS path, the rest meshed: exit status 1."}},
       {"gordon",
        {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep [--report]",
         "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"
@@ -118,7 +142,7 @@ void printUsage(std::ostream& out) {
 
 /// Whether a command opens a file to build from it, and so takes the plugins' build options.
 bool takesBuildOptions(const std::string& command) {
-  return command == "build" || command == "export" || command == "view" || command == "query";
+  return command == "build" || command == "export" || command == "view" || command == "query" || command == "mesh";
 }
 
 int runHelp(const Arguments& arguments) {

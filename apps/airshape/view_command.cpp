@@ -237,7 +237,7 @@ int runView(const Arguments& arguments, plugin::PluginHost& host) {
 
 }  // namespace airshape::cli
 
-// The entry the airshape command looks up when it loads the export module (export_module.cpp).
+// The entry the airshape command looks up when it loads the export module (command_modules.cpp).
 extern "C" BOOST_SYMBOL_EXPORT int airshape_run_view(const airshape::cli::Arguments& arguments,
                                                      airshape::plugin::PluginHost& host) {
   return airshape::cli::runView(arguments, host);

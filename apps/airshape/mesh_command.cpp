@@ -1,0 +1,138 @@
+// `airshape mesh`: meshes for CFD and FEM through Gmsh (docs/meshing.md), in a module of its
+// own (libairshape_mesh_command.so) that only this command loads: it links Gmsh.
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include <boost/config.hpp>
+
+#include "airshape/error.h"
+#include "airshape/meshing/mesher.h"
+#include "airshape/plugin/plugin_host.h"
+#include "commands.h"
+#include "open_configuration.h"
+
+namespace airshape::cli {
+
+namespace {
+
+struct MeshCommandOptions {
+  std::string input;
+  std::vector<std::string> outputs;
+  meshing::MeshOptions meshOptions;
+  bool force = false;
+  bool quiet = false;
+};
+
+double positiveNumber(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value > 0))
+    throw Error(ErrorCode::InvalidArgument, option + ": '" + text + "' is not a positive number");
+  return value;
+}
+
+/// --size SIZE (every surface) or --size UID=SIZE[,UID=SIZE...] (those components' surfaces).
+void parseSize(const std::string& text, meshing::MeshOptions& options) {
+  if (text.find('=') == std::string::npos) {
+    options.size = positiveNumber(text, "--size");
+    return;
+  }
+  for (const auto& [uid, size] : meshing::parseComponentSizes(text)) options.componentSizes[uid] = size;
+}
+
+MeshCommandOptions parseMeshOptions(const Arguments& arguments) {
+  MeshCommandOptions options;
+  meshing::MeshOptions& mesh = options.meshOptions;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& argument = arguments[i];
+    const bool hasValue = i + 1 < arguments.size();
+    if ((argument == "-o" || argument == "--output") && hasValue) {
+      options.outputs.push_back(arguments[++i]);
+    } else if (argument == "--components" && hasValue) {
+      mesh.scene.components = exporting::splitAtCommas(arguments[++i]);
+    } else if (argument == "--deflect" && hasValue) {
+      const std::vector<exporting::Pose> poses = exporting::parsePoses(arguments[++i]);
+      mesh.scene.poses.insert(mesh.scene.poses.end(), poses.begin(), poses.end());
+    } else if (argument == "--mirror") {
+      mesh.scene.mirror = true;
+    } else if (argument == "--size" && hasValue) {
+      parseSize(arguments[++i], mesh);
+    } else if (argument == "--min-size" && hasValue) {
+      mesh.minSize = positiveNumber(arguments[++i], "--min-size");
+    } else if (argument == "--curvature" && hasValue) {
+      mesh.elementsPerCircle = positiveNumber(arguments[++i], "--curvature");
+    } else if (argument == "--farfield" && hasValue) {
+      mesh.farfield = meshing::parseFarfield(arguments[++i]);
+    } else if (argument == "--symmetry") {
+      mesh.symmetry = true;
+    } else if (argument == "--force") {
+      options.force = true;
+    } else if (argument == "--quiet" || argument == "-q") {
+      options.quiet = true;
+    } else if (!argument.empty() && argument[0] != '-' && options.input.empty()) {
+      options.input = argument;
+    } else {
+      throw Error(ErrorCode::InvalidArgument, "mesh: unexpected argument '" + argument + "' (see airshape help mesh)");
+    }
+  }
+  if (options.input.empty() || options.outputs.empty())
+    throw Error(ErrorCode::InvalidArgument, "usage: airshape mesh FILE -o OUT [-o OUT ...] [options]");
+  return options;
+}
+
+/// Refuses, before anything is built, outputs of unknown formats, in missing folders, and
+/// existing files (unless --force).
+void checkOutputs(const MeshCommandOptions& options) {
+  for (const std::string& output : options.outputs) {
+    meshing::meshFormatOfPath(output);
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::path(output).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+      throw Error(ErrorCode::WriteFailed, "cannot write: folder " + folder.string() + " does not exist", output);
+    if (!options.force && std::filesystem::exists(output, error))
+      throw Error(ErrorCode::WriteFailed, "exists already; use --force to replace it", output);
+  }
+}
+
+/// Progress on stderr once meshing has taken a second: quick meshes stay quiet.
+void printProgress(const meshing::MeshProgress& progress) {
+  if (progress.seconds < 1.0) return;
+  std::cerr << "mesh: " << progress.step << ", " << std::fixed << std::setprecision(1) << progress.seconds << " s\n";
+}
+
+}  // namespace
+
+int runMesh(const Arguments& given, plugin::PluginHost& host) {
+  Arguments arguments = given;
+  const std::vector<std::string> buildOptions = takeOptionFlags(arguments, host);
+  MeshCommandOptions options = parseMeshOptions(arguments);
+  checkOutputs(options);
+  const Configuration configuration = openConfiguration({options.input, buildOptions}, host);
+  if (!options.quiet) options.meshOptions.progress = printProgress;
+  const meshing::MeshReport report = meshing::meshConfiguration(configuration, options.outputs, options.meshOptions);
+  for (const std::string& failure : report.failures) std::cerr << "mesh: failed: " << failure << '\n';
+  for (const std::string& note : report.notes) std::cerr << "mesh: note: " << note << '\n';
+  printGeometryWarnings(configuration);
+  if (!options.quiet) {
+    for (const std::string& output : options.outputs)
+      std::cerr << "mesh: wrote " << output << " (" << meshing::meshFormatName(meshing::meshFormatOfPath(output))
+                << ", " << std::filesystem::file_size(output) / 1024 << " KiB)\n";
+  }
+  for (const meshing::MeshSummary& summary : report.meshes) std::cout << meshing::summaryLine(summary) << '\n';
+  return report.failures.empty() ? kSuccess : kProblemsFound;
+}
+
+}  // namespace airshape::cli
+
+// The entry the airshape command looks up when it loads this module (command_modules.cpp).
+extern "C" BOOST_SYMBOL_EXPORT int airshape_run_mesh(const airshape::cli::Arguments& arguments,
+                                                     airshape::plugin::PluginHost& host) {
+  return airshape::cli::runMesh(arguments, host);
+}

@@ -1,0 +1,52 @@
+#include "gmsh_session.h"
+
+#include <thread>
+
+#include <gmsh.h>
+
+#include "airshape/error.h"
+
+namespace airshape::meshing {
+
+namespace {
+
+std::mutex& sessionMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+}  // namespace
+
+GmshSession::GmshSession(const std::string& modelName) : lock_(sessionMutex()) {
+  gmsh::initialize(0, nullptr, false);  // no gmshrc: a user's Gmsh settings must not change our meshes
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.NumThreads", std::max(1u, std::thread::hardware_concurrency()));
+  gmsh::logger::start();
+  gmsh::model::add(modelName);
+}
+
+GmshSession::~GmshSession() {
+  try {
+    gmsh::logger::stop();
+    gmsh::finalize();
+  } catch (...) {  // NOLINT: a destructor must not throw; Gmsh has nothing more to say here
+  }
+}
+
+void callGmsh(const std::string& what, const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const std::string& message) {
+    throw Error(ErrorCode::InvalidModel, what + " failed in Gmsh: " + message);
+  }
+}
+
+std::vector<std::string> takeGmshMessages() {
+  std::vector<std::string> messages;
+  gmsh::logger::get(messages);
+  gmsh::logger::stop();
+  gmsh::logger::start();
+  return messages;
+}
+
+}  // namespace airshape::meshing
