@@ -98,7 +98,7 @@ const std::map<std::string, Command>& commands() {
         "--size         largest element size in metres (default: the aircraft's length / 50);\n"
         "               UID=SIZE: on that component's surfaces\n"
         "--min-size     smallest element size (default: size / 50)\n"
-        "--curvature    elements per full turn of the surface's curvature (default 24)\n"
+        "--curvature    elements per full turn of the surface's curvature (default 40)\n"
         "--farfield     a CFD domain: the fluid between the aircraft and a box (or sphere) D\n"
         "               metres (DL: D aircraft lengths) around it, in tetrahedra; groups\n"
         "               farfield, symmetry, each component's uID, and the volume fluid\n"

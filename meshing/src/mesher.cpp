@@ -106,6 +106,7 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
   const std::vector<FaceLabel> labels = faceLabels(domain);
 
   GmshSession session(scene.name);
+  progress("handing the shape to Gmsh");
   const ImportedShape imported = importIntoGmsh(domain.shape);
   addToGmsh(physicalGroups(labels, imported, !options.farfield, options.farfield.has_value()));
   const Sizes sizes = sizesFor(options, length, options.farfield ? farfieldDistance(*options.farfield, length) : 0.0);
@@ -117,14 +118,19 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
     progress("meshing the fluid");
     callGmsh("meshing the fluid", [] {
       gmsh::option::setNumber("General.AbortOnError", 2);
-      gmsh::option::setNumber("Mesh.Algorithm3D", 10);  // HXT: Delaunay on every core
+      // Delaunay: Gmsh 4.8's parallel HXT is many times slower with a size field, and fails on
+      // large domains (docs/performance.md).
+      gmsh::option::setNumber("Mesh.Algorithm3D", 1);
       gmsh::model::mesh::generate(3);
     });
   } else if (options.farfield) {
     report.failures.push_back("fluid: not meshed, its boundary has surfaces without elements");
   }
+  progress("reading the mesh");
   MeshTables tables = meshTablesFromGmsh();
+  progress("turning the elements outwards");
   orientLikeFaces(tables, domain.shape, imported);
+  progress("measuring the quality");
   MeshSummary summary = summaryOfGmshMesh(options.farfield ? "fluid" : "surface", tables);
   for (std::size_t index = 0; index < outputs.size(); ++index) {
     progress("writing " + outputs[index]);

@@ -68,13 +68,17 @@ void writeMsh(const MeshTables& mesh, const std::string& path) {
   out << "$EndPhysicalNames\n";
   const std::vector<EntityNodes> nodes = nodesOfEntities(mesh);
   writeEntities(out, mesh, nodes);
+  // Nodes numbered 1, 2, ... in the order they are written: OpenFOAM's gmshToFoam takes the
+  // n-th node written for node n.
+  std::vector<std::size_t> tagOf(mesh.nodeCount(), 0);
   std::size_t placed = 0;
-  for (const EntityNodes& entity : nodes) placed += entity.nodes.size();
-  out << "$Nodes\n" << mesh.entities.size() << ' ' << placed << " 1 " << mesh.nodeCount() << '\n';
+  for (const EntityNodes& entity : nodes)
+    for (std::size_t node : entity.nodes) tagOf[node] = ++placed;
+  out << "$Nodes\n" << mesh.entities.size() << ' ' << placed << " 1 " << placed << '\n';
   for (std::size_t index = 0; index < mesh.entities.size(); ++index) {
     out << mesh.entities[index].dimension << ' ' << mesh.entities[index].tag << " 0 " << nodes[index].nodes.size()
         << '\n';
-    for (std::size_t node : nodes[index].nodes) out << node + 1 << '\n';
+    for (std::size_t node : nodes[index].nodes) out << tagOf[node] << '\n';
     for (std::size_t node : nodes[index].nodes)
       out << mesh.coordinates[3 * node] << ' ' << mesh.coordinates[3 * node + 1] << ' '
           << mesh.coordinates[3 * node + 2] << '\n';
@@ -100,7 +104,8 @@ void writeMsh(const MeshTables& mesh, const std::string& path) {
       const std::size_t perElement = static_cast<std::size_t>(of.nodesPerElement);
       for (std::size_t element : byEntity[entity][block]) {
         out << ++number;
-        for (std::size_t node = 0; node < perElement; ++node) out << ' ' << of.nodes[element * perElement + node] + 1;
+        for (std::size_t node = 0; node < perElement; ++node)
+          out << ' ' << tagOf[of.nodes[element * perElement + node]];
         out << '\n';
       }
     }

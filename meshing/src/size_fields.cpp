@@ -67,8 +67,8 @@ int mathEval(double value) {
 
 /// Size `size` near the given entities, growing to `far` over `reach`.
 /// `sampling`: points per curve (per side of a surface) the distance is measured to.
-int sizeNear(const std::string& list, const std::vector<double>& tags, double size, double far, double reach,
-             int sampling) {
+int sizeNear(const std::string& list, const std::vector<double>& tags, double size, double near, double far,
+             double reach, int sampling) {
   const int distance = gmsh::model::mesh::field::add("Distance");
   gmsh::model::mesh::field::setNumbers(distance, list, tags);
   gmsh::model::mesh::field::setNumber(distance, "NNodesByEdge", sampling);
@@ -76,8 +76,9 @@ int sizeNear(const std::string& list, const std::vector<double>& tags, double si
   gmsh::model::mesh::field::setNumber(threshold, "InField", distance);
   gmsh::model::mesh::field::setNumber(threshold, "LcMin", size);
   gmsh::model::mesh::field::setNumber(threshold, "LcMax", far);
-  gmsh::model::mesh::field::setNumber(threshold, "DistMin", size);
+  gmsh::model::mesh::field::setNumber(threshold, "DistMin", near);
   gmsh::model::mesh::field::setNumber(threshold, "DistMax", reach);
+  gmsh::model::mesh::field::setNumber(threshold, "StopAtDistMax", 1);  // beyond `reach` the others decide
   return threshold;
 }
 
@@ -113,6 +114,9 @@ std::vector<double> aircraftSurfaces(const std::vector<FaceLabel>& labels, const
   return surfaces;
 }
 
+/// How fast the fluid's elements grow with the distance from the aircraft: size per metre.
+constexpr double kGrowth = 0.2;
+
 }  // namespace
 
 Sizes sizesFor(const MeshOptions& options, double length, double farfieldDistance) {
@@ -124,7 +128,7 @@ Sizes sizesFor(const MeshOptions& options, double length, double farfieldDistanc
                                                 " exceeds the largest size " + std::to_string(sizes.surface));
   sizes.refined = std::max(sizes.minimum, sizes.surface / 8);
   sizes.farfield = std::max(sizes.surface, farfieldDistance / 8);
-  sizes.reach = farfieldDistance;
+  sizes.reach = (sizes.farfield - sizes.surface) / kGrowth;
   return sizes;
 }
 
@@ -136,15 +140,18 @@ void setSizeFields(const TopoDS_Shape& shape, const std::vector<FaceLabel>& labe
     gmsh::option::setNumber("Mesh.MeshSizeMax", fluid ? sizes.farfield : sizes.surface);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", options.elementsPerCircle);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", fluid ? 1 : 0);
+    // The fluid's sizes come from the distance to the aircraft alone: extended from the surface
+    // meshes they would fill the space around the aircraft with its finest elements (millions).
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     std::vector<double> fields;
     if (const std::vector<double> curves = curvesToRefine(shape, labels, imported); !curves.empty())
-      fields.push_back(sizeNear("EdgesList", curves, sizes.refined, sizes.surface, 4 * sizes.surface, 40));
+      fields.push_back(
+          sizeNear("EdgesList", curves, sizes.refined, sizes.refined, sizes.surface, 4 * sizes.surface, 40));
     for (const auto& [uid, size] : options.componentSizes)
       fields.push_back(sizeOnComponent(uid, size, shape, labels, imported));
     if (fluid)
       fields.push_back(
-          sizeNear("FacesList", aircraftSurfaces(labels, imported), sizes.surface, sizes.farfield, sizes.reach, 12));
+          sizeNear("FacesList", aircraftSurfaces(labels, imported), sizes.surface, 0, sizes.farfield, sizes.reach, 12));
     else
       fields.push_back(mathEval(sizes.surface));
     const int minimum = gmsh::model::mesh::field::add("Min");

@@ -16,7 +16,7 @@ struct Sizes {
   double minimum = 0;   ///< smallest anywhere
   double refined = 0;   ///< along trailing edges and where components meet
   double farfield = 0;  ///< on the far field of a CFD domain
-  double reach = 0;     ///< from the aircraft, where the fluid's elements have grown to the far-field size
+  double reach = 0;     ///< the distance from the aircraft at which the fluid's elements reach the far-field size
 };
 
 /// The sizes the options ask for, or the defaults from the aircraft's length and the far

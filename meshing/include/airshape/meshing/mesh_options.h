@@ -37,7 +37,7 @@ struct MeshOptions {
   /// Largest size on the surfaces of given components, by uID (`--size W1=0.05`).
   std::map<std::string, double> componentSizes;
   /// Elements per full turn of the surfaces' curvature (0: sizes ignore curvature).
-  double elementsPerCircle = 24;
+  double elementsPerCircle = 40;
   /// A CFD domain: the fluid between the aircraft and this boundary, meshed with
   /// tetrahedra. None: the aircraft's surface only.
   std::optional<Farfield> farfield;
