@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build ccache python3 python3-pytest
           libxerces-c-dev libboost-dev libboost-filesystem-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
           libeigen3-dev libtbb-dev libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
-          libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev pybind11-dev python3-dev python3-numpy)
+          libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev pybind11-dev python3-dev python3-numpy libgmsh-dev)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

@@ -1,6 +1,7 @@
 #include "su2_writer.h"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <map>
 
@@ -18,6 +19,13 @@ int su2Type(int gmshType) {
     throw Error(ErrorCode::InvalidArgument,
                 "SU2: no element for Gmsh element type " + std::to_string(gmshType) + " (SU2 takes linear elements)");
   return found->second;
+}
+
+/// A marker's name as SU2's configuration files can name it: no white space.
+std::string markerName(std::string name) {
+  std::replace_if(
+      name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
+  return name;
 }
 
 void writeElement(std::ofstream& out, const ElementBlock& block, std::size_t element) {
@@ -54,7 +62,8 @@ void writeSu2(const MeshTables& mesh, const std::string& path) {
   out << "NMARK= " << markers << '\n';
   for (std::size_t group = 0; group < mesh.groups.size(); ++group) {
     if (!(mesh.groups[group].dimension == highest - 1 || highest == 2)) continue;
-    out << "MARKER_TAG= " << mesh.groups[group].name << "\nMARKER_ELEMS= " << elementsOfGroups[group].size() << '\n';
+    out << "MARKER_TAG= " << markerName(mesh.groups[group].name) << "\nMARKER_ELEMS= " << elementsOfGroups[group].size()
+        << '\n';
     for (const auto& [block, element] : elementsOfGroups[group]) {
       writeElement(out, mesh.blocks[block], element);
       out << '\n';
