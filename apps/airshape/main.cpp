@@ -88,7 +88,8 @@ const std::map<std::string, Command>& commands() {
        {runMeshModule,
         "airshape mesh FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--deflect UID=P,...]\n"
         "                 [--size SIZE] [--size UID=SIZE,...] [--min-size SIZE] [--curvature N]\n"
-        "                 [--farfield [box:|sphere:]D[L]] [--symmetry] [--duct-cutouts] [--force] [--quiet]",
+        "                 [--farfield [box:|sphere:]D[L]] [--symmetry] [--structure [--order 2]]\n"
+        "                 [--duct-cutouts] [--force] [--quiet]",
         "Meshes the aircraft through Gmsh (docs/meshing.md) and writes the mesh in the format each\n"
         "OUT's extension names: .msh (Gmsh 4.1, ASCII: OpenFOAM's gmshToFoam reads it), .su2,\n"
         ".vtu, .inp (Abaqus/CalculiX), .stl. Without --farfield: the surface of the fused\n"
@@ -104,6 +105,9 @@ const std::map<std::string, Command>& commands() {
         "               farfield, symmetry, each component's uID, and the volume fluid\n"
         "--symmetry     the half domain y >= 0 with a symmetry plane (a half model; far field\n"
         "               20L unless given)\n"
+        "--structure    the structural model (as export --structure) in quadrilateral shells for\n"
+        "               FEM: an element set and a node set per structural model and per spar,\n"
+        "               rib set and skin segment uID; .inp writes S4 (with --order 2: S8)\n"
         "--force        replace existing outputs     --quiet  no progress\n"
         "Prints one summary line per mesh on stdout: nodes, elements by type, the worst\n"
         "element quality (Gmsh's inverse condition number), time. A component that cannot be\n"

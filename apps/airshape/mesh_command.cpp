@@ -72,6 +72,10 @@ MeshCommandOptions parseMeshOptions(const Arguments& arguments) {
       mesh.farfield = meshing::parseFarfield(arguments[++i]);
     } else if (argument == "--symmetry") {
       mesh.symmetry = true;
+    } else if (argument == "--structure") {
+      mesh.scene.structure = true;
+    } else if (argument == "--order" && hasValue) {
+      mesh.order = static_cast<int>(positiveNumber(arguments[++i], "--order"));
     } else if (argument == "--force") {
       options.force = true;
     } else if (argument == "--quiet" || argument == "-q") {

@@ -51,7 +51,7 @@ std::string abaqusSetName(const std::string& name) {
 
 void writeAbaqus(const MeshTables& mesh, const std::string& path) {
   std::ofstream out(path);
-  out.precision(17);
+  out.precision(12);  // CalculiX reads numbers of at most 20 characters
   out << "*HEADING\nwritten by airshape mesh\n*NODE\n";
   for (std::size_t node = 0; node < mesh.nodeCount(); ++node)
     out << node + 1 << ", " << mesh.coordinates[3 * node] << ", " << mesh.coordinates[3 * node + 1] << ", "

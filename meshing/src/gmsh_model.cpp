@@ -68,19 +68,15 @@ ImportedShape importIntoGmsh(const TopoDS_Shape& shape) {
 }
 
 std::vector<PhysicalGroup> physicalGroups(const std::vector<FaceLabel>& labels, const ImportedShape& imported,
-                                          bool faceGroups, bool fluid) {
+                                          const GroupsOfFace& groupsOf, bool fluid) {
   std::vector<PhysicalGroup> groups;
   std::map<std::string, std::size_t> byName;
-  const auto addTo = [&](const std::string& name, int surface) {
-    const auto [at, added] = byName.emplace(name, groups.size());
-    if (added) groups.push_back({2, name, {}});
-    groups[at->second].entities.push_back(surface);
-  };
   for (std::size_t index = 0; index < labels.size(); ++index)
-    addTo(labels[index].component.empty() ? "unnamed" : labels[index].component, imported.surfaces[index]);
-  if (faceGroups)
-    for (std::size_t index = 0; index < labels.size(); ++index)
-      if (!labels[index].face.empty()) addTo(labels[index].face, imported.surfaces[index]);
+    for (const std::string& name : groupsOf(labels[index])) {
+      const auto [at, added] = byName.emplace(name, groups.size());
+      if (added) groups.push_back({2, name, {}});
+      groups[at->second].entities.push_back(imported.surfaces[index]);
+    }
   if (fluid && !imported.volumes.empty()) groups.push_back({3, "fluid", imported.volumes});
   return groups;
 }

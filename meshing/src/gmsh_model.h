@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,11 +29,13 @@ struct PhysicalGroup {
   std::vector<int> entities;
 };
 
-/// The mesh's physical groups: a surface group per component (the aircraft's components by
-/// uID, "farfield", "symmetry"), with `faceGroups` one more per named face ("W1_Seg1/upper"),
-/// and the fluid volume "fluid" when the shape has volumes and `fluid` is set.
+/// The names of the surface groups a labelled face belongs to.
+using GroupsOfFace = std::function<std::vector<std::string>(const FaceLabel&)>;
+
+/// The mesh's physical groups: the surface groups `groupsOf` puts each face in (in the order
+/// they first occur), and the fluid volume "fluid" when the shape has volumes and `fluid` is set.
 std::vector<PhysicalGroup> physicalGroups(const std::vector<FaceLabel>& labels, const ImportedShape& imported,
-                                          bool faceGroups, bool fluid);
+                                          const GroupsOfFace& groupsOf, bool fluid);
 
 /// Adds the groups to Gmsh's model, numbered 1, 2, ... over every dimension: OpenFOAM's
 /// gmshToFoam names a cell zone after a surface group that has the volume group's number.

@@ -1,7 +1,5 @@
 #include "gmsh_session.h"
 
-#include <thread>
-
 #include <gmsh.h>
 
 #include "airshape/error.h"
@@ -20,7 +18,9 @@ std::mutex& sessionMutex() {
 GmshSession::GmshSession(const std::string& modelName) : lock_(sessionMutex()) {
   gmsh::initialize(0, nullptr, false);  // no gmshrc: a user's Gmsh settings must not change our meshes
   gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::option::setNumber("General.NumThreads", std::max(1u, std::thread::hardware_concurrency()));
+  // One thread: Gmsh 4.8 meshes surfaces side by side through shared OCCT evaluators, which
+  // made a mesh differ from run to run and once freed memory twice (docs/meshing.md).
+  gmsh::option::setNumber("General.NumThreads", 1);
   gmsh::logger::start();
   gmsh::model::add(modelName);
 }

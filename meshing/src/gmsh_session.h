@@ -9,7 +9,7 @@ namespace airshape::meshing {
 
 /// Gmsh's API for the time of one mesh: Gmsh keeps one global model, so one session at a time
 /// in a process (others wait), with Gmsh's own output kept off the terminal and its messages
-/// collected, and meshing on every core.
+/// collected.
 class GmshSession {
  public:
   explicit GmshSession(const std::string& modelName);

@@ -84,6 +84,86 @@ std::vector<std::pair<std::string, std::string>> meshSurfaces(const std::vector<
   return failed;
 }
 
+/// A shape to hand to Gmsh: its faces labelled, which groups each face goes in, the length
+/// sizes are measured against, and the mesh's name.
+struct ShapeToMesh {
+  NamedShape shape;
+  std::vector<FaceLabel> labels;
+  GroupsOfFace groupsOf;
+  double length = 0;
+  std::string name;
+};
+
+/// The fused aircraft (its faces in a group per component and per face name), or with a far
+/// field the fluid around it (its walls in a group per component, "farfield", "symmetry").
+ShapeToMesh aircraftToMesh(const exporting::ExportScene& scene, const MeshOptions& options, const Progress& progress,
+                           MeshReport& report) {
+  progress("fusing the components");
+  const NamedShape aircraft = fusedAircraft(scene, report.notes);
+  ShapeToMesh toMesh{aircraft, {}, {}, aircraftLength(aircraft.shape), "surface"};
+  if (options.farfield) {
+    progress("cutting the aircraft out of the far field");
+    toMesh.shape = fluidDomain(aircraft, *options.farfield, options.symmetry);
+    toMesh.name = "fluid";
+    // OpenFOAM's gmshToFoam refuses a face in two groups: one group per face.
+    toMesh.groupsOf = [](const FaceLabel& label) { return std::vector<std::string>{label.component}; };
+  } else {
+    toMesh.groupsOf = [](const FaceLabel& label) {
+      std::vector<std::string> groups{label.component.empty() ? "unnamed" : label.component};
+      if (!label.face.empty()) groups.push_back(label.face);
+      return groups;
+    };
+  }
+  toMesh.labels = faceLabels(toMesh.shape);
+  return toMesh;
+}
+
+/// The uID of the structural element (or skin segment) a face of a structural model came from:
+/// its name up to the first '/'.
+std::string elementOf(const std::string& face) { return face.substr(0, face.find('/')); }
+
+/// The structural models side by side, each face in a group per model ("<uID> structure") and
+/// per structural element.
+ShapeToMesh structureToMesh(const exporting::ExportScene& scene) {
+  if (scene.components.empty())
+    throw Error(ErrorCode::InvalidArgument, "no component holds spars or ribs that could be built");
+  std::vector<NamedShape> models;
+  for (const exporting::SceneComponent& model : scene.components)
+    models.push_back(labelledFaces(model.shape.shape, model.name, model.shape.faces));
+  std::vector<const NamedShape*> parts;
+  for (const NamedShape& model : models) parts.push_back(&model);
+  ShapeToMesh toMesh{compoundOfNamedShapes(parts), {}, {}, 0, "structure"};
+  toMesh.labels = faceLabels(toMesh.shape);
+  toMesh.length = aircraftLength(toMesh.shape.shape);
+  toMesh.groupsOf = [](const FaceLabel& label) {
+    std::vector<std::string> groups{label.component};
+    if (!label.face.empty()) groups.push_back(elementOf(label.face));
+    return groups;
+  };
+  return toMesh;
+}
+
+/// Quadrilateral shells for FEM: Frontal-Delaunay recombined (Gmsh 4.8's frontal quad
+/// algorithm crashes on such skins), 4 nodes or 8 (serendipity: CalculiX's S8).
+void askForShells(int order) {
+  callGmsh("setting up the shell mesh", [order] {
+    gmsh::option::setNumber("Mesh.Algorithm", 6);
+    gmsh::option::setNumber("Mesh.RecombineAll", 1);
+    gmsh::option::setNumber("Mesh.ElementOrder", order);
+    gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 1);
+  });
+}
+
+void meshFluid() {
+  callGmsh("meshing the fluid", [] {
+    gmsh::option::setNumber("General.AbortOnError", 2);
+    // Delaunay: Gmsh 4.8's parallel HXT is many times slower with a size field, and fails on
+    // large domains (docs/performance.md).
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1);
+    gmsh::model::mesh::generate(3);
+  });
+}
+
 }  // namespace
 
 MeshReport meshConfiguration(const Configuration& configuration, const std::vector<std::string>& outputs,
@@ -91,6 +171,10 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
   const Progress progress{given, Clock::now()};
   MeshOptions options = given;
   if (options.symmetry && !options.farfield) options.farfield = Farfield{};
+  if (options.scene.structure && options.farfield)
+    throw Error(ErrorCode::InvalidArgument, "--structure meshes the structure as shells; it takes no --farfield");
+  if (options.order != 1 && options.order != 2)
+    throw Error(ErrorCode::InvalidArgument, "--order: 1 or 2, not " + std::to_string(options.order));
   std::vector<MeshFormat> formats;
   for (const std::string& output : outputs) formats.push_back(meshFormatOfPath(output));
 
@@ -98,40 +182,32 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
   const exporting::ExportScene scene = sceneToMesh(configuration, options, progress);
   for (const std::string& leftOut : scene.leftOut) report.failures.push_back(leftOut);
   report.notes = scene.notes;
-  progress("fusing the components");
-  const NamedShape aircraft = fusedAircraft(scene, report.notes);
-  const double length = aircraftLength(aircraft.shape);
-  if (options.farfield) progress("cutting the aircraft out of the far field");
-  const NamedShape domain = options.farfield ? fluidDomain(aircraft, *options.farfield, options.symmetry) : aircraft;
-  const std::vector<FaceLabel> labels = faceLabels(domain);
+  const ShapeToMesh toMesh =
+      options.scene.structure ? structureToMesh(scene) : aircraftToMesh(scene, options, progress, report);
 
   GmshSession session(scene.name);
   progress("handing the shape to Gmsh");
-  const ImportedShape imported = importIntoGmsh(domain.shape);
-  addToGmsh(physicalGroups(labels, imported, !options.farfield, options.farfield.has_value()));
-  const Sizes sizes = sizesFor(options, length, options.farfield ? farfieldDistance(*options.farfield, length) : 0.0);
-  setSizeFields(domain.shape, labels, imported, options, sizes);
+  const ImportedShape imported = importIntoGmsh(toMesh.shape.shape);
+  addToGmsh(physicalGroups(toMesh.labels, imported, toMesh.groupsOf, options.farfield.has_value()));
+  const Sizes sizes =
+      sizesFor(options, toMesh.length, options.farfield ? farfieldDistance(*options.farfield, toMesh.length) : 0.0);
+  setSizeFields(toMesh.shape.shape, toMesh.labels, imported, options, sizes);
+  if (options.scene.structure) askForShells(options.order);
   progress("meshing the surfaces");
-  const auto failedSurfaces = meshSurfaces(labels, imported);
+  const auto failedSurfaces = meshSurfaces(toMesh.labels, imported);
   for (const auto& [uid, why] : failedSurfaces) report.failures.push_back(failureOf(configuration, uid, why));
   if (options.farfield && failedSurfaces.empty()) {
     progress("meshing the fluid");
-    callGmsh("meshing the fluid", [] {
-      gmsh::option::setNumber("General.AbortOnError", 2);
-      // Delaunay: Gmsh 4.8's parallel HXT is many times slower with a size field, and fails on
-      // large domains (docs/performance.md).
-      gmsh::option::setNumber("Mesh.Algorithm3D", 1);
-      gmsh::model::mesh::generate(3);
-    });
+    meshFluid();
   } else if (options.farfield) {
     report.failures.push_back("fluid: not meshed, its boundary has surfaces without elements");
   }
   progress("reading the mesh");
   MeshTables tables = meshTablesFromGmsh();
   progress("turning the elements outwards");
-  orientLikeFaces(tables, domain.shape, imported);
+  orientLikeFaces(tables, toMesh.shape.shape, imported);
   progress("measuring the quality");
-  MeshSummary summary = summaryOfGmshMesh(options.farfield ? "fluid" : "surface", tables);
+  MeshSummary summary = summaryOfGmshMesh(toMesh.name, tables);
   for (std::size_t index = 0; index < outputs.size(); ++index) {
     progress("writing " + outputs[index]);
     writeMesh(tables, outputs[index], formats[index]);

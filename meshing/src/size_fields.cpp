@@ -59,9 +59,13 @@ std::vector<double> curvesToRefine(const TopoDS_Shape& shape, const std::vector<
   return curves;
 }
 
-int mathEval(double value) {
-  const int field = gmsh::model::mesh::field::add("MathEval");
-  gmsh::model::mesh::field::setString(field, "F", std::to_string(value));
+/// The same size everywhere: a Box field whose box holds everything (Gmsh's MathEval field
+/// parses its formula at every point it is asked, which made surface meshes ten times slower).
+int constantSize(double value) {
+  const int field = gmsh::model::mesh::field::add("Box");
+  for (const char* name : {"VIn", "VOut"}) gmsh::model::mesh::field::setNumber(field, name, value);
+  for (const char* name : {"XMin", "YMin", "ZMin"}) gmsh::model::mesh::field::setNumber(field, name, -1e30);
+  for (const char* name : {"XMax", "YMax", "ZMax"}) gmsh::model::mesh::field::setNumber(field, name, 1e30);
   return field;
 }
 
@@ -101,7 +105,7 @@ int sizeOnComponent(const std::string& uid, double size, const TopoDS_Shape& sha
   if (surfaces.empty())
     throw Error(ErrorCode::InvalidArgument, "--size: no surface of the mesh belongs to '" + uid + "'");
   const int restrict = gmsh::model::mesh::field::add("Restrict");
-  gmsh::model::mesh::field::setNumber(restrict, "InField", mathEval(size));
+  gmsh::model::mesh::field::setNumber(restrict, "InField", constantSize(size));
   gmsh::model::mesh::field::setNumbers(restrict, "FacesList", surfaces);
   gmsh::model::mesh::field::setNumbers(restrict, "EdgesList", std::vector<double>(curves.begin(), curves.end()));
   return restrict;
@@ -146,14 +150,13 @@ void setSizeFields(const TopoDS_Shape& shape, const std::vector<FaceLabel>& labe
     std::vector<double> fields;
     if (const std::vector<double> curves = curvesToRefine(shape, labels, imported); !curves.empty())
       fields.push_back(
-          sizeNear("EdgesList", curves, sizes.refined, sizes.refined, sizes.surface, 4 * sizes.surface, 40));
+          sizeNear("EdgesList", curves, sizes.refined, sizes.refined, sizes.surface, 4 * sizes.surface, 12));
     for (const auto& [uid, size] : options.componentSizes)
       fields.push_back(sizeOnComponent(uid, size, shape, labels, imported));
     if (fluid)
       fields.push_back(
           sizeNear("FacesList", aircraftSurfaces(labels, imported), sizes.surface, 0, sizes.farfield, sizes.reach, 12));
-    else
-      fields.push_back(mathEval(sizes.surface));
+    if (fields.empty()) return;  // the largest size and the curvature decide
     const int minimum = gmsh::model::mesh::field::add("Min");
     gmsh::model::mesh::field::setNumbers(minimum, "FieldsList", fields);
     gmsh::model::mesh::field::setAsBackgroundMesh(minimum);
