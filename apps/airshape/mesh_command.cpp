@@ -25,57 +25,13 @@ struct MeshCommandOptions {
   bool quiet = false;
 };
 
-double positiveNumber(const std::string& text, const std::string& option) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value > 0))
-    throw Error(ErrorCode::InvalidArgument, option + ": '" + text + "' is not a positive number");
-  return value;
-}
-
-/// --size SIZE (every surface) or --size UID=SIZE[,UID=SIZE...] (those components' surfaces).
-void parseSize(const std::string& text, meshing::MeshOptions& options) {
-  if (text.find('=') == std::string::npos) {
-    options.size = positiveNumber(text, "--size");
-    return;
-  }
-  for (const auto& [uid, size] : meshing::parseComponentSizes(text)) options.componentSizes[uid] = size;
-}
-
-MeshCommandOptions parseMeshOptions(const Arguments& arguments) {
+MeshCommandOptions parseMeshOptions(Arguments arguments) {
   MeshCommandOptions options;
-  meshing::MeshOptions& mesh = options.meshOptions;
+  options.meshOptions = meshing::takeMeshOptions(arguments);
   for (std::size_t i = 0; i < arguments.size(); ++i) {
     const std::string& argument = arguments[i];
-    const bool hasValue = i + 1 < arguments.size();
-    if ((argument == "-o" || argument == "--output") && hasValue) {
+    if ((argument == "-o" || argument == "--output") && i + 1 < arguments.size()) {
       options.outputs.push_back(arguments[++i]);
-    } else if (argument == "--components" && hasValue) {
-      mesh.scene.components = exporting::splitAtCommas(arguments[++i]);
-    } else if (argument == "--deflect" && hasValue) {
-      const std::vector<exporting::Pose> poses = exporting::parsePoses(arguments[++i]);
-      mesh.scene.poses.insert(mesh.scene.poses.end(), poses.begin(), poses.end());
-    } else if (argument == "--mirror") {
-      mesh.scene.mirror = true;
-    } else if (argument == "--size" && hasValue) {
-      parseSize(arguments[++i], mesh);
-    } else if (argument == "--min-size" && hasValue) {
-      mesh.minSize = positiveNumber(arguments[++i], "--min-size");
-    } else if (argument == "--curvature" && hasValue) {
-      mesh.elementsPerCircle = positiveNumber(arguments[++i], "--curvature");
-    } else if (argument == "--farfield" && hasValue) {
-      mesh.farfield = meshing::parseFarfield(arguments[++i]);
-    } else if (argument == "--symmetry") {
-      mesh.symmetry = true;
-    } else if (argument == "--structure") {
-      mesh.scene.structure = true;
-    } else if (argument == "--order" && hasValue) {
-      mesh.order = static_cast<int>(positiveNumber(arguments[++i], "--order"));
     } else if (argument == "--force") {
       options.force = true;
     } else if (argument == "--quiet" || argument == "-q") {

@@ -76,6 +76,15 @@ airshape_status airshape_cache_statistics(airshape_configuration* configuration,
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,
                                 int mirror, int fused, double linear_deflection, double angular_deflection);
 
+/* Meshes the configuration through Gmsh (docs/meshing.md) and writes the mesh to path (.msh,
+ * .su2, .vtu, .inp or .stl): options are those of `airshape mesh` separated by spaces, e.g.
+ * "--farfield 20L --symmetry --size 0.5" or "--structure --order 2" (NULL or "": the surface
+ * of the fused aircraft). report_json receives {"meshes": [{"name", "nodes", "elements",
+ * "worst_quality", "seconds"}], "failures": [...], "notes": [...]} (free it with
+ * airshape_free). AIRSHAPE_NOT_IMPLEMENTED in builds without meshing. */
+airshape_status airshape_mesh(airshape_configuration* configuration, const char* path, const char* options,
+                              char** report_json);
+
 /* Any component by uID (QUERY-components): its type name, the volume of its solids (0 for
  * surfaces such as spars and ribs), the area of its faces, and the components inside it as a
  * JSON list of {"uid", "type"}. */

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <mutex>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/export/exporter.h"
+#ifdef AIRSHAPE_HAS_MESHING
+#include "airshape/meshing/mesher.h"
+#endif
 #include "airshape/plugin/plugin_host.h"
 #include "airshape/query/query_registry.h"
 
@@ -298,6 +302,27 @@ airshape_status airshape_export_structure(airshape_configuration* configuration,
 airshape_status airshape_export_profiles(airshape_configuration* configuration, const char* path,
                                          const char* components) {
   return exportWith(configuration, path, components, &airshape::exporting::ExportOptions::profiles);
+}
+
+airshape_status airshape_mesh(airshape_configuration* configuration, const char* path, const char* options,
+                              char** report_json) {
+  return guarded([&] {
+    require(configuration, "configuration");
+    require(path, "path");
+    require(report_json, "report_json");
+#ifdef AIRSHAPE_HAS_MESHING
+    std::vector<std::string> arguments;
+    std::istringstream words(options == nullptr ? "" : options);
+    for (std::string word; words >> word;) arguments.push_back(word);
+    const airshape::meshing::MeshOptions meshOptions = airshape::meshing::takeMeshOptions(arguments);
+    if (!arguments.empty()) throw Error(ErrorCode::InvalidArgument, "mesh: unexpected option '" + arguments[0] + "'");
+    const std::lock_guard<std::mutex> guard(configuration->lock);
+    *report_json = copied(airshape::meshing::reportAsJson(
+        airshape::meshing::meshConfiguration(configuration->configuration, {path}, meshOptions)));
+#else
+    throw Error(ErrorCode::NotImplemented, "this build has no meshing: build it with Gmsh (docs/meshing.md)");
+#endif
+  });
 }
 
 airshape_status airshape_export(airshape_configuration* configuration, const char* path, const char* components,

@@ -12,6 +12,9 @@
 #include "airshape/configuration.h"
 #include "airshape/error.h"
 #include "airshape/export/exporter.h"
+#ifdef AIRSHAPE_HAS_MESHING
+#include "airshape/meshing/mesher.h"
+#endif
 #include "airshape/plugin/plugin_host.h"
 #include "airshape/query/op_signature.h"
 #include "airshape/query/query_registry.h"
@@ -108,6 +111,22 @@ void exportTo(PyConfiguration& self, const std::string& path, const std::vector<
   py::gil_scoped_release release;
   const std::lock_guard<std::mutex> guard(self.lock);
   airshape::exporting::exportConfiguration(self.configuration, path, options);
+}
+
+/// Meshes into `path` with the options of `airshape mesh` (docs/meshing.md); the report as JSON.
+std::string meshTo(PyConfiguration& self, const std::string& path, std::vector<std::string> arguments) {
+#ifdef AIRSHAPE_HAS_MESHING
+  const airshape::meshing::MeshOptions options = airshape::meshing::takeMeshOptions(arguments);
+  if (!arguments.empty())
+    throw airshape::Error(airshape::ErrorCode::InvalidArgument, "mesh: unexpected option '" + arguments[0] + "'");
+  py::gil_scoped_release release;
+  const std::lock_guard<std::mutex> guard(self.lock);
+  return airshape::meshing::reportAsJson(airshape::meshing::meshConfiguration(self.configuration, {path}, options));
+#else
+  (void)self, (void)path, (void)arguments;
+  throw airshape::Error(airshape::ErrorCode::NotImplemented,
+                        "this build has no meshing: build it with Gmsh (docs/meshing.md)");
+#endif
 }
 
 /// airshape::Error becomes the Python exception of its code (airshape/errors.py), with the
@@ -215,6 +234,8 @@ PYBIND11_MODULE(_airshape, m) {
            py::arg("profiles") = false,
            "Writes STEP, IGES, BREP, STL, VTP, glTF/GLB or OBJ by extension; poses: UID=P,... devices deflected; "
            "profiles: frames and stringers with their structural profiles swept along them.")
+      .def("mesh", &meshTo, py::arg("path"), py::arg("arguments"),
+           "Meshes through Gmsh into path with the options of `airshape mesh`; returns the report as JSON.")
       .def(
           "set_option",
           [](PyConfiguration& self, const std::string& name, bool on) {

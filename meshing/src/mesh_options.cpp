@@ -20,7 +20,60 @@ double positive(const std::string& text, const std::string& option) {
   return value;
 }
 
+/// --size SIZE (every surface) or --size UID=SIZE[,UID=SIZE...] (those components' surfaces).
+void parseSize(const std::string& text, MeshOptions& options) {
+  if (text.find('=') == std::string::npos) {
+    options.size = positive(text, "--size");
+    return;
+  }
+  for (const auto& [uid, size] : parseComponentSizes(text)) options.componentSizes[uid] = size;
+}
+
+/// Takes one option (and its value) at `arguments[i]` into `options`; false when it is none
+/// of the mesh's.
+bool takeOption(const std::vector<std::string>& arguments, std::size_t& i, MeshOptions& options) {
+  const std::string& argument = arguments[i];
+  const auto value = [&]() -> const std::string& {
+    if (i + 1 >= arguments.size()) throw Error(ErrorCode::InvalidArgument, argument + ": a value must follow");
+    return arguments[++i];
+  };
+  if (argument == "--components") {
+    options.scene.components = exporting::splitAtCommas(value());
+  } else if (argument == "--deflect") {
+    const std::vector<exporting::Pose> poses = exporting::parsePoses(value());
+    options.scene.poses.insert(options.scene.poses.end(), poses.begin(), poses.end());
+  } else if (argument == "--mirror") {
+    options.scene.mirror = true;
+  } else if (argument == "--size") {
+    parseSize(value(), options);
+  } else if (argument == "--min-size") {
+    options.minSize = positive(value(), "--min-size");
+  } else if (argument == "--curvature") {
+    options.elementsPerCircle = positive(value(), "--curvature");
+  } else if (argument == "--farfield") {
+    options.farfield = parseFarfield(value());
+  } else if (argument == "--symmetry") {
+    options.symmetry = true;
+  } else if (argument == "--structure") {
+    options.scene.structure = true;
+  } else if (argument == "--order") {
+    options.order = static_cast<int>(positive(value(), "--order"));
+  } else {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+MeshOptions takeMeshOptions(std::vector<std::string>& arguments) {
+  MeshOptions options;
+  std::vector<std::string> rest;
+  for (std::size_t i = 0; i < arguments.size(); ++i)
+    if (!takeOption(arguments, i, options)) rest.push_back(arguments[i]);
+  arguments = rest;
+  return options;
+}
 
 std::map<std::string, double> parseComponentSizes(const std::string& list) {
   std::map<std::string, double> sizes;

@@ -156,6 +156,13 @@ static void editing_and_exporting(const char* folder) {
   CHECK(airshape_export(c, path, "HTP", 1, 0, 0, 0) == AIRSHAPE_OK);
   snprintf(path, sizeof path, "%s/no/such/folder/x.step", folder);
   CHECK(airshape_export(c, path, NULL, 0, 0, 0, 0) == AIRSHAPE_WRITE_FAILED);
+  /* A coarse surface mesh (docs/meshing.md): the report names it; a malformed option is refused. */
+  char* report = NULL;
+  snprintf(path, sizeof path, "%s/c_api_surface.vtu", folder);
+  CHECK(airshape_mesh(c, path, "--size 3 --components HTP,VTP", &report) == AIRSHAPE_OK);
+  CHECK(report != NULL && strstr(report, "\"name\":\"surface\"") != NULL && file_size(path) > 0);
+  airshape_free(report);
+  CHECK(airshape_mesh(c, path, "--size -1", &report) == AIRSHAPE_INVALID_ARGUMENT);
   /* A frame with its Z profile swept along it: surfaces, a much larger file than its line. */
   char line_path[1024], swept_path[1024];
   snprintf(line_path, sizeof line_path, "%s/c_api_frame_line.brep", folder);

@@ -13,6 +13,7 @@ CPACS path it concerns.
 """
 from __future__ import annotations
 
+import json
 from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -626,6 +627,43 @@ class Configuration:
     def save(self, path: str) -> None:
         """Writes the document, edits included (complete or not at all)."""
         self._core.save(str(path))
+
+    def mesh(self, path: str, *, components: Optional[List[str]] = None, mirror: bool = False,
+             deflect: Optional[Dict[str, Union[float, str]]] = None, size: Optional[float] = None,
+             sizes: Optional[Dict[str, float]] = None, min_size: Optional[float] = None,
+             curvature: Optional[float] = None, farfield: Optional[str] = None, symmetry: bool = False,
+             structure: bool = False, order: int = 1) -> Dict[str, Any]:
+        """Meshes through Gmsh and writes the mesh in the format the extension names (.msh, .su2,
+        .vtu, .inp, .stl; docs/meshing.md). `size`/`min_size` in metres, `sizes` per component
+        uID, `curvature` elements per turn, `farfield` "20L" or "sphere:100" for a CFD domain,
+        `symmetry` for the half domain y >= 0, `structure` for the FEM shell model (`order` 2:
+        8-node shells). Returns the report: {"meshes": [{"name", "nodes", "elements",
+        "worst_quality", "seconds"}], "failures": [...], "notes": [...]}."""
+        arguments: List[str] = []
+        if components:
+            arguments += ["--components", ",".join(components)]
+        if mirror:
+            arguments.append("--mirror")
+        if deflect:
+            arguments += ["--deflect", ",".join(f"{uid}={_text(p)}" for uid, p in deflect.items())]
+        if size is not None:
+            arguments += ["--size", repr(float(size))]
+        if sizes:
+            arguments += ["--size", ",".join(f"{uid}={float(s)!r}" for uid, s in sizes.items())]
+        if min_size is not None:
+            arguments += ["--min-size", repr(float(min_size))]
+        if curvature is not None:
+            arguments += ["--curvature", repr(float(curvature))]
+        if farfield is not None:
+            arguments += ["--farfield", farfield]
+        if symmetry:
+            arguments.append("--symmetry")
+        if structure:
+            arguments.append("--structure")
+        if order != 1:
+            arguments += ["--order", str(order)]
+        report: Dict[str, Any] = json.loads(self._core.mesh(str(path), arguments))
+        return report
 
     def export(self, path: str, components: Optional[List[str]] = None, mirror: bool = False, fused: bool = False,
                linear_deflection: float = 0.0, angular_deflection: float = 0.0,

@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "airshape/export/export_options.h"
 
@@ -48,6 +49,11 @@ struct MeshOptions {
   /// Called as work goes on; may be empty.
   std::function<void(const MeshProgress&)> progress;
 };
+
+/// Takes the mesh options out of a command's arguments (`--size 0.5`, `--farfield 20L`, ...:
+/// `airshape help mesh`) and leaves the rest in order; the command line, the C API and the
+/// Python binding all describe a mesh so. Throws Error(InvalidArgument) on a malformed value.
+MeshOptions takeMeshOptions(std::vector<std::string>& arguments);
 
 /// "uID=SIZE" pairs separated by commas, sizes positive numbers in metres. Throws
 /// Error(InvalidArgument) on anything else.

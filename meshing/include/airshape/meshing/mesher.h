@@ -34,6 +34,10 @@ struct MeshReport {
   std::vector<std::string> notes;
 };
 
+/// The report as JSON, for the C API and Python: {"meshes": [{"name", "nodes", "elements":
+/// {type: count}, "worst_quality", "seconds"}], "failures": [...], "notes": [...]}.
+std::string reportAsJson(const MeshReport& report);
+
 /// Meshes a configuration as `options` say (docs/meshing.md) and writes the mesh to each
 /// output, in the format its extension names, each file complete or not at all. A component
 /// that cannot be built, or on whose surfaces Gmsh fails, is said in `failures` and the rest
