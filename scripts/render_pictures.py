@@ -72,9 +72,10 @@ def view(triangles, azimuth, elevation):
     return triangles @ (tilt @ turn).T  # screen x, depth y, screen z
 
 
-def render(groups, opaque, azimuth=-35, elevation=25, colour_of=None):
+def render(groups, opaque, azimuth=-35, elevation=25, colour_of=None, edge_colour=None, edge_width=2):
     """`opaque` components drawn in colour (by their place in the list, or `colour_of[name]`,
-    an index into COLOURS), the others as a ghost."""
+    an index into COLOURS), the others as a ghost; their segments in their colour, or in
+    `edge_colour` (a mesh's element edges) `edge_width` pixels either side."""
     placed = {name: (view(triangles, azimuth, elevation), view(segments, azimuth, elevation))
               for name, (triangles, segments) in groups.items()}
     every = np.concatenate([part.reshape(-1, 3) for shapes in placed.values() for part in shapes])
@@ -136,7 +137,7 @@ def render(groups, opaque, azimuth=-35, elevation=25, colour_of=None):
         triangles, segments = placed[name]
         colour = COLOURS[(colour_of or {}).get(name, k) % len(COLOURS)]
         draw(triangles, colour, 1.0)
-        stroke(segments, colour)
+        stroke(segments, edge_colour or colour, edge_width)
     for name, (triangles, _) in placed.items():
         if name not in opaque:
             draw(triangles, (0.5, 0.5, 0.55), 0.18)

@@ -69,6 +69,12 @@ void writeVtu(const MeshTables& mesh, const std::string& path) {
          "<DataArray type=\"Int32\" Name=\"group\" format=\"ascii\">\n";
   for (const ElementBlock& block : mesh.blocks)
     for (std::size_t entity : block.entity) out << mesh.entities[entity].groups.front() << '\n';
+  out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"part\" format=\"ascii\">\n";
+  for (const ElementBlock& block : mesh.blocks)
+    for (std::size_t entity : block.entity) {
+      const std::vector<int>& groups = mesh.entities[entity].groups;
+      out << (groups.size() > 1 ? groups[1] : -1) << '\n';
+    }
   out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   out.close();
   if (!out) throw Error(ErrorCode::WriteFailed, "cannot write the VTU file", path);
