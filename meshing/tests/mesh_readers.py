@@ -31,6 +31,19 @@ def edge_use(triangles):
     return int((counts == 1).sum()), int((counts > 2).sum())
 
 
+def free_edges(path):
+    """The element edges of a mesh file (meshio) that only one element uses."""
+    points, cells, _ = meshio_mesh(path)
+    edges = []
+    for kind, connectivity in cells.items():
+        corners = {"triangle": 3, "quad": 4, "triangle6": 3, "quad8": 4}.get(kind)
+        if corners:
+            ring = connectivity[:, :corners]
+            edges.append(numpy.stack([ring, numpy.roll(ring, -1, axis=1)], axis=2).reshape(-1, 2))
+    _, counts = numpy.unique(numpy.sort(numpy.vstack(edges), axis=1), axis=0, return_counts=True)
+    return int((counts == 1).sum())
+
+
 GMSH_GROUPS = r"""
 import json, sys, gmsh
 gmsh.initialize(); gmsh.option.setNumber("General.Terminal", 0)

@@ -12,7 +12,8 @@ import numpy
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli"))
-from conftest import DATA, SOURCE, airshape  # noqa: E402
+from conftest import DATA, SOURCE, airshape, shared_path  # noqa: E402
+from mesh_readers import free_edges  # noqa: E402
 
 BOX = os.path.join(DATA, "wing-cst-structure.xml")  # chord 2, span 5, z = ±0.3 ξ(1-ξ), spars at ξ 0.2 and 0.6
 AIRLINER = os.path.join(SOURCE, "examples", "generic-airliner.xml")
@@ -112,3 +113,13 @@ def test_airliner_wing_solves_without_a_singular_matrix(tmp_path):
     output, tip = solve(tmp_path, cantilever_deck(mesh, 0.003))
     assert "singular" not in output.lower()
     assert numpy.isfinite(tip).all() and tip.mean() > 0
+
+
+@pytest.mark.parametrize("name", ["CPACS_30_D150.xml", "cell_rib_spar_test.xml"])
+def test_structural_models_are_conformal_where_spars_kink(name, tmp_path):
+    # A spar's webs on either side of a kink share their kink edge and their edges on the skins:
+    # the shells have no free edge (31 mesh edges of D150's wing, 2 of cell_rib_spar_test's, before).
+    path = tmp_path / "structure.vtu"
+    result = airshape("mesh", shared_path("data", "cpacs", name), "--structure", "--size", "0.3", "-o", str(path))
+    assert result.returncode == 0, result.stderr
+    assert free_edges(path) == 0
