@@ -37,7 +37,14 @@ void callGmsh(const std::string& what, const std::function<void()>& call) {
   try {
     call();
   } catch (const std::string& message) {
-    throw Error(ErrorCode::InvalidModel, what + " failed in Gmsh: " + message);
+    // Gmsh's message may end where its log goes on ("... intersect at point" and the point on
+    // the next lines): the error lines of the log, joined, say it all.
+    std::string said;
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    for (const std::string& line : log)
+      if (line.rfind("Error", 0) == 0) said += (said.empty() ? "" : "; ") + line.substr(line.find(':') + 1);
+    throw Error(ErrorCode::InvalidModel, what + " failed in Gmsh: " + (said.empty() ? message : said));
   }
 }
 

@@ -9,7 +9,7 @@ import numpy
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli"))
-from conftest import SOURCE, airshape  # noqa: E402
+from conftest import SOURCE, airshape, shared_path  # noqa: E402
 from mesh_readers import meshio_mesh  # noqa: E402
 from openfoam_case import boundary_patches, make_case, run  # noqa: E402
 
@@ -75,4 +75,16 @@ def test_a_sphere_around_the_whole_aircraft(tmp_path):
     case = tmp_path / "case"
     assert make_case(case, mesh, ["farfield"]).returncode == 0
     assert "symmetry" not in boundary_patches(case)
+    assert "Mesh OK." in run("checkMesh", case).stdout
+
+
+def test_d150_half_domain_passes_checkmesh(tmp_path):
+    mesh = tmp_path / "d150.msh"
+    result = airshape("mesh", shared_path("data", "cpacs", "CPACS_30_D150.xml"), "--farfield", "20L", "--symmetry",
+                      "-o", str(mesh))
+    assert result.returncode == 0, result.stderr
+    case = tmp_path / "case"
+    assert make_case(case, mesh, ["farfield"]).returncode == 0
+    assert {"farfield", "symmetry", "D150_VAMP_FL1", "D150_VAMP_W1", "D150_VAMP_HL1", "D150_VAMP_SL1"} <= set(
+        boundary_patches(case))
     assert "Mesh OK." in run("checkMesh", case).stdout
