@@ -52,9 +52,9 @@ NamedShape joined(const std::vector<const NamedShape*>& parts, const std::string
   BRep_Builder builder;
   TopTools_ListOfShape arguments;
   // Each face an argument of its own: the fuse leaves the faces of one argument as they are
-  // among themselves, so a spar's webs on either side of a kink, which do not share their kink
-  // edge in the spar's own shape, stayed apart (26 free edges in CPACS_30_D150.xml's model).
-  // Faces only: a solid would be split into solids.
+  // among themselves, so faces of one part that only touch along an edge they do not share (a
+  // web's pieces on either side of a kink) stayed apart (26 free edges in CPACS_30_D150.xml's
+  // model). Faces only: a solid would be split into solids.
   for (const NamedShape* part : parts)
     for (TopExp_Explorer face(part->shape, TopAbs_FACE); face.More(); face.Next()) arguments.Append(face.Current());
   BRepAlgoAPI_BuilderAlgo fuse;
