@@ -180,7 +180,12 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
 
   MeshReport report;
   const exporting::ExportScene scene = sceneToMesh(configuration, options, progress);
-  for (const std::string& leftOut : scene.leftOut) report.failures.push_back(leftOut);
+  for (const std::string& leftOut : scene.leftOut) {  // "uID: why"
+    const std::size_t colon = leftOut.find(": ");
+    report.failures.push_back(colon == std::string::npos
+                                  ? leftOut
+                                  : failureOf(configuration, leftOut.substr(0, colon), leftOut.substr(colon + 2)));
+  }
   report.notes = scene.notes;
   const ShapeToMesh toMesh =
       options.scene.structure ? structureToMesh(scene) : aircraftToMesh(scene, options, progress, report);

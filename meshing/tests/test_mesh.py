@@ -121,3 +121,17 @@ def test_bad_requests_are_one_line_errors_and_write_nothing(tmp_path):
     farfield = airshape("mesh", AIRLINER, "--farfield", "cube:3L", "-o", str(tmp_path / "b.msh"))
     assert farfield.returncode == 2 and "box or sphere" in farfield.stderr
     assert sorted(os.listdir(tmp_path)) == ["exists.msh"]
+
+
+def test_a_component_that_cannot_be_built_is_said_with_its_path_and_the_rest_meshed(tmp_path):
+    source = tmp_path / "with-empty-wing.xml"
+    text = open(AIRLINER).read()
+    at = text.index("</wings>")
+    source.write_text(text[:at] + '<wing uID="EmptyWing"><name>e</name><transformation/><sections/><segments/></wing>'
+                      + text[at:])
+    result = airshape("mesh", str(source), "--size", "3", "-o", str(tmp_path / "rest.vtu"))
+    assert result.returncode == 1
+    failed = [line for line in result.stderr.splitlines() if line.startswith("mesh: failed:")]
+    assert len(failed) == 1 and "EmptyWing" in failed[0] and "/cpacs/vehicles/aircraft/model" in failed[0], failed
+    _, _, mesh = meshio_mesh(tmp_path / "rest.vtu")
+    assert {"group:Wing", "group:Fuselage"} <= set(mesh.field_data)
