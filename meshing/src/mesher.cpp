@@ -1,7 +1,11 @@
 #include "airshape/meshing/mesher.h"
 
 #include <chrono>
+#include <map>
 #include <set>
+
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 
 #include <gmsh.h>
 
@@ -92,6 +96,8 @@ struct ShapeToMesh {
   GroupsOfFace groupsOf;
   double length = 0;
   std::string name;
+  /// Lines to mesh as beams (frames, stringers): each edge with its group names.
+  std::vector<std::pair<TopoDS_Edge, std::vector<std::string>>> lines = {};
 };
 
 /// The fused aircraft (its faces in a group per component and per face name), or with a far
@@ -123,7 +129,8 @@ ShapeToMesh aircraftToMesh(const exporting::ExportScene& scene, const MeshOption
 std::string elementOf(const std::string& face) { return face.substr(0, face.find('/')); }
 
 /// The structural models side by side, each face in a group per model ("<uID> structure") and
-/// per structural element.
+/// per structural element, each line (frames, stringers) in a group per element and per model
+/// ("<uID> structure beams": a beam section for the analyst to give, apart from the shells).
 ShapeToMesh structureToMesh(const exporting::ExportScene& scene) {
   if (scene.components.empty())
     throw Error(ErrorCode::InvalidArgument, "no component holds spars or ribs that could be built");
@@ -133,6 +140,8 @@ ShapeToMesh structureToMesh(const exporting::ExportScene& scene) {
   std::vector<const NamedShape*> parts;
   for (const NamedShape& model : models) parts.push_back(&model);
   ShapeToMesh toMesh{compoundOfNamedShapes(parts), {}, {}, 0, "structure"};
+  for (const exporting::SceneComponent& model : scene.components)
+    for (const auto& [uid, edge] : model.shape.lines) toMesh.lines.push_back({edge, {uid, model.name + " beams"}});
   toMesh.labels = faceLabels(toMesh.shape);
   toMesh.length = aircraftLength(toMesh.shape.shape);
   toMesh.groupsOf = [](const FaceLabel& label) {
@@ -141,6 +150,26 @@ ShapeToMesh structureToMesh(const exporting::ExportScene& scene) {
     return groups;
   };
   return toMesh;
+}
+
+/// The physical groups of the lines to mesh as beams, by the curves Gmsh took them as.
+std::vector<PhysicalGroup> lineGroups(const TopoDS_Shape& shape,
+                                      const std::vector<std::pair<TopoDS_Edge, std::vector<std::string>>>& lines,
+                                      const ImportedShape& imported) {
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+  std::vector<PhysicalGroup> groups;
+  std::map<std::string, std::size_t> byName;
+  for (const auto& [edge, names] : lines) {
+    const int index = edges.FindIndex(edge);
+    if (index <= 0) continue;
+    for (const std::string& name : names) {
+      const auto [at, added] = byName.emplace(name, groups.size());
+      if (added) groups.push_back({1, name, {}});
+      groups[at->second].entities.push_back(imported.curves[static_cast<std::size_t>(index - 1)]);
+    }
+  }
+  return groups;
 }
 
 /// Quadrilateral shells for FEM: Frontal-Delaunay recombined (Gmsh 4.8's frontal quad
@@ -193,7 +222,10 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
   GmshSession session(scene.name);
   progress("handing the shape to Gmsh");
   const ImportedShape imported = importIntoGmsh(toMesh.shape.shape);
-  addToGmsh(physicalGroups(toMesh.labels, imported, toMesh.groupsOf, options.farfield.has_value()));
+  std::vector<PhysicalGroup> groups =
+      physicalGroups(toMesh.labels, imported, toMesh.groupsOf, options.farfield.has_value());
+  for (const PhysicalGroup& group : lineGroups(toMesh.shape.shape, toMesh.lines, imported)) groups.push_back(group);
+  addToGmsh(groups);
   const Sizes sizes =
       sizesFor(options, toMesh.length, options.farfield ? farfieldDistance(*options.farfield, toMesh.length) : 0.0);
   setSizeFields(toMesh.shape.shape, toMesh.labels, imported, options, sizes);

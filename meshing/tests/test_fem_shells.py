@@ -27,6 +27,12 @@ def nodes_of(deck):
     return rows[:, 0].astype(int), rows[:, 1:]
 
 
+def element_set(deck, name):
+    """The element numbers of an *ELSET of the deck."""
+    block = deck.split(f"*ELSET, ELSET={name}\n")[1].split("*")[0]
+    return {int(value) for value in block.replace("\n", ",").split(",") if value.strip()}
+
+
 def node_set(deck, name):
     """The node numbers of an *NSET of the deck."""
     block = deck.split(f"*NSET, NSET={name}\n")[1].split("*")[0]
@@ -123,3 +129,22 @@ def test_structural_models_are_conformal_where_spars_kink(name, tmp_path):
     result = airshape("mesh", shared_path("data", "cpacs", name), "--structure", "--size", "0.3", "-o", str(path))
     assert result.returncode == 0, result.stderr
     assert free_edges(path) == 0
+
+
+def test_frames_and_stringers_are_beams_on_the_shells_nodes(tmp_path):
+    mesh = tmp_path / "fuselage.inp"
+    result = airshape("mesh", AIRLINER, "--structure", "--components", "Fuselage", "--size", "1", "-o", str(mesh))
+    assert result.returncode == 0, result.stderr
+    deck = mesh.read_text()
+    elements = {}
+    for kind, body in re.findall(r"\*ELEMENT, TYPE=(\w+)\n((?:\d.*\n)+)", deck):
+        for line in body.strip().splitlines():
+            numbers = [int(value) for value in line.split(",")]
+            elements[numbers[0]] = (kind, numbers[1:])
+    shell_nodes = {node for kind, nodes in elements.values() if kind.startswith("S") for node in nodes}
+    beams = element_set(deck, "Fuselage_structure_beams")
+    assert beams and all(elements[number][0] == "B31" for number in beams)
+    assert not beams & element_set(deck, "Fuselage_structure")  # shells and beams take sections apart
+    for uid in ("Stringer_Side", "Frame_Door_Front"):
+        nodes = {node for number in element_set(deck, uid) for node in elements[number][1]}
+        assert nodes and nodes <= shell_nodes, uid  # on the skin, on its nodes

@@ -131,7 +131,7 @@ def test_bad_plugins_get_one_message_each_and_the_rest_works(tmp_path, third_par
     assert result.returncode == 0
     messages = result.stderr.strip().splitlines()
     assert any("libbroken.so: cannot be loaded as a plugin" in m for m in messages), messages
-    assert any("built for plugin ABI version 999, this core has 9" in m for m in messages), messages
+    assert any("built for plugin ABI version 999, this core has 10" in m for m in messages), messages
     assert any("claims node type 'wing', which plugin wing builds already" in m for m in messages), messages
     assert "wing 0.1.0" in result.stdout and "wing_count" in result.stdout
     query = airshape("query", EXAMPLE, stdin='{"op":"wing_count"}\n', env={"AIRSHAPE_PLUGIN_PATH": str(folder)})

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
@@ -20,6 +21,9 @@ namespace airshape {
 struct NamedShape {
   TopoDS_Shape shape;
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
+  /// Edges of `shape` on no face, named by the component they are (the frames and stringers of
+  /// a structural model); empty elsewhere.
+  std::vector<std::pair<std::string, TopoDS_Edge>> lines = {};
 };
 
 /// Sews named faces (null faces are left out) into one solid whose faces keep their names,

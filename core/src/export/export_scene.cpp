@@ -125,6 +125,8 @@ SceneComponent copied(const std::string& name, const NamedShape& shape) {
     SceneComponent component{name, {copy.Shape(), {}}, ""};
     for (const auto& [faceName, face] : shape.faces)
       component.shape.faces.emplace_back(faceName, TopoDS::Face(copy.ModifiedShape(face)));
+    for (const auto& [lineName, edge] : shape.lines)
+      component.shape.lines.emplace_back(lineName, TopoDS::Edge(copy.ModifiedShape(edge)));
     return component;
   } catch (const Standard_Failure& failure) {
     throw Error(ErrorCode::InvalidModel,

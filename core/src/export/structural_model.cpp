@@ -46,34 +46,68 @@ bool wanted(const Configuration& configuration, const std::string& host, const E
   return false;
 }
 
+/// A model's host and its parts: the host's shape first, then its built structure, each with its uID.
+struct ModelParts {
+  std::string host;
+  std::vector<const NamedShape*> parts;
+  std::vector<std::string> uids;
+};
+
+/// The edges of a part on none of its faces (a frame's or stringer's line).
+std::vector<TopoDS_Edge> freeEdges(const TopoDS_Shape& part) {
+  std::vector<TopoDS_Edge> edges;
+  for (TopExp_Explorer edge(part, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next())
+    edges.push_back(TopoDS::Edge(edge.Current()));
+  return edges;
+}
+
 /// The host's faces and its structure's joined by one general fuse: every face split where
-/// another meets it, all sharing the edges they meet along, in one shell.
-NamedShape joined(const std::vector<const NamedShape*>& parts, const std::string& host) {
+/// another meets it, all sharing the edges they meet along, in one shell; the lines of the
+/// structure (frames, stringers) split where they cross faces and each other, on the faces
+/// they lie on, beside the shell as `lines` named by their component.
+NamedShape joined(const ModelParts& model) {
   BRep_Builder builder;
   TopTools_ListOfShape arguments;
   // Each face an argument of its own: the fuse leaves the faces of one argument as they are
   // among themselves, so faces of one part that only touch along an edge they do not share (a
   // web's pieces on either side of a kink) stayed apart (26 free edges in CPACS_30_D150.xml's
   // model). Faces only: a solid would be split into solids.
-  for (const NamedShape* part : parts)
-    for (TopExp_Explorer face(part->shape, TopAbs_FACE); face.More(); face.Next()) arguments.Append(face.Current());
+  std::vector<std::pair<std::string, TopoDS_Edge>> lines;
+  for (std::size_t k = 0; k < model.parts.size(); ++k) {
+    for (TopExp_Explorer face(model.parts[k]->shape, TopAbs_FACE); face.More(); face.Next())
+      arguments.Append(face.Current());
+    for (const TopoDS_Edge& edge : freeEdges(model.parts[k]->shape)) {
+      arguments.Append(edge);
+      lines.emplace_back(model.uids[k], edge);
+    }
+  }
   BRepAlgoAPI_BuilderAlgo fuse;
   fuse.SetArguments(arguments);
   fuse.SetRunParallel(true);
   fuse.SetNonDestructive(true);  // models are joined side by side: inputs stay untouched
   fuse.Build();
   if (!fuse.IsDone() || fuse.HasErrors())
-    throw Error(ErrorCode::InvalidModel, "the structure of '" + host + "' cannot be joined with its faces");
-  NamedShape model = namedBooleanResult(fuse, parts);
+    throw Error(ErrorCode::InvalidModel, "the structure of '" + model.host + "' cannot be joined with its faces");
+  NamedShape joinedModel = namedBooleanResult(fuse, model.parts);
   TopoDS_Shell shell;
   builder.MakeShell(shell);
-  for (TopExp_Explorer face(model.shape, TopAbs_FACE); face.More(); face.Next()) builder.Add(shell, face.Current());
-  model.shape = shell;
-  return model;
+  for (TopExp_Explorer face(joinedModel.shape, TopAbs_FACE); face.More(); face.Next())
+    builder.Add(shell, face.Current());
+  TopoDS_Compound withLines;
+  builder.MakeCompound(withLines);
+  builder.Add(withLines, shell);
+  for (const auto& [uid, edge] : lines) {
+    const TopTools_ListOfShape& pieces = fuse.Modified(edge);
+    if (pieces.IsEmpty()) {
+      if (!fuse.IsDeleted(edge)) joinedModel.lines.emplace_back(uid, edge);
+      continue;
+    }
+    for (const TopoDS_Shape& piece : pieces) joinedModel.lines.emplace_back(uid, TopoDS::Edge(piece));
+  }
+  for (const auto& [uid, edge] : joinedModel.lines) builder.Add(withLines, edge);
+  joinedModel.shape = joinedModel.lines.empty() ? TopoDS_Shape(shell) : TopoDS_Shape(withLines);
+  return joinedModel;
 }
-
-/// A model's host and its parts: the host's shape first, then its built structure.
-using ModelParts = std::pair<std::string, std::vector<const NamedShape*>>;
 
 /// The wanted models with their parts, in the order of their hosts; structure that fails to
 /// build is left out and said in `leftOut`, a host left with nothing to join is no model.
@@ -82,17 +116,18 @@ std::vector<ModelParts> modelsToJoin(const Configuration& configuration, const E
   std::vector<ModelParts> models;
   for (const auto& [host, structure] : structureByHost(configuration)) {
     if (!wanted(configuration, host, options)) continue;
-    std::vector<const NamedShape*> parts = {&configuration.shapes().namedShapeOf(configuration, host)};
+    ModelParts model{host, {&configuration.shapes().namedShapeOf(configuration, host)}, {host}};
     for (const std::string& uid : structure) {
       try {
-        parts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
+        model.parts.push_back(&configuration.shapes().namedShapeOf(configuration, uid));
+        model.uids.push_back(uid);
       } catch (const Error& error) {
         leftOut.push_back(uid + ": " + error.message());
       } catch (const Standard_Failure& failure) {
         leftOut.push_back(uid + ": geometry kernel failure: " + failure.GetMessageString());
       }
     }
-    if (parts.size() >= 2) models.emplace_back(host, std::move(parts));
+    if (model.parts.size() >= 2) models.push_back(std::move(model));
   }
   return models;
 }
@@ -103,7 +138,7 @@ std::vector<ModelParts> modelsToJoin(const Configuration& configuration, const E
 std::vector<std::size_t> largestFirst(const std::vector<ModelParts>& models) {
   std::vector<std::size_t> faces(models.size(), 0);
   for (std::size_t k = 0; k < models.size(); ++k)
-    for (const NamedShape* part : models[k].second) faces[k] += part->faces.size();
+    for (const NamedShape* part : models[k].parts) faces[k] += part->faces.size();
   std::vector<std::size_t> order(models.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return faces[a] > faces[b]; });
@@ -134,13 +169,13 @@ std::vector<SceneComponent> structuralModels(const Configuration& configuration,
   std::vector<SceneComponent> joinedModels(models.size());
   std::mutex reporting;
   parallelFor(order.size(), [&](std::size_t k) {
-    const auto& [host, parts] = models[order[k]];
+    const ModelParts& model = models[order[k]];
     {
       const std::lock_guard<std::mutex> lock(reporting);
-      step("joining the structure of " + host + " (" + std::to_string(parts.size() - 1) +
-           (parts.size() == 2 ? " component)" : " components)"));
+      step("joining the structure of " + model.host + " (" + std::to_string(model.parts.size() - 1) +
+           (model.parts.size() == 2 ? " component)" : " components)"));
     }
-    joinedModels[order[k]] = {host + " structure", joined(parts, host), ""};
+    joinedModels[order[k]] = {model.host + " structure", joined(model), ""};
   });
   return joinedModels;
 }

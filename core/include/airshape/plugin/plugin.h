@@ -15,7 +15,7 @@
 /// against; the host refuses plugins whose value differs from its own. Raise it whenever
 /// a change to Plugin, QueryRegistry, Configuration or the generated model breaks plugins.
 #ifndef AIRSHAPE_PLUGIN_ABI_VERSION
-#define AIRSHAPE_PLUGIN_ABI_VERSION 9
+#define AIRSHAPE_PLUGIN_ABI_VERSION 10
 #endif
 
 namespace airshape::plugin {
