@@ -21,7 +21,7 @@ namespace airshape {
 struct NamedShape {
   TopoDS_Shape shape;
   std::vector<std::pair<std::string, TopoDS_Face>> faces;
-  /// Edges of `shape` on no face, named by the component they are (the frames and stringers of
+  /// Edges of `shape` on no face, named by the component they are (the stiffening lines of
   /// a structural model); empty elsewhere.
   std::vector<std::pair<std::string, TopoDS_Edge>> lines = {};
 };

@@ -53,7 +53,7 @@ struct ModelParts {
   std::vector<std::string> uids;
 };
 
-/// The edges of a part on none of its faces (a frame's or stringer's line).
+/// The edges of a part on none of its faces (a stiffening line's).
 std::vector<TopoDS_Edge> freeEdges(const TopoDS_Shape& part) {
   std::vector<TopoDS_Edge> edges;
   for (TopExp_Explorer edge(part, TopAbs_EDGE, TopAbs_FACE); edge.More(); edge.Next())
@@ -63,7 +63,7 @@ std::vector<TopoDS_Edge> freeEdges(const TopoDS_Shape& part) {
 
 /// The host's faces and its structure's joined by one general fuse: every face split where
 /// another meets it, all sharing the edges they meet along, in one shell; the lines of the
-/// structure (frames, stringers) split where they cross faces and each other, on the faces
+/// structure (its stiffening lines) split where they cross faces and each other, on the faces
 /// they lie on, beside the shell as `lines` named by their component.
 NamedShape joined(const ModelParts& model) {
   BRep_Builder builder;
