@@ -85,8 +85,8 @@ NamedShape joined(const ModelParts& model) {
   fuse.SetArguments(arguments);
   fuse.SetRunParallel(true);
   fuse.SetNonDestructive(true);  // models are joined side by side: inputs stay untouched
-  // Faces less than 0.01 mm apart are one: D250's mid web lies on the wall a flap's cut-out
-  // leaves in its wing, two faces in one place that CalculiX cannot give a normal to.
+  // Faces less than 0.01 mm apart are one: in CPACS_30_D250_10.xml a web lies on the wall a
+  // cut-out leaves in its host, two faces in one place that CalculiX cannot give a normal to.
   fuse.SetFuzzyValue(1e-5);
   fuse.Build();
   if (!fuse.IsDone() || fuse.HasErrors())
