@@ -15,6 +15,7 @@
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
 #include "open_configuration.h"
+#include "output_paths.h"
 
 namespace airshape::cli {
 
@@ -30,26 +31,13 @@ struct ExportCommandOptions {
   bool quiet = false;
 };
 
-double positiveNumber(const std::string& text, const std::string& option) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value > 0))
-    throw Error(ErrorCode::InvalidArgument, option + ": '" + text + "' is not a positive number");
-  return value;
-}
-
 /// --deflection LINEAR[,ANGULAR]: metres, and radians for the angle.
 void parseDeflection(const std::string& text, exporting::ExportOptions& options) {
   const std::vector<std::string> parts = exporting::splitAtCommas(text);
   if (parts.empty() || parts.size() > 2)
     throw Error(ErrorCode::InvalidArgument, "--deflection: expected LINEAR or LINEAR,ANGULAR, got '" + text + "'");
-  options.linearDeflection = positiveNumber(parts[0], "--deflection");
-  if (parts.size() == 2) options.angularDeflection = positiveNumber(parts[1], "--deflection");
+  options.linearDeflection = exporting::positiveNumber(parts[0], "--deflection");
+  if (parts.size() == 2) options.angularDeflection = exporting::positiveNumber(parts[1], "--deflection");
 }
 
 ExportCommandOptions parseExportOptions(const Arguments& arguments) {
@@ -93,15 +81,8 @@ ExportCommandOptions parseExportOptions(const Arguments& arguments) {
 /// Refuses, before anything is built, outputs of unknown formats, in missing folders, and
 /// existing files (unless --force).
 void checkOutputs(const ExportCommandOptions& options) {
-  for (const std::string& output : options.outputs) {
-    exporting::formatOfPath(output);
-    std::error_code error;
-    const std::filesystem::path folder = std::filesystem::path(output).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
-      throw Error(ErrorCode::WriteFailed, "cannot write: folder " + folder.string() + " does not exist", output);
-    if (!options.force && std::filesystem::exists(output, error))
-      throw Error(ErrorCode::WriteFailed, "exists already; use --force to replace it", output);
-  }
+  for (const std::string& output : options.outputs) exporting::formatOfPath(output);
+  refuseUnwritableOutputs(options.outputs, options.force);
 }
 
 void printProgress(const exporting::ExportProgress& progress) {

@@ -1,6 +1,5 @@
 // `airshape mesh`: meshes for CFD and FEM through Gmsh (docs/meshing.md), in a module of its
 // own (libairshape_mesh_command.so) that only this command loads: it links Gmsh.
-#include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -12,6 +11,7 @@
 #include "airshape/plugin/plugin_host.h"
 #include "commands.h"
 #include "open_configuration.h"
+#include "output_paths.h"
 
 namespace airshape::cli {
 
@@ -50,15 +50,8 @@ MeshCommandOptions parseMeshOptions(Arguments arguments) {
 /// Refuses, before anything is built, outputs of unknown formats, in missing folders, and
 /// existing files (unless --force).
 void checkOutputs(const MeshCommandOptions& options) {
-  for (const std::string& output : options.outputs) {
-    meshing::meshFormatOfPath(output);
-    std::error_code error;
-    const std::filesystem::path folder = std::filesystem::path(output).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
-      throw Error(ErrorCode::WriteFailed, "cannot write: folder " + folder.string() + " does not exist", output);
-    if (!options.force && std::filesystem::exists(output, error))
-      throw Error(ErrorCode::WriteFailed, "exists already; use --force to replace it", output);
-  }
+  for (const std::string& output : options.outputs) meshing::meshFormatOfPath(output);
+  refuseUnwritableOutputs(options.outputs, options.force);
 }
 
 /// Progress on stderr once meshing has taken a second: quick meshes stay quiet.

@@ -6,24 +6,10 @@ namespace airshape::meshing {
 
 namespace {
 
-/// A positive number, the whole text; throws naming `option` otherwise.
-double positive(const std::string& text, const std::string& option) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size() || !(value > 0))
-    throw Error(ErrorCode::InvalidArgument, option + ": '" + text + "' is not a positive number");
-  return value;
-}
-
 /// --size SIZE (every surface) or --size UID=SIZE[,UID=SIZE...] (those components' surfaces).
 void parseSize(const std::string& text, MeshOptions& options) {
   if (text.find('=') == std::string::npos) {
-    options.size = positive(text, "--size");
+    options.size = exporting::positiveNumber(text, "--size");
     return;
   }
   for (const auto& [uid, size] : parseComponentSizes(text)) options.componentSizes[uid] = size;
@@ -47,9 +33,9 @@ bool takeOption(const std::vector<std::string>& arguments, std::size_t& i, MeshO
   } else if (argument == "--size") {
     parseSize(value(), options);
   } else if (argument == "--min-size") {
-    options.minSize = positive(value(), "--min-size");
+    options.minSize = exporting::positiveNumber(value(), "--min-size");
   } else if (argument == "--curvature") {
-    options.elementsPerCircle = positive(value(), "--curvature");
+    options.elementsPerCircle = exporting::positiveNumber(value(), "--curvature");
   } else if (argument == "--farfield") {
     options.farfield = parseFarfield(value());
   } else if (argument == "--symmetry") {
@@ -57,7 +43,7 @@ bool takeOption(const std::vector<std::string>& arguments, std::size_t& i, MeshO
   } else if (argument == "--structure") {
     options.scene.structure = true;
   } else if (argument == "--order") {
-    options.order = static_cast<int>(positive(value(), "--order"));
+    options.order = static_cast<int>(exporting::positiveNumber(value(), "--order"));
   } else {
     return false;
   }
@@ -81,7 +67,8 @@ std::map<std::string, double> parseComponentSizes(const std::string& list) {
     const std::size_t equals = item.find('=');
     if (equals == std::string::npos || equals == 0)
       throw Error(ErrorCode::InvalidArgument, "--size: expected SIZE or UID=SIZE, got '" + item + "'");
-    sizes[item.substr(0, equals)] = positive(item.substr(equals + 1), "--size " + item.substr(0, equals));
+    sizes[item.substr(0, equals)] =
+        exporting::positiveNumber(item.substr(equals + 1), "--size " + item.substr(0, equals));
   }
   return sizes;
 }
@@ -99,9 +86,9 @@ Farfield parseFarfield(const std::string& text) {
     distance = text.substr(colon + 1);
   }
   if (!distance.empty() && (distance.back() == 'L' || distance.back() == 'l')) {
-    farfield.lengths = positive(distance.substr(0, distance.size() - 1), "--farfield");
+    farfield.lengths = exporting::positiveNumber(distance.substr(0, distance.size() - 1), "--farfield");
   } else {
-    farfield.metres = positive(distance, "--farfield");
+    farfield.metres = exporting::positiveNumber(distance, "--farfield");
   }
   return farfield;
 }

@@ -4,6 +4,19 @@
 
 namespace airshape::exporting {
 
+double positiveNumber(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size() || !(value > 0))
+    throw Error(ErrorCode::InvalidArgument, option + ": '" + text + "' is not a positive number");
+  return value;
+}
+
 std::vector<Pose> parsePoses(const std::string& list) {
   std::vector<Pose> poses;
   for (const std::string& item : splitAtCommas(list)) {

@@ -71,6 +71,10 @@ inline std::vector<std::string> splitAtCommas(const std::string& list) {
   return items;
 }
 
+/// A command-line value that must be a positive number, the whole text (`option` names it in
+/// the Error(InvalidArgument) thrown otherwise).
+double positiveNumber(const std::string& text, const std::string& option);
+
 /// Poses written as "UID=P,UID=P,..." where P is a number, "min" or "max" and UID may be
 /// "all" (then P is min or max). Throws Error(InvalidArgument) on anything else.
 std::vector<Pose> parsePoses(const std::string& list);
