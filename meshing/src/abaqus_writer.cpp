@@ -26,6 +26,7 @@ const AbaqusType& abaqusType(int gmshType) {
       {9, {"S6", {0, 1, 2, 3, 4, 5}}},
       {16, {"S8", {0, 1, 2, 3, 4, 5, 6, 7}}},
       {4, {"C3D4", {0, 1, 2, 3}}},
+      {6, {"C3D6", {0, 1, 2, 3, 4, 5}}},
       {11, {"C3D10", {0, 1, 2, 3, 4, 5, 6, 7, 9, 8}}},  // edges (1,3) and (2,3) swap places
   };
   const auto found = types.find(gmshType);

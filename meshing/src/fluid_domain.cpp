@@ -14,8 +14,11 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <gmsh.h>
+
 #include "airshape/error.h"
 #include "airshape/fused_shape.h"
+#include "gmsh_session.h"
 #include "labelled_shape.h"
 
 namespace airshape::meshing {
@@ -84,6 +87,16 @@ NamedShape fluidDomain(const NamedShape& aircraft, const Farfield& farfield, boo
   const double distance = farfieldDistance(farfield, aircraftLength(aircraft.shape));
   const NamedShape boundary = labelledBoundary(farfieldSolid(box, farfield, symmetry, distance), symmetry);
   return cutNamedShape(boundary, aircraft);
+}
+
+void generateTetrahedra() {
+  callGmsh("meshing the fluid", [] {
+    gmsh::option::setNumber("General.AbortOnError", 2);
+    // Delaunay: Gmsh 4.8's parallel HXT is many times slower with a size field, and fails on
+    // large domains (docs/performance.md).
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1);
+    gmsh::model::mesh::generate(3);
+  });
 }
 
 }  // namespace airshape::meshing

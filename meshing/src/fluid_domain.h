@@ -17,4 +17,7 @@ NamedShape fluidDomain(const NamedShape& aircraft, const Farfield& farfield, boo
 /// How far the far field lies from the aircraft's box, metres.
 double farfieldDistance(const Farfield& farfield, double length);
 
+/// Fills the volumes of Gmsh's current model with tetrahedra, their surfaces meshed.
+void generateTetrahedra();
+
 }  // namespace airshape::meshing

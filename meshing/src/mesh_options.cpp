@@ -38,6 +38,8 @@ bool takeOption(const std::vector<std::string>& arguments, std::size_t& i, MeshO
     options.elementsPerCircle = exporting::positiveNumber(value(), "--curvature");
   } else if (argument == "--farfield") {
     options.farfield = parseFarfield(value());
+  } else if (argument == "--boundary-layer") {
+    options.boundaryLayer = parseBoundaryLayer(value());
   } else if (argument == "--symmetry") {
     options.symmetry = true;
   } else if (argument == "--structure") {
@@ -59,6 +61,29 @@ MeshOptions takeMeshOptions(std::vector<std::string>& arguments) {
     if (!takeOption(arguments, i, options)) rest.push_back(arguments[i]);
   arguments = rest;
   return options;
+}
+
+double BoundaryLayer::thickness() const {
+  double height = firstHeight, sum = 0;
+  for (int layer = 0; layer < count; ++layer, height *= growth) sum += height;
+  return sum;
+}
+
+BoundaryLayer parseBoundaryLayer(const std::string& text) {
+  const std::vector<std::string> parts = exporting::splitAtCommas(text);
+  if (parts.size() != 2 && parts.size() != 3)
+    throw Error(ErrorCode::InvalidArgument,
+                "--boundary-layer: expected COUNT,FIRST_HEIGHT[,GROWTH], got '" + text + "'");
+  BoundaryLayer layer;
+  const double count = exporting::positiveNumber(parts[0], "--boundary-layer COUNT");
+  if (count != static_cast<int>(count) || count > 100)
+    throw Error(ErrorCode::InvalidArgument, "--boundary-layer: COUNT is a whole number up to 100, not " + parts[0]);
+  layer.count = static_cast<int>(count);
+  layer.firstHeight = exporting::positiveNumber(parts[1], "--boundary-layer FIRST_HEIGHT");
+  if (parts.size() == 3) layer.growth = exporting::positiveNumber(parts[2], "--boundary-layer GROWTH");
+  if (layer.growth < 1)
+    throw Error(ErrorCode::InvalidArgument, "--boundary-layer: GROWTH is at least 1, not " + parts[2]);
+  return layer;
 }
 
 std::map<std::string, double> parseComponentSizes(const std::string& list) {

@@ -21,6 +21,7 @@ std::string pluralOfType(const std::string& gmshName) {
       {"Quadrilateral 4", "quadrilaterals"},
       {"Quadrilateral 8", "quadrilaterals (8 nodes)"},
       {"Tetrahedron 4", "tetrahedra"},
+      {"Prism 6", "prisms"},
       {"Tetrahedron 10", "tetrahedra (10 nodes)"}};
   for (const auto& [gmsh, plural] : names)
     if (gmsh == gmshName) return plural;

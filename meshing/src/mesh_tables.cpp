@@ -66,6 +66,7 @@ MeshTables meshTablesFromGmsh() {
     gmsh::model::mesh::getNodes(nodeTags, tables.coordinates, parametric, -1, -1, false, false);
     std::unordered_map<std::size_t, std::size_t> indexOfTag;
     for (std::size_t index = 0; index < nodeTags.size(); ++index) indexOfTag[nodeTags[index]] = index;
+    tables.gmshTags = nodeTags;
     tables.entities = entitiesInGroups(tables.groups);
     for (std::size_t entity = 0; entity < tables.entities.size(); ++entity) {
       std::vector<int> types;

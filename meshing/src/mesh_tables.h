@@ -32,7 +32,8 @@ struct MeshGroup {
 /// A mesh as plain tables, for the writers: nodes numbered from 0, elements by type, the
 /// entities they lie on and the physical groups those are in.
 struct MeshTables {
-  std::vector<double> coordinates;  ///< x, y, z of each node
+  std::vector<double> coordinates;    ///< x, y, z of each node
+  std::vector<std::size_t> gmshTags;  ///< each node's tag in Gmsh's model, when the tables were read from it
   std::vector<ElementBlock> blocks;
   std::vector<MeshEntity> entities;
   std::vector<MeshGroup> groups;

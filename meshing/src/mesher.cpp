@@ -17,6 +17,7 @@
 #include "gmsh_model.h"
 #include "gmsh_session.h"
 #include "labelled_shape.h"
+#include "layered_fluid.h"
 #include "mesh_summary.h"
 #include "mesh_tables.h"
 #include "mesh_writers.h"
@@ -183,23 +184,13 @@ void askForShells(int order) {
   });
 }
 
-void meshFluid() {
-  callGmsh("meshing the fluid", [] {
-    gmsh::option::setNumber("General.AbortOnError", 2);
-    // Delaunay: Gmsh 4.8's parallel HXT is many times slower with a size field, and fails on
-    // large domains (docs/performance.md).
-    gmsh::option::setNumber("Mesh.Algorithm3D", 1);
-    gmsh::model::mesh::generate(3);
-  });
-}
-
 }  // namespace
 
 MeshReport meshConfiguration(const Configuration& configuration, const std::vector<std::string>& outputs,
                              const MeshOptions& given) {
   const Progress progress{given, Clock::now()};
   MeshOptions options = given;
-  if (options.symmetry && !options.farfield) options.farfield = Farfield{};
+  if ((options.symmetry || options.boundaryLayer) && !options.farfield) options.farfield = Farfield{};
   if (options.scene.structure && options.farfield)
     throw Error(ErrorCode::InvalidArgument, "--structure meshes the structure as shells; it takes no --farfield");
   if (options.order != 1 && options.order != 2)
@@ -233,16 +224,21 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
   progress("meshing the surfaces");
   const auto failedSurfaces = meshSurfaces(toMesh.labels, imported);
   for (const auto& [uid, why] : failedSurfaces) report.failures.push_back(failureOf(configuration, uid, why));
-  if (options.farfield && failedSurfaces.empty()) {
+  const bool layered = options.boundaryLayer && failedSurfaces.empty();
+  if (options.farfield && failedSurfaces.empty() && !layered) {
     progress("meshing the fluid");
-    meshFluid();
-  } else if (options.farfield) {
+    generateTetrahedra();
+  } else if (options.farfield && !failedSurfaces.empty()) {
     report.failures.push_back("fluid: not meshed, its boundary has surfaces without elements");
   }
   progress("reading the mesh");
   MeshTables tables = meshTablesFromGmsh();
   progress("turning the elements outwards");
   orientLikeFaces(tables, toMesh.shape.shape, imported);
+  if (layered) {
+    progress("growing the boundary layer and meshing the fluid");
+    tables = layeredFluid(tables, *options.boundaryLayer, sizes, report.notes);
+  }
   progress("measuring the quality");
   MeshSummary summary = summaryOfGmshMesh(toMesh.name, tables);
   for (std::size_t index = 0; index < outputs.size(); ++index) {

@@ -163,4 +163,16 @@ void setSizeFields(const TopoDS_Shape& shape, const std::vector<FaceLabel>& labe
   });
 }
 
+void setFluidSizes(const std::string& list, const std::vector<double>& tags, const Sizes& sizes) {
+  callGmsh("setting the fluid's element sizes", [&] {
+    gmsh::option::setNumber("Mesh.MeshSizeMin", sizes.minimum);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", sizes.farfield);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::model::mesh::field::setAsBackgroundMesh(
+        sizeNear(list, tags, sizes.surface, 0, sizes.farfield, sizes.reach, 12));
+  });
+}
+
 }  // namespace airshape::meshing

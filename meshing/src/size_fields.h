@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <TopoDS_Shape.hxx>
@@ -29,5 +30,10 @@ Sizes sizesFor(const MeshOptions& options, double length, double farfieldDistanc
 /// from the surface size at the aircraft to the far-field size at the boundary.
 void setSizeFields(const TopoDS_Shape& shape, const std::vector<FaceLabel>& labels, const ImportedShape& imported,
                    const MeshOptions& options, const Sizes& sizes);
+
+/// Tells Gmsh the sizes of a fluid alone, in a model of its own: growing from the surface size
+/// at the given entities (`list`: "FacesList" or "EdgesList") to the far-field size, nothing
+/// taken from the meshes of the fluid's boundary.
+void setFluidSizes(const std::string& list, const std::vector<double>& tags, const Sizes& sizes);
 
 }  // namespace airshape::meshing

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "airshape/error.h"
+#include "vtu_writer.h"
 
 namespace airshape::meshing {
 
@@ -31,7 +32,8 @@ std::string markerName(std::string name) {
 void writeElement(std::ofstream& out, const ElementBlock& block, std::size_t element) {
   out << su2Type(block.gmshType);
   const std::size_t perElement = static_cast<std::size_t>(block.nodesPerElement);
-  for (std::size_t node = 0; node < perElement; ++node) out << ' ' << block.nodes[element * perElement + node];
+  for (std::size_t node = 0; node < perElement; ++node)
+    out << ' ' << block.nodes[element * perElement + vtkNodePlace(block.gmshType, node)];
 }
 
 }  // namespace

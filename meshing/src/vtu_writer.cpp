@@ -9,7 +9,7 @@ namespace airshape::meshing {
 
 namespace {
 
-/// VTK's cell type of a Gmsh element type (VTK's and Gmsh's node orders agree for these).
+/// VTK's cell type of a Gmsh element type (node orders: vtkNodePlace).
 int vtkCellType(int gmshType) {
   static const std::map<int, int> types = {{1, 3},  {2, 5},  {3, 9},  {4, 10}, {5, 12}, {6, 13},
                                            {7, 14}, {8, 21}, {9, 22}, {15, 1}, {16, 23}};
@@ -39,6 +39,11 @@ std::string escaped(const std::string& text) {
 
 }  // namespace
 
+std::size_t vtkNodePlace(int gmshType, std::size_t place) {
+  static const std::size_t prism[6] = {0, 2, 1, 3, 5, 4};
+  return gmshType == 6 ? prism[place] : place;
+}
+
 void writeVtu(const MeshTables& mesh, const std::string& path) {
   std::ofstream out(path);
   out.precision(17);
@@ -55,8 +60,10 @@ void writeVtu(const MeshTables& mesh, const std::string& path) {
     out << mesh.coordinates[i] << ' ' << mesh.coordinates[i + 1] << ' ' << mesh.coordinates[i + 2] << '\n';
   out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const ElementBlock& block : mesh.blocks)
-    for (std::size_t i = 0; i < block.nodes.size(); ++i)
-      out << block.nodes[i] << ((i + 1) % static_cast<std::size_t>(block.nodesPerElement) == 0 ? '\n' : ' ');
+    for (std::size_t i = 0; i < block.nodes.size(); ++i) {
+      const std::size_t per = static_cast<std::size_t>(block.nodesPerElement), first = i - i % per;
+      out << block.nodes[first + vtkNodePlace(block.gmshType, i % per)] << ((i + 1) % per == 0 ? '\n' : ' ');
+    }
   out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
   std::size_t offset = 0;
   for (const ElementBlock& block : mesh.blocks)

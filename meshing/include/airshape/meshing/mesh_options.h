@@ -20,6 +20,15 @@ struct Farfield {
   std::optional<double> metres;
 };
 
+/// Prisms grown from the aircraft's walls into the fluid of a CFD domain, layer on layer, under
+/// the tetrahedra (`airshape mesh --boundary-layer COUNT,FIRST[,GROWTH]`).
+struct BoundaryLayer {
+  int count = 0;             ///< layers of prisms
+  double firstHeight = 0;    ///< the height of the layer on the wall, metres
+  double growth = 1.2;       ///< each layer's height over the one below it
+  double thickness() const;  ///< the heights of all layers together
+};
+
 /// How far a mesh has come, reported while it is built.
 struct MeshProgress {
   double seconds = 0;  ///< since meshing started
@@ -44,6 +53,8 @@ struct MeshOptions {
   std::optional<Farfield> farfield;
   /// The half domain y >= 0 with a symmetry plane (a half model); implies a far field.
   bool symmetry = false;
+  /// Prism layers on the aircraft's walls under the fluid's tetrahedra; implies a far field.
+  std::optional<BoundaryLayer> boundaryLayer;
   /// Shell elements with 4 nodes (S3/S4) or with mid-side nodes (S6/S8) in FEM meshes.
   int order = 1;
   /// Called as work goes on; may be empty.
@@ -54,6 +65,11 @@ struct MeshOptions {
 /// `airshape help mesh`) and leaves the rest in order; the command line, the C API and the
 /// Python binding all describe a mesh so. Throws Error(InvalidArgument) on a malformed value.
 MeshOptions takeMeshOptions(std::vector<std::string>& arguments);
+
+/// "COUNT,FIRST[,GROWTH]": a whole number of layers, the first one's height in metres, the
+/// growth from layer to layer (1.2 when left out; at least 1). Throws Error(InvalidArgument)
+/// on anything else.
+BoundaryLayer parseBoundaryLayer(const std::string& text);
 
 /// "uID=SIZE" pairs separated by commas, sizes positive numbers in metres. Throws
 /// Error(InvalidArgument) on anything else.
