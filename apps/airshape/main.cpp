@@ -88,8 +88,8 @@ const std::map<std::string, Command>& commands() {
        {runMeshModule,
         "airshape mesh FILE -o OUT [-o OUT ...] [--components UID,...] [--mirror] [--deflect UID=P,...]\n"
         "                 [--size SIZE] [--size UID=SIZE,...] [--min-size SIZE] [--curvature N]\n"
-        "                 [--farfield [box:|sphere:]D[L]] [--symmetry] [--structure [--order 2]]\n"
-        "                 [--duct-cutouts] [--force] [--quiet]",
+        "                 [--farfield [box:|sphere:]D[L]] [--symmetry] [--boundary-layer N,H[,G]]\n"
+        "                 [--structure [--order 2]] [--duct-cutouts] [--force] [--quiet]",
         "Meshes the aircraft through Gmsh (docs/meshing.md) and writes the mesh in the format each\n"
         "OUT's extension names: .msh (Gmsh 4.1, ASCII: OpenFOAM's gmshToFoam reads it), .su2,\n"
         ".vtu, .inp (Abaqus/CalculiX), .stl. Without --farfield: the surface of the fused\n"
@@ -105,6 +105,9 @@ const std::map<std::string, Command>& commands() {
         "               farfield, symmetry, each component's uID, and the volume fluid\n"
         "--symmetry     the half domain y >= 0 with a symmetry plane (a half model; far field\n"
         "               20L unless given)\n"
+        "--boundary-layer  N layers of prisms on the aircraft's walls under the tetrahedra, the\n"
+        "               first H metres high, each G times the one below (default 1.2); thinner\n"
+        "               where the walls' elements are short or fold sharply (said in a note)\n"
         "--structure    the structural model (as export --structure) in quadrilateral shells for\n"
         "               FEM: an element set and a node set per structural model and per spar,\n"
         "               rib set and skin segment uID; .inp writes S4 (with --order 2: S8)\n"

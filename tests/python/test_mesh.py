@@ -39,3 +39,15 @@ def test_bad_options_raise(config, tmp_path):
     with pytest.raises(airshape.ArgumentError):
         config.mesh(tmp_path / "a.msh", farfield="cube:3L")
     assert not os.listdir(tmp_path)
+
+
+def test_boundary_layer_from_python(config, tmp_path):
+    path = tmp_path / "htp.vtu"
+    report = config.mesh(path, components=["HTP"], size=0.5, farfield="sphere:1L", boundary_layer=(2, 0.001, 1.5))
+    elements = report["meshes"][0]["elements"]
+    mesh = meshio.read(str(path))
+    walls = sum(int((group == mesh.field_data["group:HTP"][0]).sum())
+                for block, group in zip(mesh.cells, mesh.cell_data["group"]) if block.type == "triangle")
+    assert walls > 0 and elements["prisms"] == 2 * walls
+    with pytest.raises(airshape.ArgumentError):
+        config.mesh(tmp_path / "b.msh", farfield="1L", boundary_layer=(2.5, 0.001))

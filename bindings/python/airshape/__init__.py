@@ -632,11 +632,13 @@ class Configuration:
              deflect: Optional[Dict[str, Union[float, str]]] = None, size: Optional[float] = None,
              sizes: Optional[Dict[str, float]] = None, min_size: Optional[float] = None,
              curvature: Optional[float] = None, farfield: Optional[str] = None, symmetry: bool = False,
-             structure: bool = False, order: int = 1) -> Dict[str, Any]:
+             boundary_layer: Optional[Sequence[float]] = None, structure: bool = False,
+             order: int = 1) -> Dict[str, Any]:
         """Meshes through Gmsh and writes the mesh in the format the extension names (.msh, .su2,
         .vtu, .inp, .stl; docs/meshing.md). `size`/`min_size` in metres, `sizes` per component
         uID, `curvature` elements per turn, `farfield` "20L" or "sphere:100" for a CFD domain,
-        `symmetry` for the half domain y >= 0, `structure` for the FEM shell model (`order` 2:
+        `symmetry` for the half domain y >= 0, `boundary_layer` (count, first height[, growth])
+        for prism layers on the walls under the tetrahedra, `structure` for the FEM shell model (`order` 2:
         8-node shells). Returns the report: {"meshes": [{"name", "nodes", "elements",
         "worst_quality", "seconds"}], "failures": [...], "notes": [...]}."""
         arguments: List[str] = []
@@ -658,6 +660,8 @@ class Configuration:
             arguments += ["--farfield", farfield]
         if symmetry:
             arguments.append("--symmetry")
+        if boundary_layer is not None:
+            arguments += ["--boundary-layer", ",".join(repr(v) for v in boundary_layer)]
         if structure:
             arguments.append("--structure")
         if order != 1:
