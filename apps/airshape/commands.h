@@ -26,6 +26,8 @@ int runBuild(const Arguments& arguments, plugin::PluginHost& host);
 int runExport(const Arguments& arguments, plugin::PluginHost& host);
 int runView(const Arguments& arguments, plugin::PluginHost& host);
 int runMesh(const Arguments& arguments, plugin::PluginHost& host);
+/// Runs the Python package's study engine (study_command.cpp).
+int runStudy(const Arguments& arguments, plugin::PluginHost& host);
 /// Load the module of `export` and `view`, or of `mesh`, and run the command there
 /// (command_modules.cpp).
 int runExportModule(const Arguments& arguments, plugin::PluginHost& host);

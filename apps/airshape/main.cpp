@@ -115,6 +115,17 @@ const std::map<std::string, Command>& commands() {
         "Prints one summary line per mesh on stdout: nodes, elements by type, the worst\n"
         "element quality (Gmsh's inverse condition number), time. A component that cannot be\n"
         "built or meshed is said on stderr with its CPACS path, the rest meshed: exit status 1."}},
+      {"study",
+       {runStudy,
+        "airshape study STUDY.toml -o RESULTS.csv|.jsonl [--workers N] [--scheduler tcp://HOST:PORT]\n"
+        "                 [--restart] [--quiet]",
+        "Runs a design study (docs/studies.md): the parameters, design of experiments and outputs\n"
+        "a TOML file names, a row per sample in RESULTS (parameter values, outputs, seconds, and\n"
+        "for a failed sample its error and CPACS path). Samples run in local worker processes\n"
+        "(one per core unless --workers), or on the Dask cluster of --scheduler. Samples that\n"
+        "RESULTS holds already are not run again (--restart: start anew); Ctrl-C stops and keeps\n"
+        "what is done. A [plot] of the study is written beside RESULTS as .png. Exit status: 0\n"
+        "all samples done, 1 some failed, 2 the study cannot be run, 130 interrupted."}},
       {"gordon",
        {runGordon, "airshape gordon PROFILES.brep GUIDES.brep -o SURFACE.brep [--report]",
         "Interpolates a curve network (two BREP compounds of edges) by one Gordon B-spline\n"
@@ -188,7 +199,7 @@ int run(int argc, char** argv) {
   // Loading the plugins links OCCT's toolkits they use (tens of milliseconds): only for the
   // commands that read CPACS files or list plugins, which meanwhile read their file.
   std::optional<xml::ReadAhead> readAhead;  // waits for its thread on the way out, however left
-  if (word != "gordon") {
+  if (word != "gordon" && word != "study") {
     std::error_code unreadable;  // the command itself says what is wrong with its file
     if (!arguments.empty() && std::filesystem::is_regular_file(arguments[0], unreadable))
       readAhead.emplace(arguments[0]);

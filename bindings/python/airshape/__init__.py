@@ -24,7 +24,7 @@ from .errors import (ArgumentError, Error, FileError, ModelError, NotBuiltYetErr
                      WriteError)
 
 __all__ = ["Configuration", "Wing", "Fuselage", "ControlSurface", "Component", "ComponentSegment", "Rotor", "Node", "NodeList", "Error", "FileError", "ModelError",
-           "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError"]
+           "ArgumentError", "WriteError", "PluginError", "NotBuiltYetError", "Study", "sensitivities"]
 
 Number = Union[int, float]
 
@@ -707,3 +707,7 @@ class Configuration:
 
     def __repr__(self) -> str:
         return f"Configuration({self.source!r})"
+
+
+# Design studies (docs/studies.md), after Configuration: they open configurations.
+from .study import Study, sensitivities  # noqa: E402

@@ -1,0 +1,162 @@
+"""One sample evaluated where it runs (a local worker process or a Dask worker): the CPACS
+document is opened once per process and kept; each sample sets every parameter's value in it
+(only what depends on the edits is rebuilt) and measures the outputs."""
+from __future__ import annotations
+
+import dataclasses
+import re
+import time
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from .. import Configuration
+from ..errors import Error
+
+# The documents this process has opened, by study key (a worker keeps its configuration).
+_OPEN: Dict[str, Configuration] = {}
+_TOKEN = re.compile(r"""\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|\[\s*(?P<index>-?\d+)\s*\]|"""
+                    r"""\[\s*(?P<quote>["'])(?P<key>[^"']*)(?P=quote)\s*\]|(?P<dot>\.))""")
+
+
+def xpath_of_path(config: Configuration, path: str) -> str:
+    """The XPath of an element path from the configuration: `wings["Wing"].positionings[2].length`
+    (attribute names and indices as Python reaches elements, docs/python.md)."""
+    target: Any = config
+    position = 0
+    while position < len(path):
+        match = _TOKEN.match(path, position)
+        if not match:
+            raise ValueError(f"path '{path}': cannot read it at '{path[position:]}'")
+        position = match.end()
+        if match.group("name"):
+            target = getattr(target, match.group("name"))
+        elif match.group("index") is not None:
+            target = target[int(match.group("index"))]
+        elif match.group("quote"):
+            target = target[match.group("key")]
+    xpath = getattr(target, "xpath", None)
+    if not isinstance(xpath, str):
+        raise ValueError(f"path '{path}' leads to no element of the document")
+    return xpath
+
+
+@dataclasses.dataclass
+class Plan:
+    """What a worker needs for any sample of a study, small enough to send: the document's
+    text, where each parameter goes, the outputs and exports."""
+
+    key: str
+    file: str
+    document: str
+    setters: List[Tuple[str, str]]  # (parameter name, XPath)
+    outputs: List[Dict[str, Any]]
+    exports: List[Dict[str, Any]]
+
+
+def plan_of(study: Any) -> Plan:
+    """The plan of a study, its element paths turned into XPaths on the document (which is
+    opened here once, so that a file that cannot be read fails before any worker starts)."""
+    config = Configuration.open(study.file)
+    setters = []
+    for parameter in study.parameters:
+        if parameter.path:
+            try:
+                setters.append((parameter.name, xpath_of_path(config, parameter.path)))
+            except (ValueError, AttributeError, IndexError, KeyError, Error) as error:
+                raise ValueError(f"{study.name}: parameter {parameter.name}: {error}") from None
+        elif parameter.xpath:
+            setters.append((parameter.name, parameter.xpath))
+    with open(study.file, encoding="utf-8") as file:
+        document = file.read()
+    return Plan(study.key(), study.file, document, setters, [dataclasses.asdict(o) for o in study.outputs],
+                [dataclasses.asdict(e) for e in study.exports])
+
+
+def configuration_of(plan: Plan) -> Configuration:
+    """The process's configuration of the plan's document, opened on first use."""
+    if plan.key not in _OPEN:
+        _OPEN.clear()  # one study at a time per process
+        _OPEN[plan.key] = Configuration.from_string(plan.document, plan.file)
+    return _OPEN[plan.key]
+
+
+def _sequence(value: Any) -> Any:
+    if isinstance(value, dict) and "linspace" in value:
+        start, stop, count = value["linspace"]
+        return np.linspace(float(start), float(stop), int(count))
+    return value
+
+
+def _component(config: Configuration, uid: str) -> Any:
+    for collection in (config.wings, config.fuselages, config.rotors):
+        try:
+            return collection[uid]
+        except (KeyError, IndexError, Error):
+            continue
+    return config.component(uid)
+
+
+def _plain(value: Any) -> Any:
+    """A value as JSON holds it: arrays as lists, NumPy numbers as Python's."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, (list, tuple)):
+        return [_plain(item) for item in value]
+    if isinstance(value, dict):
+        return {key: _plain(item) for key, item in value.items()}
+    return value
+
+
+def output_value(config: Configuration, output: Dict[str, Any]) -> Any:
+    """One output's value on the configuration as it is (its `key`'s item, when it has one)."""
+    value = _whole_output(config, output)
+    return value if output.get("key") is None else value[output["key"]]
+
+
+def _whole_output(config: Configuration, output: Dict[str, Any]) -> Any:
+    if output["op"] is not None:
+        return _plain(config.query(output["op"], **output["args"]))
+    if output["measure"] is not None:
+        uid, _, attribute = output["measure"].rpartition(".")
+        value = getattr(_component(config, uid), attribute)
+        return _plain(value() if callable(value) else value)
+    points = output["points"]
+    wing = config.wings[points["wing"]]
+    return _plain(wing.points(points.get("side", "upper"), points.get("segment", 1),
+                              eta=_sequence(points["eta"]), xsi=_sequence(points["xsi"])))
+
+
+def apply(config: Configuration, plan: Plan, values: Dict[str, float]) -> None:
+    """Sets every parameter that has a place in the document to its value."""
+    for name, xpath in plan.setters:
+        config.set(xpath, values[name])
+
+
+def evaluate(plan: Plan, sample_id: int, values: Dict[str, float]) -> Dict[str, Any]:
+    """The sample's row: its id, the parameters' values, every output, the exports written,
+    the time it took; on failure the error's line and CPACS path, outputs left empty."""
+    start = time.perf_counter()
+    row: Dict[str, Any] = {"id": sample_id, **values}
+    outputs: Dict[str, Any] = {output["name"]: None for output in plan.outputs}
+    error: Optional[str] = None
+    cpacs_path: Optional[str] = None
+    try:
+        config = configuration_of(plan)
+        apply(config, plan, values)
+        for output in plan.outputs:
+            outputs[output["name"]] = output_value(config, output)
+        for export in plan.exports:
+            config.export(export["path"].format(id=sample_id), **export["options"])
+    except Error as failure:
+        outputs = dict.fromkeys(outputs)
+        error, cpacs_path = str(failure).splitlines()[0] if str(failure) else type(failure).__name__, \
+            failure.cpacs_path or None
+    except Exception as failure:  # noqa: BLE001 - a sample's failure is its row's, never the study's
+        outputs = dict.fromkeys(outputs)
+        error = f"{type(failure).__name__}: {failure}".splitlines()[0]
+    row.update(outputs)
+    row.update(seconds=time.perf_counter() - start, error=error, cpacs_path=cpacs_path)
+    return row
