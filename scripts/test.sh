@@ -2,7 +2,8 @@
 # Every test: installs what is missing (the build's packages, the independent readers the
 # export tests reopen files with: gmsh, VTK, admesh from Debian, gltf-validator from npm, and
 # headless Chromium with Pillow and websocket-client for the viewer's tests, mypy for the Python
-# binding's types, meshio, OpenFOAM and CalculiX for the meshes' tests),
+# binding's types, meshio, OpenFOAM and CalculiX for the meshes' tests, Dask distributed and
+# matplotlib for the design studies' tests),
 # builds, and runs the unit, CLI, round-trip, codegen, plugin, export and conformance tests
 # with ctest. Tests that need ../shared skip when it is absent.
 set -euo pipefail
@@ -10,7 +11,7 @@ cd "$(dirname "$0")/.."
 scripts/build.sh
 
 readers=(python3-gmsh python3-vtk9 admesh chromium python3-pil python3-websocket mypy python3-meshio openfoam
-         calculix-ccx)
+         calculix-ccx python3-distributed python3-matplotlib)
 missing=()
 for package in "${readers[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

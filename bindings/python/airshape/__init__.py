@@ -109,6 +109,11 @@ class NodeList(Sequence[Node]):
     def __len__(self) -> int:
         return self._config._core.count(self._xpath)
 
+    def __iter__(self) -> Iterator[Node]:
+        # Explicit: Sequence's own iteration stops at IndexError, and indices out of range
+        # raise ArgumentError here.
+        return (self[index] for index in range(len(self)))
+
     def __getitem__(self, index):  # type: ignore[override]
         if isinstance(index, slice):
             return [self[i] for i in range(*index.indices(len(self)))]

@@ -25,7 +25,7 @@ class Parameter:
     """One parameter: where its value goes (`xpath`, or `path`: an element path from the
     configuration such as `wings["Wing"].positionings[2].length`; neither for a design variable
     that others relate to) and the values it takes: `values`, a `range` (with `steps` for a
-    grid), or a `relation` to other parameters ("2 * span")."""
+    grid; 5 when not given), or a `relation` to other parameters ("2 * span")."""
 
     name: str
     xpath: Optional[str] = None
@@ -69,6 +69,8 @@ class Sample:
     values: Dict[str, float]
 
 
+# Values of a range in a grid when its steps are not given.
+DEFAULT_STEPS = 5
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _DESIGNS = ("grid", "latin_hypercube", "table")
 _RESERVED = {"id", "seconds", "error", "cpacs_path"}
@@ -150,8 +152,7 @@ class Study:
                 raise self._fail(f"parameter {parameter.name}: give one of values, range, relation")
             if parameter.xpath and parameter.path:
                 raise self._fail(f"parameter {parameter.name}: give xpath or path, not both")
-        relations = self._relations()
-        evaluation_order(relations, {p.name for p in self.free_parameters})
+        self._evaluation_order()
         for export in self.exports:
             if "{id}" not in export.path:
                 raise self._fail(f"export {export.path}: the path must hold {{id}}, or every sample overwrites it")
@@ -160,6 +161,12 @@ class Study:
             if None in wanted or not set(wanted) <= set(names):
                 raise self._fail("plot: x and y must name parameters and outputs")
         self.samples()  # the design itself can fail (a missing range, a bad table)
+
+    def _evaluation_order(self) -> List[str]:
+        try:
+            return evaluation_order(self._relations(), {p.name for p in self.free_parameters})
+        except ValueError as error:
+            raise self._fail(str(error)) from None
 
     def _relations(self) -> Dict[str, Relation]:
         try:
@@ -193,7 +200,7 @@ class Study:
         except (ValueError, OSError) as error:
             raise self._fail(str(error)) from None
         relations = self._relations()
-        order = evaluation_order(relations, {p.name for p in free})
+        order = self._evaluation_order()
         samples = []
         for index, point in enumerate(points):
             values = dict(point)
@@ -205,10 +212,11 @@ class Study:
     def _grid_values(self, parameter: Parameter) -> List[float]:
         if parameter.values is not None:
             return [float(value) for value in parameter.values]
-        if parameter.range is None or not parameter.steps or parameter.steps < 1:
-            raise ValueError(f"parameter {parameter.name}: a grid needs values, or a range with steps")
+        if parameter.range is None or (parameter.steps is not None and parameter.steps < 1):
+            raise ValueError(f"parameter {parameter.name}: a grid needs values, or a range (with steps, "
+                             "a positive number)")
         low, high = parameter.range
-        return [float(value) for value in np.linspace(low, high, int(parameter.steps))]
+        return [float(value) for value in np.linspace(low, high, int(parameter.steps or DEFAULT_STEPS))]
 
     def key(self) -> str:
         """What makes the study's samples what they are: the file's bytes, the parameters, the

@@ -11,7 +11,7 @@ from typing import Any, Dict, List, Optional, Tuple
 import numpy as np
 
 from .. import Configuration
-from ..errors import Error
+from ..errors import ArgumentError, Error
 
 # The documents this process has opened, by study key (a worker keeps its configuration).
 _OPEN: Dict[str, Configuration] = {}
@@ -129,9 +129,27 @@ def _whole_output(config: Configuration, output: Dict[str, Any]) -> Any:
                               eta=_sequence(points["eta"]), xsi=_sequence(points["xsi"])))
 
 
+def make_place(config: Configuration, xpath: str) -> None:
+    """Makes the elements an XPath names but the document lacks (a section's translation where
+    it has none: its other coordinates are then 0, as CPACS reads a missing one). Only plain
+    element names can be made; raises ArgumentError otherwise."""
+    steps = xpath.split("/")
+    cut = len(steps) - 1
+    while cut > 1 and config._core.count("/".join(steps[:cut])) == 0:
+        cut -= 1
+    missing = steps[cut:]
+    if any(not re.fullmatch(r"[A-Za-z_][\w.-]*", step) for step in missing):
+        raise ArgumentError(f"XPath {xpath}: no element there, and '{'/'.join(missing)}' names no element to make")
+    config.insert("/".join(steps[:cut]), "".join(f"<{step}>" for step in missing) + "0" +
+                  "".join(f"</{step}>" for step in reversed(missing)))
+
+
 def apply(config: Configuration, plan: Plan, values: Dict[str, float]) -> None:
-    """Sets every parameter that has a place in the document to its value."""
+    """Sets every parameter that has a place in the document to its value (the place made
+    where the document lacks it)."""
     for name, xpath in plan.setters:
+        if config._core.count(xpath) == 0:
+            make_place(config, xpath)
         config.set(xpath, values[name])
 
 

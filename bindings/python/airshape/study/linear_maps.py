@@ -13,6 +13,8 @@ from typing import Any, Dict, Optional
 
 import numpy as np
 
+from ..errors import Error
+
 _TRANSLATION = re.compile(r"^(?P<owner>.+)/transformation/translation/(?P<axis>[xyz])$")
 _POINT_OPS = {"wing_upper_point", "wing_lower_point", "wing_chord_point"}
 
@@ -66,13 +68,21 @@ def exact_derivative(config: Any, output: Dict[str, Any], xpath: str) -> Optiona
     if query is None or match is None:
         return None
     owner, axis = match["owner"], "xyz".index(match["axis"])
-    owner_uid = config.value(owner + "/@uID") if _exists(config, owner + "/@uID") else None
+    try:
+        owner_uid = config.value(owner + "/@uID")
+    except Error:
+        return None  # an element without a uID: none this map knows
     wing = config.wings[query["wing"]]
-    wing_xpath = wing.node.xpath
     unit = np.eye(3)[axis]
     etas = query["eta"]
-    if owner_uid == wing.uid:
+    wing_xpath = wing.node.xpath
+    owning_component = owner.split("/sections/section[", 1)[0]
+    if owning_component != owner and config.value(owning_component + "/@uID") != wing.uid:
+        moved = np.zeros((etas.size, 3))  # another component's section or element: no part of this wing
+    elif owner_uid == wing.uid:
         moved = np.tile(unit, (etas.size, 1))
+    elif owning_component == owner and not _exists(config, wing_xpath + "/parentUID"):
+        moved = np.zeros((etas.size, 3))  # another component, and this wing hangs on none
     else:
         segment = wing.segments[query["segment"] - 1] if isinstance(query["segment"], int) else \
             next(s for s in wing.segments if s.attribute("uID") == query["segment"])

@@ -89,7 +89,7 @@ def dask_rows(plan: Plan, samples: List[Sample], client: Any, scheduler: Optiona
     own = client is None
     if own:
         try:
-            client = Client(scheduler, timeout="30s")
+            client = Client(scheduler, timeout="10s")
         except (OSError, TimeoutError) as error:
             raise StudyError(f"no Dask scheduler answers at {scheduler} ({error})") from None
     futures = []
