@@ -2,6 +2,7 @@
 one parameter, a line for each combination of the other free parameters (matplotlib, Agg)."""
 from __future__ import annotations
 
+import os
 from collections import defaultdict
 from typing import Any, Dict, List
 
@@ -29,7 +30,7 @@ def plot_sweep(study: Any, rows: List[Dict[str, Any]], path: str) -> str:
         axis.grid(True, alpha=0.3)
         if others and 0 < len(lines) <= 12:
             axis.legend(fontsize=7)
-    figure.suptitle(f"{study.name}: {len(rows)} samples", fontsize=9)
+    figure.suptitle(f"{os.path.basename(study.name)}: {len(rows)} samples", fontsize=9)
     figure.tight_layout()
     figure.savefig(path, dpi=110)
     plt.close(figure)
