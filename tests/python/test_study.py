@@ -285,3 +285,36 @@ def test_the_example_study_runs_and_plots(tmp_path):
         by_span.setdefault(float(row["span"]), []).append(float(row["volume"]))
     assert min(by_span[14.0]) > max(by_span[12.0])  # a longer outer panel holds more
     assert (tmp_path / "results.png").stat().st_size > 10000
+
+
+def test_ctrl_c_on_the_command_line_keeps_what_is_done_and_the_same_command_resumes(tmp_path):
+    import signal
+    import time
+    study = tmp_path / "slow.toml"
+    study.write_text(f"""file = "{os.path.join(SOURCE, 'examples', 'generic-airliner.xml')}"
+[[parameter]]
+name = "sweep"
+path = 'wings["Wing"].positionings[1].sweepAngle'
+range = [20.0, 35.0]
+steps = 60
+[[output]]
+name = "wetted"
+op = "wing_wetted_area"
+args = {{ wing = "Wing" }}
+""")
+    command = [os.path.join(BUILD, "bin", "airshape"), "study", str(study), "-o", str(tmp_path / "r.csv"),
+               "--workers", "2"]
+    # As from a terminal: a test runner started in the background may pass SIGINT on ignored.
+    running = subprocess.Popen(command, stderr=subprocess.PIPE, text=True,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    while not (tmp_path / "r.csv").exists() or len((tmp_path / "r.csv").read_text().splitlines()) < 4:
+        time.sleep(0.1)
+    running.send_signal(signal.SIGINT)
+    _, stderr = running.communicate(timeout=120)
+    assert running.returncode == 130 and "study: interrupted: " in stderr, stderr[-500:]
+    kept = len((tmp_path / "r.csv").read_text().splitlines()) - 1
+    assert 3 <= kept < 60
+    resumed = subprocess.run(command + ["--quiet"], capture_output=True, text=True, timeout=300)
+    assert resumed.returncode == 0, resumed.stderr
+    ids = [int(row["id"]) for row in csv.DictReader(open(tmp_path / "r.csv"))]
+    assert ids == list(range(60))
