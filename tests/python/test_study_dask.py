@@ -83,3 +83,20 @@ args = {{ wing = "Rect" }}
 def test_no_scheduler_at_the_address_is_said_in_one_line(tmp_path):
     with pytest.raises(airshape.study.StudyError, match="no Dask scheduler answers"):
         rectangular_study().run(str(tmp_path / "r.csv"), scheduler="tcp://127.0.0.1:9", progress=False)
+
+
+def test_a_study_interrupted_on_the_cluster_resumes_from_its_results(cluster, tmp_path):
+    _, client = cluster
+    path = str(tmp_path / "r.csv")
+    seen = []
+
+    def interrupt_after_two(row):
+        seen.append(row["id"])
+        if len(seen) == 2:
+            raise KeyboardInterrupt
+
+    first = rectangular_study().run(path, client=client, progress=False, on_row=interrupt_after_two)
+    assert first.interrupted and len(first.rows) == 2
+    rerun = []
+    second = rectangular_study().run(path, client=client, progress=False, on_row=lambda row: rerun.append(row["id"]))
+    assert sorted(rerun) == sorted(set(range(6)) - set(seen)) and len(second.rows) == 6
