@@ -10,6 +10,7 @@
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
+#include "triangle_crossings.h"
 
 namespace airshape::meshing {
 
@@ -106,9 +107,31 @@ std::map<std::size_t, gp_Vec> directionsOfNodes(const std::vector<double>& coord
   return sums;
 }
 
+/// Whether the prism's centre lies inside each of its faces' pyramids: each face, cut into
+/// triangles around its centre, faces away from the prism's centre (the test finite-volume
+/// solvers make: OpenFOAM's checkMesh calls its failure "incorrectly oriented" faces).
+bool facesEnclosePrism(const std::vector<double>& coordinates, const std::size_t* n) {
+  // Outward faces of Gmsh's prism: the bottom turned, the top, the three sides.
+  static const std::vector<std::vector<std::size_t>> faces = {
+      {0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}};
+  gp_XYZ centre(0, 0, 0);
+  for (std::size_t corner = 0; corner < 6; ++corner) centre += pointOf(coordinates, n[corner]).XYZ() / 6;
+  for (const std::vector<std::size_t>& face : faces) {
+    gp_XYZ faceCentre(0, 0, 0);
+    for (std::size_t corner : face) faceCentre += pointOf(coordinates, n[corner]).XYZ() / double(face.size());
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const gp_XYZ a = pointOf(coordinates, n[face[i]]).XYZ() - faceCentre;
+      const gp_XYZ b = pointOf(coordinates, n[face[(i + 1) % face.size()]]).XYZ() - faceCentre;
+      if (a.Crossed(b).Dot(faceCentre - centre) <= 0) return false;
+    }
+  }
+  return true;
+}
+
 /// Whether a prism (Gmsh's order: a triangle, then the one above it) is valid: its Jacobian
-/// positive at all six corners.
+/// positive at all six corners, and its faces enclosing its centre.
 bool isValidPrism(const std::vector<double>& coordinates, const std::size_t* n) {
+  if (!facesEnclosePrism(coordinates, n)) return false;
   for (std::size_t corner = 0; corner < 3; ++corner) {
     const std::size_t next = (corner + 1) % 3, previous = (corner + 2) % 3;
     const gp_Vec up(pointOf(coordinates, n[corner]), pointOf(coordinates, n[corner + 3]));
@@ -195,6 +218,32 @@ std::vector<std::array<std::size_t, 6>> prismsOver(const std::size_t* triangle, 
   return prisms;
 }
 
+/// The wall nodes of the prisms that turn inside out.
+std::unordered_set<std::size_t> nodesUnderInvalidPrisms(const std::vector<double>& coordinates, const Triangles& walls,
+                                                        const Columns& columns) {
+  std::unordered_set<std::size_t> nodes;
+  for (std::size_t triangle = 0; triangle < walls.size(); triangle += 3)
+    for (const auto& prism : prismsOver(&walls[triangle], columns))
+      if (!isValidPrism(coordinates, prism.data())) nodes.insert(&walls[triangle], &walls[triangle] + 3);
+  return nodes;
+}
+
+/// The wall nodes under the layer's top triangles that cross another top triangle or a wall.
+std::unordered_set<std::size_t> nodesUnderCrossingTops(const std::vector<double>& coordinates, const Triangles& walls,
+                                                       const Columns& columns) {
+  Triangles wallsAndTops = walls;  // wall triangle k, then its top as triangle k + walls / 3
+  for (std::size_t node : walls) wallsAndTops.push_back(columns.above.at(node).back());
+  std::unordered_set<std::size_t> nodes;
+  const std::size_t wallCount = walls.size() / 3;
+  for (std::size_t triangle : crossingTriangles(coordinates, wallsAndTops))
+    if (triangle >= wallCount)  // walls crossing walls are the surface mesh's own, not the layer's
+      nodes.insert(&walls[3 * (triangle - wallCount)], &walls[3 * (triangle - wallCount)] + 3);
+  return nodes;
+}
+
+/// How often the layer is thinned (halved) where it folds before it is refused.
+constexpr int kThinningRounds = 20;
+
 }  // namespace
 
 PrismLayer growPrismLayer(std::vector<double>& coordinates, const Triangles& walls,
@@ -211,18 +260,18 @@ PrismLayer growPrismLayer(std::vector<double>& coordinates, const Triangles& wal
     // No taller than half the node's shortest edge: a layer as tall as its triangles are wide folds.
     columns.share[node] = std::min(1.0, 0.5 * shortest.at(node) / (direction.Magnitude() * layer.thickness()));
   }
-  // Where prisms turn inside out, the layer is made thinner at their nodes until they do not.
+  // Where prisms turn inside out, or the layer's top crosses itself or a wall (where walls are
+  // concave or close), the layer is made thinner at their nodes until none does.
   std::unordered_set<std::size_t> toPlace;
   for (const auto& [node, column] : columns.above) toPlace.insert(node);
-  for (int round = 0; !toPlace.empty(); ++round) {
+  for (int round = 0;; ++round) {
     for (std::size_t node : toPlace)
       placeColumn(coordinates, columns.above[node], directions.at(node), columns.share[node],
                   symmetryNodes.count(node) != 0, layer);
-    toPlace.clear();
-    for (std::size_t triangle = 0; triangle < walls.size(); triangle += 3)
-      for (const auto& prism : prismsOver(&walls[triangle], columns))
-        if (!isValidPrism(coordinates, prism.data())) toPlace.insert(&walls[triangle], &walls[triangle] + 3);
-    if (!toPlace.empty() && round == 20) refuseFold(coordinates, *toPlace.begin());
+    toPlace = nodesUnderInvalidPrisms(coordinates, walls, columns);
+    if (toPlace.empty()) toPlace = nodesUnderCrossingTops(coordinates, walls, columns);
+    if (toPlace.empty()) break;
+    if (round == kThinningRounds) refuseFold(coordinates, *toPlace.begin());
     for (std::size_t node : toPlace) columns.share[node] /= 2;
   }
   PrismLayer prisms;

@@ -32,8 +32,9 @@ struct PrismLayer {
 /// wall folds sharply, the direction that rises most above them all), far enough that each
 /// layer keeps its height over the triangles around it; `symmetryNodes` move within the plane
 /// y = 0. The layer is thinner than asked at a node where it would be taller than half the
-/// node's shortest edge, and halved again where a prism would turn inside out. Throws Error
-/// naming the place where no direction rises above all triangles, or a prism stays inverted.
+/// node's shortest edge, and halved again where a prism would turn inside out or the layer's
+/// top would cross itself or a wall. Throws Error naming the place where no direction rises
+/// above all triangles, or where halving twenty times does not help.
 PrismLayer growPrismLayer(std::vector<double>& coordinates, const Triangles& walls,
                           const std::unordered_set<std::size_t>& symmetryNodes, const BoundaryLayer& layer);
 

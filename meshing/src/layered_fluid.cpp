@@ -283,7 +283,8 @@ MeshTables layeredFluid(const MeshTables& surface, const BoundaryLayer& layer, c
   if (prisms.thinned > 0)
     notes.push_back("--boundary-layer: thinner than asked at " + std::to_string(prisms.thinned) + " of " +
                     std::to_string(prisms.topOf.size()) +
-                    " wall nodes, where the wall's elements are shorter than twice the layer or it folds sharply");
+                    " wall nodes, where the wall's elements are shorter than twice the layer, it folds sharply, or the "
+                    "layer's top would cross itself or a wall");
   Triangles symmetry;
   std::vector<std::size_t> sides = prisms.sides;
   if (sorted.symmetryEntity) {

@@ -36,9 +36,10 @@ def run(program, case, *arguments):
                           env={**os.environ, "WM_PROJECT_DIR": "/usr/share/openfoam"})
 
 
-def make_case(folder, mesh, patches):
-    """A case in `folder` holding the mesh (converted by gmshToFoam) and the fields; `patches`
-    are the far-field patches (uniform flow along x), the rest slip walls. Returns gmshToFoam's run."""
+def make_case(folder, mesh, patches, keep_orientation=False):
+    """A case in `folder` holding the mesh (converted by gmshToFoam, with -keepOrientation when
+    asked) and the fields; `patches` are the far-field patches (uniform flow along x), the rest
+    slip walls. Returns gmshToFoam's run."""
     os.makedirs(folder / "system")
     os.makedirs(folder / "0")
     (folder / "system" / "controlDict").write_text(HEADER.format(kind="dictionary", name="controlDict") + CONTROL)
@@ -49,7 +50,7 @@ def make_case(folder, mesh, patches):
     (folder / "0" / "U").write_text(field("U", "volVectorField", "[0 1 -1 0 0 0 0]", "(1 0 0)", velocity))
     (folder / "0" / "p").write_text(field("p", "volScalarField", "[0 2 -2 0 0 0 0]", "0", pressure).replace(
         "type slip;", "type zeroGradient;"))
-    return run("gmshToFoam", folder, str(mesh))
+    return run("gmshToFoam", folder, str(mesh), *(["-keepOrientation"] if keep_orientation else []))
 
 
 def boundary_patches(folder):

@@ -10,7 +10,7 @@ import numpy
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli"))
-from conftest import SOURCE, airshape  # noqa: E402
+from conftest import SOURCE, airshape, shared_path  # noqa: E402
 from mesh_readers import meshio_mesh  # noqa: E402
 from openfoam_case import boundary_patches, make_case, run  # noqa: E402
 
@@ -136,3 +136,22 @@ def test_a_wall_the_layer_cannot_rise_from_is_named(tmp_path):
                       "-o", str(tmp_path / "x.msh"))
     assert result.returncode != 0 and re.search(r"cannot rise from the wall at \(.*\)", result.stderr), result.stderr
     assert not (tmp_path / "x.msh").exists()
+
+
+def test_d150_half_domain_with_layers_passes_openfoams_cell_checks(tmp_path):
+    # D150's wing root and tail are concave and close: the layer's top would cross itself there
+    # (Gmsh refused the fluid) until it is thinned where it does.
+    d150 = shared_path("data", "cpacs", "CPACS_30_D150.xml")
+    mesh = tmp_path / "d150.msh"
+    result = airshape("mesh", d150, "--farfield", "20L", "--symmetry", "--boundary-layer", "4,0.001", "-o", str(mesh))
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert "thinner than asked at" in result.stderr
+    case = tmp_path / "case"
+    # gmshToFoam's own inside-out test turns one thin, twisted prism of this mesh whose Jacobian is
+    # positive at every corner; -keepOrientation keeps the elements as written (docs/meshing.md).
+    assert make_case(case, mesh, ["farfield"], keep_orientation=True).returncode == 0
+    checked = run("checkMesh", case).stdout
+    for sound in ("Boundary definition OK", "Cell to face addressing OK", "Number of regions: 1 (OK)",
+                  "Face pyramids OK", "Cell volumes OK"):
+        assert sound in checked, sound + "\n" + checked[-3000:]
+    assert "Open cells found" not in checked, checked[-3000:]  # said with the aspect ratios, when they fail
