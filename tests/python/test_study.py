@@ -256,6 +256,8 @@ def test_exact_derivatives_of_points_against_translations_agree_with_differences
     ]
     outputs = [{"name": "rect", "op": "wing_upper_point", "args": {"wing": "Rect", "segment": 1, "eta": 0.25,
                                                                      "xsi": 0.4}},
+               {"name": "rect_tip", "op": "wing_lower_point", "args": {"wing": "Rect", "segment": 1, "eta": 1.0,
+                                                                         "xsi": 0.7}},
                {"name": "swept", "points": {"wing": "Swept", "side": "lower", "segment": 1,
                                             "eta": {"linspace": [0.0, 1.0, 5]}, "xsi": 0.3}}]
     study = airshape.Study(WINGS, parameters, outputs)
@@ -263,6 +265,7 @@ def test_exact_derivatives_of_points_against_translations_agree_with_differences
         "wing_x": 1.0, "tip_z": 0.0, "element_x": 0.0})}
     assert answers[("rect", "wing_x")]["derivative"] == [1.0, 0.0, 0.0]  # the wing moves its points one for one
     assert answers[("rect", "tip_z")]["derivative"] == pytest.approx([0.0, 0.0, 0.25])  # eta of the tip's move
+    assert answers[("rect_tip", "tip_z")]["derivative"] == [0.0, 0.0, 1.0]  # on the tip: one for one
     assert answers[("rect", "element_x")]["derivative"] == [0.0, 0.0, 0.0]  # another wing's element
     # The tip element's move turned by its section's rotation (y: -3 degrees) and scaled by 2.
     turned = 2 * numpy.array([math.cos(math.radians(-3)), 0.0, -math.sin(math.radians(-3))])
