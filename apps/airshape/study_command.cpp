@@ -16,18 +16,26 @@ namespace airshape::cli {
 
 namespace {
 
-/// The folder holding the package `airshape` with its study engine: the installed one beside
-/// this program (PREFIX/bin and PREFIX/<install dir>), else the build tree's.
+/// Whether a folder holds the package `airshape` with its study engine and its compiled part.
+bool holdsPythonPackage(const std::filesystem::path& folder) {
+  std::error_code ignored;
+  if (!std::filesystem::exists(folder / "airshape" / "study" / "__main__.py", ignored)) return false;
+  for (const auto& entry : std::filesystem::directory_iterator(folder / "airshape", ignored))
+    if (entry.path().filename().string().rfind("_airshape", 0) == 0 && entry.path().extension() == ".so") return true;
+  return false;
+}
+
+/// The folder holding the package `airshape`: the installed one beside this program (PREFIX/bin
+/// and PREFIX/<install dir>), else the build tree's.
 std::filesystem::path pythonPackageFolder() {
   std::error_code ignored;
   const std::filesystem::path program = std::filesystem::canonical("/proc/self/exe", ignored);
-  const std::vector<std::filesystem::path> candidates = {
-      program.parent_path().parent_path() / AIRSHAPE_INSTALLED_PYTHON_DIR, AIRSHAPE_BUILD_PYTHON_DIR};
-  for (const std::filesystem::path& folder : candidates)
-    if (std::filesystem::exists(folder / "airshape" / "study" / "__main__.py", ignored)) return folder;
+  for (const std::filesystem::path& folder : {program.parent_path().parent_path() / AIRSHAPE_INSTALLED_PYTHON_DIR,
+                                              std::filesystem::path(AIRSHAPE_BUILD_PYTHON_DIR)})
+    if (holdsPythonPackage(folder)) return folder;
   throw Error(ErrorCode::NotImplemented,
-              "study: the Python package airshape is not beside this program (it is built with the Python "
-              "bindings: python3-dev, pybind11-dev)");
+              "study: the Python package airshape is not built beside this program: build it with "
+              "`cmake --build build --target _airshape` (scripts/test.sh builds everything)");
 }
 
 }  // namespace

@@ -36,6 +36,11 @@ def main(arguments: Optional[List[str]] = None) -> int:
         where = f" ({error.cpacs_path})" if error.cpacs_path else ""
         print(f"airshape study: {error.file or options.study}: {str(error).splitlines()[0]}{where}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:  # before the samples began: nothing done, nothing to keep
+        return 130
+    except Exception as error:  # noqa: BLE001 - one line, never a traceback
+        print(f"airshape study: {options.study}: {type(error).__name__}: {error}".splitlines()[0], file=sys.stderr)
+        return 2
     if outcome.interrupted:
         return 130
     return 1 if outcome.failed else 0

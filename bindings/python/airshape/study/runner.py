@@ -6,6 +6,7 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
+import sys
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
@@ -120,6 +121,14 @@ def _check_resumable(rows: List[Dict[str, Any]], samples: List[Sample], path: st
                              "give another results file, or restart")
 
 
+def _plot(study: Study, rows: List[Dict[str, Any]], path: str) -> None:
+    try:
+        from .plot import plot_sweep
+        plot_sweep(study, rows, path)
+    except ImportError:
+        print(f"study: {path} not drawn: matplotlib is missing (Debian: python3-matplotlib)", file=sys.stderr)
+
+
 def run_study(study: Study, results: str, *, workers: Optional[int] = None, client: Any = None,
               scheduler: Optional[str] = None, progress: bool = True, restart: bool = False,
               on_row: Optional[Callable[[Dict[str, Any]], None]] = None) -> Outcome:
@@ -154,6 +163,5 @@ def run_study(study: Study, results: str, *, workers: Optional[int] = None, clie
     if not interrupted:
         table.rewrite(ordered)
         if study.plot:
-            from .plot import plot_sweep
-            plot_sweep(study, ordered, os.path.splitext(results)[0] + ".png")
+            _plot(study, ordered, os.path.splitext(results)[0] + ".png")
     return Outcome(ordered, sum(1 for row in ordered if row.get("error")), interrupted, results)
