@@ -190,9 +190,10 @@ MeshReport meshConfiguration(const Configuration& configuration, const std::vect
                              const MeshOptions& given) {
   const Progress progress{given, Clock::now()};
   MeshOptions options = given;
+  if (options.scene.structure && (options.farfield || options.symmetry || options.boundaryLayer))
+    throw Error(ErrorCode::InvalidArgument,
+                "--structure meshes the structure as shells; it takes no --farfield, --symmetry or --boundary-layer");
   if ((options.symmetry || options.boundaryLayer) && !options.farfield) options.farfield = Farfield{};
-  if (options.scene.structure && options.farfield)
-    throw Error(ErrorCode::InvalidArgument, "--structure meshes the structure as shells; it takes no --farfield");
   if (options.order != 1 && options.order != 2)
     throw Error(ErrorCode::InvalidArgument, "--order: 1 or 2, not " + std::to_string(options.order));
   std::vector<MeshFormat> formats;

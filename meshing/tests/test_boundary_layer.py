@@ -23,7 +23,7 @@ def layered(tmp_path_factory):
     folder = tmp_path_factory.mktemp("layered")
     result = airshape("mesh", AIRLINER, "--farfield", "2L", "--symmetry", "--size", "1.5", "--boundary-layer",
                       f"{LAYERS},{FIRST},{GROWTH}", "-o", str(folder / "half.msh"), "-o", str(folder / "half.vtu"),
-                      "-o", str(folder / "half.su2"))
+                      "-o", str(folder / "half.su2"), "-o", str(folder / "half.inp"))
     assert result.returncode == 0, result.stderr
     points, cells, mesh = meshio_mesh(folder / "half.vtu")
     return folder, result, points, cells, mesh
@@ -85,12 +85,21 @@ def test_the_layers_sides_stand_in_the_symmetry_plane(layered):
     assert points[:, 1].min() > -1e-9
 
 
-def test_su2_holds_the_same_cells(layered):
-    folder, _, _, cells, _ = layered
+@pytest.mark.parametrize("extension", ["su2", "inp"])
+def test_su2_and_abaqus_hold_the_same_cells(layered, extension):
+    folder, _, points, cells, _ = layered
     import meshio
-    su2 = meshio.read(folder / "half.su2")
-    counts = {block.type: len(block.data) for block in su2.cells}
+    read = meshio.read(folder / f"half.{extension}")
+    counts = {}
+    for block in read.cells:
+        counts[block.type] = counts.get(block.type, 0) + len(block.data)
     assert counts.get("wedge") == len(cells["wedge"]) and counts.get("tetra") == len(cells["tetra"])
+    wedges = numpy.vstack([block.data for block in read.cells if block.type == "wedge"])
+    corner = read.points[wedges]  # as the file has them: meshio turns neither
+    normal = numpy.cross(corner[:, 1] - corner[:, 0], corner[:, 2] - corner[:, 0])
+    rise = numpy.einsum("ij,ij->i", normal, corner[:, 3] - corner[:, 0])
+    # SU2 numbers a prism as VTK does (the base's normal away from the top), Abaqus as Gmsh does.
+    assert (rise < 0).all() if extension == "su2" else (rise > 0).all()
 
 
 def test_openfoam_takes_the_layers_and_solves(layered, tmp_path):
