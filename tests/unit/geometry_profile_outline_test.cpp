@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <gp_Pnt.hxx>
+#include <gp_Vec2d.hxx>
+
 #include "airshape/error.h"
 #include "airshape/geometry/profile_outline.h"
 
@@ -100,7 +103,7 @@ TEST(ProfileOutline, ACrossingWithinTheToleranceIsLoftedWithAWarning) {
   EXPECT_LT(crossingDepth(zigZag, *slight), kToleratedCrossing);
   const std::optional<std::string> warning = requireProfileOutline(zigZag, 1e-7, {}, "/profile/pointList");
   ASSERT_TRUE(warning);
-  EXPECT_NE(warning->find("less than the tolerated 1e-05"), std::string::npos) << *warning;
+  EXPECT_NE(warning->find("less than the tolerated 0.001 for a zig-zag"), std::string::npos) << *warning;
   EXPECT_NE(warning->find("lofted as given"), std::string::npos) << *warning;
   EXPECT_FALSE(requireProfileOutline(airfoilOutline(), 1e-7, {}, "/profile/pointList"));
   // Points of the middle of the upper side swapped: a crossing of a tenth of the chord stays an error.
@@ -108,6 +111,38 @@ TEST(ProfileOutline, ACrossingWithinTheToleranceIsLoftedWithAWarning) {
   std::swap(outOfOrder[10], outOfOrder[20]);
   EXPECT_NE(outlineError(outOfOrder).find("more than the tolerated 1e-05"), std::string::npos)
       << outlineError(outOfOrder);
+}
+
+TEST(ProfileOutline, AZigZagsLoopIsReplacedByThePointWhereItsSidesCross) {
+  std::vector<gp_Pnt2d> zigZag = airfoilOutline();
+  zigZag[39] = gp_Pnt2d(2e-4, 1e-4);
+  zigZag[40] = gp_Pnt2d(0, 0);
+  zigZag[41] = gp_Pnt2d(1e-4, 2e-4);
+  const std::vector<ZigZag> found = zigZags(zigZag, 1e-9);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_LE(found[0].lastSide - found[0].firstSide, kZigZagReach);
+  std::vector<gp_Pnt> points;
+  for (const gp_Pnt2d& corner : zigZag) points.emplace_back(corner.X(), 0.0, corner.Y());
+  const std::vector<gp_Pnt> kept = withoutZigZags(points, found);
+  EXPECT_EQ(kept.size(), points.size() - (found[0].lastSide - found[0].firstSide) + 1);
+  std::vector<gp_Pnt2d> untangled;
+  for (const gp_Pnt& point : kept) untangled.emplace_back(point.X(), point.Z());
+  EXPECT_FALSE(polygonCrossing(untangled, 1e-9));
+  // The new corner lies on both crossing sides.
+  const gp_Pnt& crossing = kept[found[0].firstSide + 1];
+  for (std::size_t side : {found[0].firstSide, found[0].lastSide}) {
+    const gp_Vec2d along(zigZag[side], zigZag[side + 1]);
+    EXPECT_NEAR(along.Crossed(gp_Vec2d(zigZag[side], gp_Pnt2d(crossing.X(), crossing.Z()))) / along.Magnitude(), 0.0,
+                1e-15);
+  }
+  // The airfoil without a zig-zag has none; a crossing deeper than a zig-zag may be is none either.
+  EXPECT_TRUE(zigZags(airfoilOutline(), 1e-9).empty());
+  std::vector<gp_Pnt2d> deep = airfoilOutline();
+  std::swap(deep[39], deep[41]);  // the points on either side of the leading edge swapped
+  const auto deepCrossing = polygonCrossing(deep, 1e-9);
+  ASSERT_TRUE(deepCrossing);
+  EXPECT_GT(crossingDepth(deep, *deepCrossing), kToleratedZigZag * 1.1);  // the outline is about 1 across
+  EXPECT_TRUE(zigZags(deep, 1e-9).empty());
 }
 
 }  // namespace

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <set>
 #include <sstream>
 #include <utility>
 
+#include <Bnd_Box2d.hxx>
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
@@ -60,6 +62,27 @@ std::size_t leadingEdgeIndex(const std::vector<gp_Pnt>& points) {
   return index;
 }
 
+/// The airfoil's points with its zig-zags' loops taken out (geometry::zigZags: optimisers write
+/// airfoils whose points step back and forth by micrometres at the leading edge; lofted
+/// through, such a loop makes the wing's wire cross itself), each said in `warnings`.
+std::vector<gp_Pnt> untangled(const std::vector<gp_Pnt>& points, std::vector<std::string>& warnings) {
+  std::vector<gp_Pnt2d> outline;  // in the airfoil's plane
+  for (const gp_Pnt& point : points) outline.emplace_back(point.X(), point.Z());
+  const std::vector<geometry::ZigZag> loops = geometry::zigZags(outline, kSamePoint);
+  if (loops.empty()) return points;
+  Bnd_Box2d box;
+  for (const gp_Pnt2d& corner : outline) box.Add(corner);
+  for (const geometry::ZigZag& loop : loops) {
+    std::ostringstream what;
+    what << std::setprecision(2) << "the points zig-zag across their own outline (its sides from point "
+         << loop.firstSide + 1 << " and from point " << loop.lastSide + 1 << " cross by "
+         << loop.depth / std::sqrt(box.SquareExtent()) << " of the profile's size): points " << loop.firstSide + 2
+         << " to " << loop.lastSide + 1 << " replaced by the point where those sides cross";
+    warnings.push_back(what.str());
+  }
+  return geometry::withoutZigZags(points, loops);
+}
+
 }  // namespace
 
 WingProfile WingProfile::fromDefinition(const schema::ProfileGeometryType& definition) {
@@ -108,17 +131,18 @@ WingProfile WingProfile::fromPointList(const schema::CurvePointListXYZType& list
   if (x.size() != y.size() || x.size() != z.size())
     throw Error(ErrorCode::InvalidModel, "x, y and z have different lengths", {}, xpath);
   std::vector<gp_Pnt> points;
+  for (std::size_t i = 0; i < x.size(); ++i) points.emplace_back(x[i], y[i], z[i]);
+  std::vector<std::string> warnings;
+  points = untangled(points, warnings);
   std::vector<gp_Pnt2d> outline;  // in the airfoil's plane
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    points.emplace_back(x[i], y[i], z[i]);
-    outline.emplace_back(x[i], z[i]);
-  }
-  const std::optional<std::string> crossing = geometry::requireProfileOutline(outline, kSamePoint, {}, xpath);
+  for (const gp_Pnt& point : points) outline.emplace_back(point.X(), point.Z());
+  if (const auto crossing = geometry::requireProfileOutline(outline, kSamePoint, {}, xpath))
+    warnings.push_back(*crossing);
   const auto* settings = list.binding ? xml::firstChild(*list.binding, "approximationSettings") : nullptr;
   WingProfile profile = settings
                             ? fromApproximatedPoints(std::move(points), *settings, xpath + "/approximationSettings")
                             : fromPoints(std::move(points), xpath);
-  if (crossing) profile.warnings_.push_back({Problem::Severity::Warning, xpath, *crossing});
+  for (const std::string& warning : warnings) profile.warnings_.push_back({Problem::Severity::Warning, xpath, warning});
   return profile;
 }
 
