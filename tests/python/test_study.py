@@ -321,3 +321,20 @@ args = {{ wing = "Wing" }}
     assert resumed.returncode == 0, resumed.stderr
     ids = [int(row["id"]) for row in csv.DictReader(open(tmp_path / "r.csv"))]
     assert ids == list(range(60))
+
+
+def test_a_place_no_sample_could_set_and_a_bad_results_file_fail_before_any_sample(tmp_path):
+    nowhere = RECT.replace("'Rect'", "'Nope'") + "/transformation/translation/x"
+    study = airshape.Study(WINGS, [{"name": "x", "xpath": nowhere, "values": [1.0, 2.0]}],
+                           [{"name": "v", "op": "wing_volume", "args": {"wing": "Rect"}}])
+    with pytest.raises(StudyError, match="parameter x: XPath .* names no element to make"):
+        study.run(str(tmp_path / "r.csv"), progress=False)
+    with pytest.raises(StudyError, match=r"written as \.csv or \.jsonl, not '\.txt'"):
+        rectangular_study().run(str(tmp_path / "r.txt"), progress=False)
+    assert not os.listdir(tmp_path)
+    # A place the document lacks but can be made is made: a section without a translation.
+    made = airshape.Study(WINGS, [{"name": "z", "xpath": RECT + "/sections/section[@uID='R2']/transformation"
+                                                          "/translation/z", "values": [0.5]}],
+                          [{"name": "tip", "op": "wing_upper_point", "args": {"wing": "Rect", "segment": 1,
+                                                                               "eta": 1.0, "xsi": 0.0}}])
+    assert made.run(str(tmp_path / "m.csv"), progress=False).rows[0]["tip"][2] == pytest.approx(0.5)

@@ -34,7 +34,10 @@ def main(arguments: Optional[List[str]] = None) -> int:
         return 2
     except Error as error:
         where = f" ({error.cpacs_path})" if error.cpacs_path else ""
-        print(f"airshape study: {error.file or options.study}: {str(error).splitlines()[0]}{where}", file=sys.stderr)
+        message = str(error).splitlines()[0]
+        file = error.file or options.study
+        print(f"airshape study: {message if message.startswith(file) else file + ': ' + message}{where}",
+              file=sys.stderr)
         return 2
     except KeyboardInterrupt:  # before the samples began: nothing done, nothing to keep
         return 130

@@ -12,6 +12,7 @@ import numpy as np
 
 from .. import Configuration
 from ..errors import ArgumentError, Error
+from .definition import StudyError
 
 # The documents this process has opened, by study key (a worker keeps its configuration).
 _OPEN: Dict[str, Configuration] = {}
@@ -64,9 +65,14 @@ def plan_of(study: Any) -> Plan:
             try:
                 setters.append((parameter.name, xpath_of_path(config, parameter.path)))
             except (ValueError, AttributeError, IndexError, KeyError, Error) as error:
-                raise ValueError(f"{study.name}: parameter {parameter.name}: {error}") from None
+                raise StudyError(f"{study.name}: parameter {parameter.name}: {error}") from None
         elif parameter.xpath:
             setters.append((parameter.name, parameter.xpath))
+    for name, xpath in setters:  # a place no sample could set fails the study, not every sample
+        try:
+            _missing_steps(config, xpath)
+        except Error as error:
+            raise StudyError(f"{study.name}: parameter {name}: {error}") from None
     with open(study.file, encoding="utf-8") as file:
         document = file.read()
     return Plan(study.key(), study.file, document, setters, [dataclasses.asdict(o) for o in study.outputs],
@@ -129,18 +135,25 @@ def _whole_output(config: Configuration, output: Dict[str, Any]) -> Any:
                               eta=_sequence(points["eta"]), xsi=_sequence(points["xsi"])))
 
 
-def make_place(config: Configuration, xpath: str) -> None:
-    """Makes the elements an XPath names but the document lacks (a section's translation where
-    it has none: its other coordinates are then 0, as CPACS reads a missing one). Only plain
-    element names can be made; raises ArgumentError otherwise."""
+def _missing_steps(config: Configuration, xpath: str) -> Tuple[str, List[str]]:
+    """The deepest element of an XPath the document has, and the steps below it that it lacks.
+    Raises ArgumentError when those steps are not plain element names (nothing to make)."""
     steps = xpath.split("/")
-    cut = len(steps) - 1
+    cut = len(steps) if config._core.count(xpath) > 0 else len(steps) - 1
     while cut > 1 and config._core.count("/".join(steps[:cut])) == 0:
         cut -= 1
     missing = steps[cut:]
     if any(not re.fullmatch(r"[A-Za-z_][\w.-]*", step) for step in missing):
         raise ArgumentError(f"XPath {xpath}: no element there, and '{'/'.join(missing)}' names no element to make")
-    config.insert("/".join(steps[:cut]), "".join(f"<{step}>" for step in missing) + "0" +
+    return "/".join(steps[:cut]), missing
+
+
+def make_place(config: Configuration, xpath: str) -> None:
+    """Makes the elements an XPath names but the document lacks (a section's translation where
+    it has none: its other coordinates are then 0, as CPACS reads a missing one). Only plain
+    element names can be made; raises ArgumentError otherwise."""
+    parent, missing = _missing_steps(config, xpath)
+    config.insert(parent, "".join(f"<{step}>" for step in missing) + "0" +
                   "".join(f"</{step}>" for step in reversed(missing)))
 
 

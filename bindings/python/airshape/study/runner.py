@@ -137,6 +137,9 @@ def run_study(study: Study, results: str, *, workers: Optional[int] = None, clie
                ["seconds", "error", "cpacs_path"])
     try:
         table = ResultsTable(results, columns)
+    except ValueError as error:
+        raise StudyError(str(error)) from None
+    try:
         existing = [] if restart else table.read()
     except ValueError as error:
         raise StudyError(f"{error}; restart to write it anew") from None
