@@ -202,17 +202,24 @@ def test_no_geometric_element_of_a_shared_file_goes_unmentioned(path):
     assert expected <= listed, sorted(expected - listed)
 
 
+def zig_zag_aircraft(folder, far, near):
+    """The example aircraft with its airfoil's points stepping back and forth at the leading
+    edge: a point `far` and one `near` (chord shares, as text) aft of it on either side, the
+    last lower point above the first upper one. Returns the file's path."""
+    path = folder / "zig-zag.xml"
+    path.write_text(AIRCRAFT.replace("0.0380602;0.00960736;0;0.00960736;0.0380602",
+                                     f"0.0380602;0.00960736;{far};0;{near};0.00960736;0.0380602")
+                    .replace("-0.0315797;-0.0167151;-0;0.0167151;0.0315797",
+                             f"-0.0315797;-0.0167151;-{near};-0;-{far};0.0167151;0.0315797")
+                    .replace('<y mapType="vector">' + ";".join(["0"] * 33), '<y mapType="vector">' +
+                             ";".join(["0"] * 35)))
+    return str(path)
+
+
 def test_an_airfoil_that_zig_zags_at_its_leading_edge_is_lofted_with_a_warning(tmp_path):
     # As optimisers write them: the last lower point before the leading edge lies above the
     # first upper one, by a micrometre on a chord of one metre.
-    zig_zag = tmp_path / "zig-zag.xml"
-    zig_zag.write_text(AIRCRAFT.replace("0.0380602;0.00960736;0;0.00960736;0.0380602",
-                                        "0.0380602;0.00960736;2e-6;0;1e-6;0.00960736;0.0380602")
-                       .replace("-0.0315797;-0.0167151;-0;0.0167151;0.0315797",
-                                "-0.0315797;-0.0167151;-1e-6;-0;-2e-6;0.0167151;0.0315797")
-                       .replace('<y mapType="vector">' + ";".join(["0"] * 33), '<y mapType="vector">' +
-                                ";".join(["0"] * 35)))
-    built = airshape("build", str(zig_zag))
+    built = airshape("build", zig_zag_aircraft(tmp_path, "2e-6", "1e-6"))
     assert built.returncode == 0, built.stdout + built.stderr
     assert re.search(r"MainWing +valid solid", built.stdout), built.stdout
     warning = [line for line in built.stderr.splitlines() if "zig-zag" in line]
@@ -228,14 +235,7 @@ def test_an_airfoil_that_zig_zags_at_its_leading_edge_is_lofted_with_a_warning(t
 def test_a_zig_zag_whose_loft_crossed_itself_builds_a_valid_wing(tmp_path):
     # Deeper, 2e-4 of the chord: lofted through as given, the airfoil's curve looped and the
     # wing's solid was invalid (BRepCheck: self intersecting wire). The loop is taken out.
-    zig_zag = tmp_path / "zig-zag.xml"
-    zig_zag.write_text(AIRCRAFT.replace("0.0380602;0.00960736;0;0.00960736;0.0380602",
-                                        "0.0380602;0.00960736;0.001;0;0.0005;0.00960736;0.0380602")
-                       .replace("-0.0315797;-0.0167151;-0;0.0167151;0.0315797",
-                                "-0.0315797;-0.0167151;-0.0005;-0;-0.001;0.0167151;0.0315797")
-                       .replace('<y mapType="vector">' + ";".join(["0"] * 33), '<y mapType="vector">' +
-                                ";".join(["0"] * 35)))
-    built = airshape("build", str(zig_zag))
+    built = airshape("build", zig_zag_aircraft(tmp_path, "0.001", "0.0005"))
     assert built.returncode == 0 and re.search(r"MainWing +valid solid", built.stdout), built.stdout + built.stderr
     assert "replaced by the point where those sides cross" in built.stderr
     # Its volume differs from the airfoil's without the zig-zag by less than the loop's share.
