@@ -10,29 +10,27 @@
 #include <gp_Vec.hxx>
 
 #include "airshape/error.h"
+#include "mesh_tables.h"
 #include "triangle_crossings.h"
 
 namespace airshape::meshing {
 
 namespace {
 
-gp_Pnt pointOf(const std::vector<double>& coordinates, std::size_t node) {
-  return gp_Pnt(coordinates[3 * node], coordinates[3 * node + 1], coordinates[3 * node + 2]);
-}
-
 /// A triangle's unit normal pointing into the fluid (its nodes turn the other way).
 gp_Vec intoFluid(const std::vector<double>& coordinates, const std::size_t* triangle) {
-  const gp_Pnt a = pointOf(coordinates, triangle[0]);
-  gp_Vec normal = gp_Vec(a, pointOf(coordinates, triangle[2])).Crossed(gp_Vec(a, pointOf(coordinates, triangle[1])));
+  const gp_Pnt a = nodePoint(coordinates, triangle[0]);
+  gp_Vec normal =
+      gp_Vec(a, nodePoint(coordinates, triangle[2])).Crossed(gp_Vec(a, nodePoint(coordinates, triangle[1])));
   const double length = normal.Magnitude();
   return length > 0 ? normal / length : normal;
 }
 
 /// The angle of a triangle at one of its corners (the corner's share of the node's normal).
 double angleAt(const std::vector<double>& coordinates, const std::size_t* triangle, int corner) {
-  const gp_Pnt at = pointOf(coordinates, triangle[corner]);
-  const gp_Vec toNext(at, pointOf(coordinates, triangle[(corner + 1) % 3]));
-  const gp_Vec toPrevious(at, pointOf(coordinates, triangle[(corner + 2) % 3]));
+  const gp_Pnt at = nodePoint(coordinates, triangle[corner]);
+  const gp_Vec toNext(at, nodePoint(coordinates, triangle[(corner + 1) % 3]));
+  const gp_Vec toPrevious(at, nodePoint(coordinates, triangle[(corner + 2) % 3]));
   return toNext.Magnitude() > 0 && toPrevious.Magnitude() > 0 ? toNext.Angle(toPrevious) : 0.0;
 }
 
@@ -115,13 +113,13 @@ bool facesEnclosePrism(const std::vector<double>& coordinates, const std::size_t
   static const std::vector<std::vector<std::size_t>> faces = {
       {0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}};
   gp_XYZ centre(0, 0, 0);
-  for (std::size_t corner = 0; corner < 6; ++corner) centre += pointOf(coordinates, n[corner]).XYZ() / 6;
+  for (std::size_t corner = 0; corner < 6; ++corner) centre += nodePoint(coordinates, n[corner]).XYZ() / 6;
   for (const std::vector<std::size_t>& face : faces) {
     gp_XYZ faceCentre(0, 0, 0);
-    for (std::size_t corner : face) faceCentre += pointOf(coordinates, n[corner]).XYZ() / double(face.size());
+    for (std::size_t corner : face) faceCentre += nodePoint(coordinates, n[corner]).XYZ() / double(face.size());
     for (std::size_t i = 0; i < face.size(); ++i) {
-      const gp_XYZ a = pointOf(coordinates, n[face[i]]).XYZ() - faceCentre;
-      const gp_XYZ b = pointOf(coordinates, n[face[(i + 1) % face.size()]]).XYZ() - faceCentre;
+      const gp_XYZ a = nodePoint(coordinates, n[face[i]]).XYZ() - faceCentre;
+      const gp_XYZ b = nodePoint(coordinates, n[face[(i + 1) % face.size()]]).XYZ() - faceCentre;
       if (a.Crossed(b).Dot(faceCentre - centre) <= 0) return false;
     }
   }
@@ -134,11 +132,11 @@ bool isValidPrism(const std::vector<double>& coordinates, const std::size_t* n) 
   if (!facesEnclosePrism(coordinates, n)) return false;
   for (std::size_t corner = 0; corner < 3; ++corner) {
     const std::size_t next = (corner + 1) % 3, previous = (corner + 2) % 3;
-    const gp_Vec up(pointOf(coordinates, n[corner]), pointOf(coordinates, n[corner + 3]));
+    const gp_Vec up(nodePoint(coordinates, n[corner]), nodePoint(coordinates, n[corner + 3]));
     for (std::size_t level : {0, 3}) {
-      const gp_Pnt at = pointOf(coordinates, n[level + corner]);
-      const gp_Vec normal = gp_Vec(at, pointOf(coordinates, n[level + next]))
-                                .Crossed(gp_Vec(at, pointOf(coordinates, n[level + previous])));
+      const gp_Pnt at = nodePoint(coordinates, n[level + corner]);
+      const gp_Vec normal = gp_Vec(at, nodePoint(coordinates, n[level + next]))
+                                .Crossed(gp_Vec(at, nodePoint(coordinates, n[level + previous])));
       if (normal.Dot(up) <= 0) return false;
     }
   }
@@ -179,7 +177,7 @@ std::unordered_map<std::size_t, double> shortestEdges(const std::vector<double>&
   for (std::size_t triangle = 0; triangle < walls.size(); triangle += 3)
     for (std::size_t corner = 0; corner < 3; ++corner) {
       const std::size_t a = walls[triangle + corner], b = walls[triangle + (corner + 1) % 3];
-      const double length = pointOf(coordinates, a).Distance(pointOf(coordinates, b));
+      const double length = nodePoint(coordinates, a).Distance(nodePoint(coordinates, b));
       for (std::size_t node : {a, b}) {
         auto [at, added] = shortest.emplace(node, length);
         if (!added) at->second = std::min(at->second, length);
@@ -197,7 +195,7 @@ struct Columns {
 
 void placeColumn(std::vector<double>& coordinates, const std::vector<std::size_t>& column, const gp_Vec& direction,
                  double share, bool onPlane, const BoundaryLayer& layer) {
-  const gp_Pnt base = pointOf(coordinates, column.front());
+  const gp_Pnt base = nodePoint(coordinates, column.front());
   double height = 0, step = layer.firstHeight * share;
   for (std::size_t k = 1; k < column.size(); ++k, step *= layer.growth) {
     height += step;

@@ -14,14 +14,11 @@ namespace airshape::meshing {
 
 namespace {
 
-gp_Pnt nodeAt(const MeshTables& tables, std::size_t node) {
-  return gp_Pnt(tables.coordinates[3 * node], tables.coordinates[3 * node + 1], tables.coordinates[3 * node + 2]);
-}
-
 /// An element's first three corners' normal (length: twice the triangle's area) and centre.
 std::pair<gp_Vec, gp_Pnt> normalAndCentre(const MeshTables& tables, const ElementBlock& block, std::size_t element) {
   const std::size_t* nodes = &block.nodes[element * static_cast<std::size_t>(block.nodesPerElement)];
-  const gp_Pnt a = nodeAt(tables, nodes[0]), b = nodeAt(tables, nodes[1]), c = nodeAt(tables, nodes[2]);
+  const gp_Pnt a = nodePoint(tables.coordinates, nodes[0]), b = nodePoint(tables.coordinates, nodes[1]),
+               c = nodePoint(tables.coordinates, nodes[2]);
   return {gp_Vec(a, b).Crossed(gp_Vec(a, c)), gp_Pnt((a.XYZ() + b.XYZ() + c.XYZ()) / 3)};
 }
 

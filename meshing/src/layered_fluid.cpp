@@ -33,10 +33,16 @@ bool inGroup(const MeshTables& tables, const MeshEntity& entity, const std::stri
 
 DomainSurface sortedSurface(const MeshTables& surface) {
   DomainSurface sorted;
+  enum class Bounds { Wall, Farfield, Symmetry };
+  std::vector<Bounds> bounds(surface.entities.size(), Bounds::Wall);  // what each entity's triangles bound
   for (std::size_t entity = 0; entity < surface.entities.size(); ++entity) {
     if (surface.entities[entity].dimension == 3 && !sorted.fluidEntity) sorted.fluidEntity = entity;
-    if (inGroup(surface, surface.entities[entity], "symmetry") && !sorted.symmetryEntity)
-      sorted.symmetryEntity = entity;
+    if (inGroup(surface, surface.entities[entity], "symmetry")) {
+      bounds[entity] = Bounds::Symmetry;
+      if (!sorted.symmetryEntity) sorted.symmetryEntity = entity;
+    } else if (inGroup(surface, surface.entities[entity], "farfield")) {
+      bounds[entity] = Bounds::Farfield;
+    }
   }
   if (!sorted.fluidEntity) throw Error(ErrorCode::InvalidArgument, "--boundary-layer: the mesh has no fluid volume");
   for (const ElementBlock& block : surface.blocks) {
@@ -44,16 +50,16 @@ DomainSurface sortedSurface(const MeshTables& surface) {
     if (block.gmshType != kTriangle)
       throw Error(ErrorCode::InvalidArgument, "--boundary-layer grows from triangles, not from " + block.name);
     for (std::size_t element = 0; element < block.entity.size(); ++element) {
-      const MeshEntity& entity = surface.entities[block.entity[element]];
+      const std::size_t entity = block.entity[element];
       const auto first = block.nodes.begin() + static_cast<long>(3 * element);
-      if (inGroup(surface, entity, "symmetry")) {
+      if (bounds[entity] == Bounds::Symmetry) {
         sorted.symmetry.insert(sorted.symmetry.end(), first, first + 3);
-      } else if (inGroup(surface, entity, "farfield")) {
+      } else if (bounds[entity] == Bounds::Farfield) {
         sorted.farfield.insert(sorted.farfield.end(), first, first + 3);
-        sorted.farfieldEntity.push_back(block.entity[element]);
+        sorted.farfieldEntity.push_back(entity);
       } else {
         sorted.walls.insert(sorted.walls.end(), first, first + 3);
-        sorted.wallEntity.push_back(block.entity[element]);
+        sorted.wallEntity.push_back(entity);
       }
     }
   }

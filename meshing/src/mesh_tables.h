@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <gp_Pnt.hxx>
+
 namespace airshape::meshing {
 
 /// One of Gmsh's model entities with elements: a surface, a volume, a curve.
@@ -42,6 +44,11 @@ struct MeshTables {
   /// Each group's elements as (block, element in the block), in block order.
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> elementsOfGroups() const;
 };
+
+/// Node `node` of a coordinates table (x, y, z per node) as a point.
+inline gp_Pnt nodePoint(const std::vector<double>& coordinates, std::size_t node) {
+  return gp_Pnt(coordinates[3 * node], coordinates[3 * node + 1], coordinates[3 * node + 2]);
+}
 
 /// The tables of the mesh in Gmsh's model: the elements of every entity in a physical group,
 /// each once however many groups hold it.
