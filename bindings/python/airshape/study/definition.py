@@ -199,15 +199,15 @@ class Study:
                 points = designs.table_of_samples(self.table, [p.name for p in free])
         except (ValueError, OSError) as error:
             raise self._fail(str(error)) from None
+        return [Sample(index, self.values_of(point)) for index, point in enumerate(points)]
+
+    def values_of(self, free: Dict[str, float]) -> Dict[str, float]:
+        """Every parameter's value, given the free parameters' (the related ones follow)."""
         relations = self._relations()
-        order = self._evaluation_order()
-        samples = []
-        for index, point in enumerate(points):
-            values = dict(point)
-            for name in order:
-                values[name] = relations[name](values)
-            samples.append(Sample(index, {p.name: values[p.name] for p in self.parameters}))
-        return samples
+        values = dict(free)
+        for name in self._evaluation_order():
+            values[name] = relations[name](values)
+        return {p.name: values[p.name] for p in self.parameters}
 
     def _grid_values(self, parameter: Parameter) -> List[float]:
         if parameter.values is not None:

@@ -79,15 +79,25 @@ def plan_of(study: Any) -> Plan:
                 [dataclasses.asdict(e) for e in study.exports])
 
 
+def open_document(plan: Plan) -> Configuration:
+    """The plan's document opened, with the places of its parameters that it lacks made."""
+    config = Configuration.from_string(plan.document, plan.file)
+    for _, xpath in plan.setters:
+        if config._core.count(xpath) == 0:
+            make_place(config, xpath)
+    return config
+
+
 def configuration_of(plan: Plan) -> Configuration:
     """The process's configuration of the plan's document, opened on first use."""
     if plan.key not in _OPEN:
         _OPEN.clear()  # one study at a time per process
-        _OPEN[plan.key] = Configuration.from_string(plan.document, plan.file)
+        _OPEN[plan.key] = open_document(plan)
     return _OPEN[plan.key]
 
 
-def _sequence(value: Any) -> Any:
+def sequence_of(value: Any) -> Any:
+    """An eta or xsi of a points output: a number, a list, or {"linspace": [start, stop, count]}."""
     if isinstance(value, dict) and "linspace" in value:
         start, stop, count = value["linspace"]
         return np.linspace(float(start), float(stop), int(count))
@@ -132,7 +142,7 @@ def _whole_output(config: Configuration, output: Dict[str, Any]) -> Any:
     points = output["points"]
     wing = config.wings[points["wing"]]
     return _plain(wing.points(points.get("side", "upper"), points.get("segment", 1),
-                              eta=_sequence(points["eta"]), xsi=_sequence(points["xsi"])))
+                              eta=sequence_of(points["eta"]), xsi=sequence_of(points["xsi"])))
 
 
 def _missing_steps(config: Configuration, xpath: str) -> Tuple[str, List[str]]:
@@ -158,11 +168,9 @@ def make_place(config: Configuration, xpath: str) -> None:
 
 
 def apply(config: Configuration, plan: Plan, values: Dict[str, float]) -> None:
-    """Sets every parameter that has a place in the document to its value (the place made
-    where the document lacks it)."""
+    """Sets every parameter that has a place in the document to its value (the document opened
+    by open_document, which makes the places it lacks)."""
     for name, xpath in plan.setters:
-        if config._core.count(xpath) == 0:
-            make_place(config, xpath)
         config.set(xpath, values[name])
 
 

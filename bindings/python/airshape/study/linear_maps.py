@@ -14,6 +14,7 @@ from typing import Any, Dict, Optional
 import numpy as np
 
 from ..errors import Error
+from .evaluation import sequence_of
 
 _TRANSLATION = re.compile(r"^(?P<owner>.+)/transformation/translation/(?P<axis>[xyz])$")
 _POINT_OPS = {"wing_upper_point", "wing_lower_point", "wing_chord_point"}
@@ -48,11 +49,8 @@ def _point_query(output: Dict[str, Any]) -> Optional[Dict[str, Any]]:
         return {"wing": args["wing"], "segment": args["segment"], "eta": np.atleast_1d(float(args["eta"]))}
     points = output.get("points")
     if points:
-        eta = points["eta"]
-        etas = np.linspace(*map(float, eta["linspace"][:2]), int(eta["linspace"][2])) \
-            if isinstance(eta, dict) else np.atleast_1d(np.asarray(eta, dtype=float))
-        xsi = points["xsi"]
-        count = int(xsi["linspace"][2]) if isinstance(xsi, dict) else np.atleast_1d(xsi).size
+        etas = np.atleast_1d(np.asarray(sequence_of(points["eta"]), dtype=float))
+        count = np.atleast_1d(sequence_of(points["xsi"])).size
         if etas.size != count and etas.size != 1 and count != 1:
             return None
         return {"wing": points["wing"], "segment": points.get("segment", 1), "eta": np.broadcast_to(etas, (max(

@@ -9,17 +9,9 @@ import numpy as np
 
 from .. import Configuration
 from .definition import Study, StudyError
-from .evaluation import apply, output_value, plan_of
+from .evaluation import apply, open_document, output_value, plan_of
 from .linear_maps import exact_derivative
-from .relation import Relation, evaluation_order
-
-
-def _all_values(study: Study, free: Dict[str, float]) -> Dict[str, float]:
-    relations = {p.name: Relation(p.relation, p.name) for p in study.parameters if p.relation is not None}
-    values = dict(free)
-    for name in evaluation_order(relations, set(free)):
-        values[name] = relations[name](values)
-    return values
+from .relation import Relation
 
 
 def _base_values(study: Study, config: Configuration, setters: Dict[str, str],
@@ -61,18 +53,21 @@ def sensitivities(study: Study, *, at: Optional[Dict[str, float]] = None,
     "exact" the central difference as "finite_difference"}. The document is left as it was."""
     plan = plan_of(study)
     setters = dict(plan.setters)
-    config = Configuration.from_string(plan.document, plan.file)
+    config = open_document(plan)
     base = _base_values(study, config, setters, at)
     chosen_outputs = [o for o in plan.outputs if outputs is None or o["name"] in outputs]
     chosen = [p.name for p in study.free_parameters if parameters is None or p.name in parameters]
 
     def measure(free: Dict[str, float]) -> Dict[str, np.ndarray]:
-        apply(config, plan, _all_values(study, free))
+        apply(config, plan, study.values_of(free))
         return {o["name"]: np.asarray(output_value(config, o), dtype=float) for o in chosen_outputs}
 
     at_base = measure(base)
     answers = []
     for name in chosen:
+        # Exact maps hold for a parameter set directly, not through a relation of others.
+        xpath = setters.get(name)
+        related = any(p.relation and name in Relation(p.relation, p.name).names for p in study.parameters)
         h = _step(study, name, base[name], step)
         values = {}
         for factor in (1.0, -1.0, 0.5, -0.5):
@@ -87,11 +82,9 @@ def sensitivities(study: Study, *, at: Optional[Dict[str, float]] = None,
             agrees = bool(np.all(np.abs(long - short) <= tolerance * np.maximum(np.abs(long), np.abs(short)) + noise))
             answer = {"output": key, "parameter": name, "derivative": long.tolist(), "method": "central difference",
                       "step": h, "check": short.tolist(), "agrees": agrees}
-            xpath = setters.get(name)
-            related = any(p.relation and name in Relation(p.relation, p.name).names for p in study.parameters)
             exact = None if related or xpath is None else exact_derivative(config, output, xpath)
             if exact is not None:
                 answer.update(derivative=exact.tolist(), method="exact", finite_difference=long.tolist())
             answers.append(answer)
-    apply(config, plan, _all_values(study, base))
+    apply(config, plan, study.values_of(base))
     return answers
