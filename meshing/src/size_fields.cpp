@@ -121,6 +121,11 @@ std::vector<double> aircraftSurfaces(const std::vector<FaceLabel>& labels, const
 /// How fast the fluid's elements grow with the distance from the aircraft: size per metre.
 constexpr double kGrowth = 0.2;
 
+/// The fluid's size: the surface size at the given entities, growing to the far-field size.
+int fluidGrowth(const std::string& list, const std::vector<double>& tags, const Sizes& sizes) {
+  return sizeNear(list, tags, sizes.surface, 0, sizes.farfield, sizes.reach, 12);
+}
+
 }  // namespace
 
 Sizes sizesFor(const MeshOptions& options, double length, double farfieldDistance) {
@@ -153,9 +158,7 @@ void setSizeFields(const TopoDS_Shape& shape, const std::vector<FaceLabel>& labe
           sizeNear("EdgesList", curves, sizes.refined, sizes.refined, sizes.surface, 4 * sizes.surface, 12));
     for (const auto& [uid, size] : options.componentSizes)
       fields.push_back(sizeOnComponent(uid, size, shape, labels, imported));
-    if (fluid)
-      fields.push_back(
-          sizeNear("FacesList", aircraftSurfaces(labels, imported), sizes.surface, 0, sizes.farfield, sizes.reach, 12));
+    if (fluid) fields.push_back(fluidGrowth("FacesList", aircraftSurfaces(labels, imported), sizes));
     if (fields.empty()) return;  // the largest size and the curvature decide
     const int minimum = gmsh::model::mesh::field::add("Min");
     gmsh::model::mesh::field::setNumbers(minimum, "FieldsList", fields);
@@ -170,8 +173,7 @@ void setFluidSizes(const std::string& list, const std::vector<double>& tags, con
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::model::mesh::field::setAsBackgroundMesh(
-        sizeNear(list, tags, sizes.surface, 0, sizes.farfield, sizes.reach, 12));
+    gmsh::model::mesh::field::setAsBackgroundMesh(fluidGrowth(list, tags, sizes));
   });
 }
 
