@@ -363,6 +363,68 @@ def test_a_slat_without_a_shape_is_the_nose_ahead_of_a_straight_cut(tmp_path, up
     assert box["min"][:2] == pytest.approx([1.0, 1.0], abs=1e-6) and box["max"][:2] == pytest.approx([1.3, 4.0], abs=1e-6)
 
 
+ROUNDED_NOSE = ("<leadingEdgeShape><relHeightLE>0.5</relHeightLE><xsiUpperSkin>0.9</xsiUpperSkin>"
+                "<xsiLowerSkin>0.9</xsiLowerSkin></leadingEdgeShape>")
+
+
+@pytest.mark.parametrize("rounded", ["innerBorder", "outerBorder"])
+def test_a_flap_with_one_rounded_border_lies_between_the_straight_and_the_rounded_flap(tmp_path, rounded):
+    # A file may give one border a leadingEdgeShape and leave the other a straight cut; the ruled
+    # solid between a rounded and a straight outline then takes out less than the straight flap
+    # and more than the flap rounded at both borders, and is a valid solid.
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    start = text.index('<trailingEdgeDevice uID="Flap">')
+    end = text.index("</outerShape>", start)
+
+    def flap_volume(borders, name):
+        shape = text[start:end]
+        for border in borders:
+            at = shape.index(f"</{border}>")
+            shape = shape[:at] + ROUNDED_NOSE + shape[at:]
+        path = tmp_path / f"{name}.xml"
+        path.write_text(text[:start] + shape + text[end:])
+        built = airshape("build", str(path))
+        assert re.search(r"control_surface +Flap +valid solid", built.stdout), built.stdout
+        return float(re.search(r"Flap +valid solid, volume ([0-9.e-]+)", built.stdout).group(1))
+
+    straight = flap_volume([], "straight")
+    both = flap_volume(["innerBorder", "outerBorder"], "both")
+    one = flap_volume([rounded], "one")
+    assert both < one < straight, (both, one, straight)
+    assert min(one - both, straight - one) > 0.2 * (straight - both)
+
+
+def border(tag, eta_le, eta_te, *xsis, rel_height=None):
+    etas = f"<etaLE><eta>{eta_le}</eta></etaLE><etaTE><eta>{eta_te}</eta></etaTE>"
+    named = "".join(f"<{name}><xsi>{xsi}</xsi></{name}>" for name, xsi in xsis)
+    height = f"<relHeightLE>{rel_height}</relHeightLE>" if rel_height is not None else ""
+    return f"<{tag}>{etas}{named}{height}</{tag}>"
+
+
+def test_devices_on_a_blended_wing_body_of_many_sections_are_valid_solids(tmp_path):
+    # On the 55 sections of a thick blended wing body the skins' split curves leave an oblique
+    # border's plane (and a spoiler's outer one) by more than their tolerance; the solids made
+    # from the skins were flawed there ("invalid curve on surface"), the Boolean cut is not.
+    path = shared_path("data", "cpacs", "component-segment-bwb.xml")
+    with open(path) as original:
+        text = original.read()
+    flap = border("innerBorder", 0.273, 0.308, ("xsiLE", 0.727)) + border("outerBorder", 0.458, 0.458, ("xsiLE", 0.635))
+    spoiler = (border("innerBorder", 0.82, 0.82, ("xsiLE", 0.691), ("xsiTE", 0.791), rel_height=0.85) +
+               border("outerBorder", 0.946, 0.946, ("xsiLE", 0.488), ("xsiTE", 0.588), rel_height=0.45))
+    devices = (f'<controlSurfaces><trailingEdgeDevices><trailingEdgeDevice uID="Flap"><name>f</name>'
+               f'<parentUID>BWB_CST_wing_CS</parentUID><outerShape>{flap}</outerShape>{steps(0, 1)}'
+               f'</trailingEdgeDevice></trailingEdgeDevices><spoilers><spoiler uID="Spoiler"><name>s</name>'
+               f'<parentUID>BWB_CST_wing_CS</parentUID><outerShape>{spoiler}</outerShape>{steps(0, 1)}</spoiler>'
+               f'</spoilers></controlSurfaces></componentSegment>')
+    bwb = tmp_path / "bwb-devices.xml"
+    bwb.write_text(text.replace("</componentSegment>", devices, 1))
+    built = airshape("build", str(bwb))
+    assert built.returncode == 0, built.stdout + built.stderr
+    for uid in ("Flap", "Spoiler"):
+        assert re.search(rf"control_surface +{uid} +valid solid", built.stdout), built.stdout
+
+
 def test_a_device_outside_its_wing_is_one_line(tmp_path):
     with open(WITH_DEVICES) as original:
         text = original.read()

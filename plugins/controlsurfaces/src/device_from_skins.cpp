@@ -7,6 +7,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -329,7 +330,12 @@ std::optional<NamedShape> fromSkins(const WingSkins& skins, OutlineKind kind, co
   closed.insert(closed.end(), caps->begin(), caps->end());
   // Turned outwards by classifying the point at infinity: integrating the volume of trimmed
   // faces of many-knotted skins would cost more than all the rest.
-  return sewnNamedSolid(closed, geometry::Orienting::ByClassification);
+  NamedShape solid = sewnNamedSolid(closed, geometry::Orienting::ByClassification);
+  // Checked as OCCT checks a shape: on a wing of many short segments the skins' split curves at
+  // a border can leave its plane by more than their tolerance, and the cap made in that plane
+  // is flawed (a thick blended wing body). The Boolean cut builds such a device instead.
+  if (!BRepCheck_Analyzer(solid.shape).IsValid()) return std::nullopt;
+  return solid;
 }
 
 }  // namespace

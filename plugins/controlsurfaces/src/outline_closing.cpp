@@ -178,13 +178,37 @@ TopoDS_Wire wireThrough(const BorderOutline& outline, const OuterCorners& c) {
   return wire.Wire();
 }
 
+/// A straight cut lofted against a rounded edge: the cut between the skins made the outline's
+/// "rounded" edge, straight, so that both wires have the same six edges, paired one to one by
+/// the ruled loft (OCCT's loft finds no solid between a four- and a six-edge wire here). A
+/// file may shape one border of a device and leave the other straight.
+BorderOutline asShaped(const BorderOutline& across) {
+  BorderOutline shaped = across;
+  shaped.kind = BorderOutline::Kind::Shaped;
+  shaped.shaped =
+      BRepBuilderAPI_MakeEdge(inSpace(across.plane, across.lower), inSpace(across.plane, across.upper)).Edge();
+  return shaped;
+}
+
+/// The outlines with a straight cut beside a rounded edge made shaped (asShaped).
+std::vector<BorderOutline> withMatchingEdges(std::vector<BorderOutline> outlines) {
+  const auto has = [&](BorderOutline::Kind kind) {
+    return std::any_of(outlines.begin(), outlines.end(), [&](const BorderOutline& o) { return o.kind == kind; });
+  };
+  if (!has(BorderOutline::Kind::Shaped) || !has(BorderOutline::Kind::Across)) return outlines;
+  for (BorderOutline& outline : outlines)
+    if (outline.kind == BorderOutline::Kind::Across) outline = asShaped(outline);
+  return outlines;
+}
+
 bool closesBeyond(const BorderOutline& outline) {
   return outline.kind == BorderOutline::Kind::Across || outline.kind == BorderOutline::Kind::Shaped;
 }
 
 }  // namespace
 
-std::vector<TopoDS_Wire> closedOutlines(const std::vector<BorderOutline>& outlines) {
+std::vector<TopoDS_Wire> closedOutlines(const std::vector<BorderOutline>& given) {
+  const std::vector<BorderOutline> outlines = withMatchingEdges(given);
   std::vector<TopoDS_Wire> wires;
   if (outlines.size() == 2 && closesBeyond(outlines[0]) && closesBeyond(outlines[1]))
     if (const auto common = commonCorners(outlines[0], outlines[1])) {

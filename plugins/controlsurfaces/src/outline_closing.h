@@ -19,7 +19,8 @@ namespace airshape::controlsurfaces {
 /// borders stand so that common planes would not close them well (a corner at a glancing angle
 /// or come down near the wing, or past where the border planes meet), and for an airfoil or
 /// more than two outlines, each is closed on its own: 5 of its chords along its chord and 5 of
-/// its half-thicknesses above and below.
+/// its half-thicknesses above and below. A straight cut beside a rounded edge (a file that
+/// shapes one border only) is closed as a rounded edge that is straight, with the same edges.
 std::vector<TopoDS_Wire> closedOutlines(const std::vector<BorderOutline>& outlines);
 
 }  // namespace airshape::controlsurfaces
