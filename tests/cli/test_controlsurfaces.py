@@ -395,6 +395,34 @@ def test_a_flap_with_one_rounded_border_lies_between_the_straight_and_the_rounde
     assert min(one - both, straight - one) > 0.2 * (straight - both)
 
 
+def test_a_flap_whose_oblique_border_runs_inboard_is_the_wing_between_its_planes(tmp_path):
+    # The outer border from (eta 0.5, xsi 0.7) to (eta 0.3, xsi 1): its chord runs inboard. The
+    # flap is the wing aft of x = 2.4 between y = 1 and the vertical plane through (2.4, 2.5) and
+    # (3, 1.5): its span at x is 1.5 - (x - 2.4) / 0.6, its thickness 0.6 xi (1 - xi).
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    start = text.index('<trailingEdgeDevice uID="Flap">')
+    outer = text.index("<outerBorder>", start)
+    end = text.index("</outerBorder>", outer)
+    oblique = ("<outerBorder><etaLE><eta>0.5</eta><referenceUID>RectCS</referenceUID></etaLE><etaTE><eta>0.3</eta>"
+               "<referenceUID>RectCS</referenceUID></etaTE><xsiLE><xsi>0.7</xsi><referenceUID>RectCS</referenceUID>"
+               "</xsiLE>")
+    path = tmp_path / "oblique.xml"
+    path.write_text(text[:outer] + oblique + text[end:])
+    built = airshape("build", str(path))
+    assert re.search(r"control_surface +Flap +valid solid", built.stdout), built.stdout
+    volume = float(re.search(r"Flap +valid solid, volume ([0-9.e-]+)", built.stdout).group(1))
+
+    def integrand(x):
+        xi = (x - 1.0) / 2.0
+        return 0.6 * xi * (1.0 - xi) * (1.5 - (x - 2.4) / 0.6)
+
+    n = 2000  # Simpson's rule on a cubic: exact
+    h = 0.6 / n
+    expected = h / 3 * sum((1 if k in (0, n) else 4 if k % 2 else 2) * integrand(2.4 + k * h) for k in range(n + 1))
+    assert volume == pytest.approx(expected, rel=1e-5)
+
+
 def border(tag, eta_le, eta_te, *xsis, rel_height=None):
     etas = f"<etaLE><eta>{eta_le}</eta></etaLE><etaTE><eta>{eta_te}</eta></etaTE>"
     named = "".join(f"<{name}><xsi>{xsi}</xsi></{name}>" for name, xsi in xsis)
@@ -405,15 +433,21 @@ def border(tag, eta_le, eta_te, *xsis, rel_height=None):
 def test_devices_on_a_blended_wing_body_of_many_sections_are_valid_solids(tmp_path):
     # On the 55 sections of a thick blended wing body the skins' split curves leave an oblique
     # border's plane (and a spoiler's outer one) by more than their tolerance; the solids made
-    # from the skins were flawed there ("invalid curve on surface"), the Boolean cut is not.
+    # from the skins were flawed there ("invalid curve on surface"), the Boolean cut is not. The
+    # inboard flap's outer border runs inboard (etaTE < etaLE), and its outline closed 5 chords
+    # along its chord passed the inner border's plane: the ruled cutter crossed itself and cut
+    # nothing out of the wing.
     path = shared_path("data", "cpacs", "component-segment-bwb.xml")
     with open(path) as original:
         text = original.read()
     flap = border("innerBorder", 0.273, 0.308, ("xsiLE", 0.727)) + border("outerBorder", 0.458, 0.458, ("xsiLE", 0.635))
     spoiler = (border("innerBorder", 0.82, 0.82, ("xsiLE", 0.691), ("xsiTE", 0.791), rel_height=0.85) +
                border("outerBorder", 0.946, 0.946, ("xsiLE", 0.488), ("xsiTE", 0.588), rel_height=0.45))
+    inboard = border("innerBorder", 0.691, 0.691, ("xsiLE", 0.848)) + border("outerBorder", 0.728, 0.712, ("xsiLE", 0.819))
     devices = (f'<controlSurfaces><trailingEdgeDevices><trailingEdgeDevice uID="Flap"><name>f</name>'
                f'<parentUID>BWB_CST_wing_CS</parentUID><outerShape>{flap}</outerShape>{steps(0, 1)}'
+               f'</trailingEdgeDevice><trailingEdgeDevice uID="Inboard"><name>i</name>'
+               f'<parentUID>BWB_CST_wing_CS</parentUID><outerShape>{inboard}</outerShape>{steps(0, 1)}'
                f'</trailingEdgeDevice></trailingEdgeDevices><spoilers><spoiler uID="Spoiler"><name>s</name>'
                f'<parentUID>BWB_CST_wing_CS</parentUID><outerShape>{spoiler}</outerShape>{steps(0, 1)}</spoiler>'
                f'</spoilers></controlSurfaces></componentSegment>')
@@ -421,7 +455,7 @@ def test_devices_on_a_blended_wing_body_of_many_sections_are_valid_solids(tmp_pa
     bwb.write_text(text.replace("</componentSegment>", devices, 1))
     built = airshape("build", str(bwb))
     assert built.returncode == 0, built.stdout + built.stderr
-    for uid in ("Flap", "Spoiler"):
+    for uid in ("Flap", "Inboard", "Spoiler"):
         assert re.search(rf"control_surface +{uid} +valid solid", built.stdout), built.stdout
 
 

@@ -83,9 +83,10 @@ std::optional<gp_Pnt> planesMeet(const BorderPlane& plane, const Level& first, c
 /// direction, past the farther chord end by the lesser margin either outline closes with on
 /// its own (border planes all hold the component segment's upward direction, so they meet
 /// beyond the wing, if at all: a far plane as far out as the larger border's could pass where
-/// the smaller one's plane has crossed the other). Nothing where that does not close them well.
-std::optional<std::pair<OuterCorners, OuterCorners>> commonCorners(const BorderOutline& first,
-                                                                   const BorderOutline& second) {
+/// the smaller one's plane has crossed the other), times `share`. Nothing where that does not
+/// close them well.
+std::optional<std::pair<OuterCorners, OuterCorners>> commonCornersAt(const BorderOutline& first,
+                                                                     const BorderOutline& second, double share) {
   if ((first.reach > 0.0) != (second.reach > 0.0)) return std::nullopt;
   const double sense = first.reach > 0.0 ? 1.0 : -1.0;
   gp_Vec along = sense * (first.plane.x + second.plane.x);
@@ -105,7 +106,7 @@ std::optional<std::pair<OuterCorners, OuterCorners>> commonCorners(const BorderO
     beyond.offset = std::max(beyond.offset, heightOf(beyond, chordEnd));
     margin = std::min(margin, heightOf(beyond, own->upperFar) - heightOf(beyond, chordEnd));
   }
-  beyond.offset += margin;
+  beyond.offset += share * margin;
 
   for (const auto& [outline, corners] : {std::pair{&first, &a}, std::pair{&second, &b}}) {
     const std::optional<gp_Pnt> upperFar = planesMeet(outline->plane, *above, beyond);
@@ -126,6 +127,16 @@ std::optional<std::pair<OuterCorners, OuterCorners>> commonCorners(const BorderO
   };
   if (!keepsSide(first, a, second.plane) || !keepsSide(second, b, first.plane)) return std::nullopt;
   return std::pair{a, b};
+}
+
+/// Both outlines' corners in common planes (commonCornersAt), the far plane brought nearer, down
+/// to an eighth of its margin, where the border planes meet out there: an oblique border whose
+/// chord runs inboard reaches past its neighbour within a few chords.
+std::optional<std::pair<OuterCorners, OuterCorners>> commonCorners(const BorderOutline& first,
+                                                                   const BorderOutline& second) {
+  for (const double share : {1.0, 0.5, 0.25, 0.125})
+    if (auto corners = commonCornersAt(first, second, share)) return corners;
+  return std::nullopt;
 }
 
 /// Two panels' corners with their lids in one plane: the plane through three of the corners

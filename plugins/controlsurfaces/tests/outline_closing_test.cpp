@@ -84,33 +84,34 @@ TEST(OutlineClosing, FarEdgesOfTwoBordersLieInCommonPlanes) {
   EXPECT_EQ(planes, 6);  // the two borders, lid, far side, bottom, and the cut (vertical at both borders)
 }
 
-TEST(OutlineClosing, BorderPlanesMeetingInsideTheCommonReachCloseAlone) {
+TEST(OutlineClosing, BorderPlanesMeetingInsideTheCommonReachCloseNearerOrAlone) {
   // A large inner border (chord 4) and a small outer one (chord 0.5) whose plane is turned
-  // 0.4 rad towards it, so that the two planes meet 5.87 along x: common far corners, 2 past the
-  // trailing edges (the small border's own margin), would lie beyond that line.
+  // towards it: common far corners 2 past the trailing edges (the small border's own margin)
+  // would lie beyond the line where the planes meet.
   const BorderOutline inner = cutAcross(0.0, 0.0, 4.0, 0.4);
-  const double turn = 0.4;
   const gp_Pnt outerFront(3.5, 1.0, 0.0);
-  const BorderPlane turned(outerFront, outerFront.Translated(0.5 * gp_Vec(std::cos(turn), -std::sin(turn), 0.0)),
-                           gp_Vec(0, 0, 1));
-  const BorderOutline outer = cutIn(turned, 0.4);  // as thick as the inner border, so the lid is level
-  const std::vector<TopoDS_Wire> wires = closedOutlines({inner, outer});
-  ASSERT_EQ(wires.size(), 2u);
-  // Closed alone: the far corners 5 chords along each border's own chord.
-  const std::vector<gp_Pnt> innerCorners = cornersOf(wires[0]);
-  ASSERT_EQ(innerCorners.size(), 4u);
-  EXPECT_NEAR(innerCorners[2].X(), 20.0, 1e-12);
-  EXPECT_NEAR(innerCorners[2].Z(), 1.0, 1e-12);
+  const auto outerTurnedBy = [&](double turn) {
+    const BorderPlane turned(outerFront, outerFront.Translated(0.5 * gp_Vec(std::cos(turn), -std::sin(turn), 0.0)),
+                             gp_Vec(0, 0, 1));
+    return cutIn(turned, 0.4);  // as thick as the inner border, so the lid is level
+  };
+  // Turned 0.4 rad, the planes meet at x = 3.5 + cot 0.4 = 5.87: the far plane is brought
+  // nearer (half the margin, x = 5), still past both trailing edges.
+  const std::vector<gp_Pnt> nearer = cornersOf(closedOutlines({inner, outerTurnedBy(0.4)})[0]);
+  ASSERT_EQ(nearer.size(), 4u);
+  EXPECT_NEAR(nearer[2].X(), 5.0, 1e-9);
 
-  // Turned a little less (0.3 rad, meeting at 6.6), the common far corners at 6.0 are used.
-  const BorderPlane lessTurned(outerFront, outerFront.Translated(0.5 * gp_Vec(std::cos(0.3), -std::sin(0.3), 0.0)),
-                               gp_Vec(0, 0, 1));
-  BorderOutline outerLessTurned = outer;
-  outerLessTurned.plane = lessTurned;
-  const std::vector<gp_Pnt> common = cornersOf(closedOutlines({inner, outerLessTurned})[0]);
+  // Turned 0.96 rad, they meet at 4.21, before an eighth of the margin (4.25): closed alone, the
+  // far corners 5 chords along each border's own chord.
+  const std::vector<gp_Pnt> alone = cornersOf(closedOutlines({inner, outerTurnedBy(0.96)})[0]);
+  ASSERT_EQ(alone.size(), 4u);
+  EXPECT_NEAR(alone[2].X(), 20.0, 1e-12);
+  EXPECT_NEAR(alone[2].Z(), 1.0, 1e-12);
+
+  // Turned 0.3 rad (meeting at 6.74), the common far corners at the whole margin (6.0) are used.
+  const std::vector<gp_Pnt> common = cornersOf(closedOutlines({inner, outerTurnedBy(0.3)})[0]);
   ASSERT_EQ(common.size(), 4u);
-  EXPECT_LT(common[2].X(), 6.6);
-  EXPECT_GT(common[2].X(), 5.0);
+  EXPECT_NEAR(common[2].X(), 6.0, 1e-9);
 }
 
 /// The plane of a panel's border at y = `y`: its chord along x from x = 0, twisted along y.
