@@ -459,6 +459,36 @@ def test_devices_on_a_blended_wing_body_of_many_sections_are_valid_solids(tmp_pa
         assert re.search(rf"control_surface +{uid} +valid solid", built.stdout), built.stdout
 
 
+def test_a_slat_whose_boolean_cut_made_no_solid_is_cut_with_a_fuzzy_tolerance(tmp_path):
+    # The example airliner with one slat: a hollow back at eta 0.795, a straight back at 0.997
+    # (near the tip), their figures as a generator wrote them (rounded, the exact Boolean
+    # succeeds). OCCT's exact Boolean left faces it could not place and made no solid; with its
+    # fuzzy tolerance it cuts a valid solid, between the slat with two straight backs and the one
+    # with two hollow ones, and says so in one warning naming the device.
+    with open(os.path.join(SOURCE, "examples", "generic-airliner.xml")) as original:
+        text = re.sub(r"<wingFuelTanks>.*?</wingFuelTanks>", "", original.read(), flags=re.S)
+    hollow = "<innerShape><relHeightTE>0.765937739088508</relHeightTE><xsiTE>0.5917854534663782</xsiTE></innerShape>"
+
+    def slat_volume(inner, outer, name):
+        borders = (f"<innerBorder><etaLE><eta>0.7948988431668046</eta></etaLE><xsiTE><xsi>0.25401747542327247</xsi></xsiTE>{inner}</innerBorder>"
+                   f"<outerBorder><etaLE><eta>0.996922652492971</eta></etaLE><xsiTE><xsi>0.20161098797951943</xsi></xsiTE>{outer}</outerBorder>")
+        slat = (f'<controlSurfaces><leadingEdgeDevices><leadingEdgeDevice uID="Slat"><name>s</name>'
+                f'<parentUID>Wing_CS</parentUID><outerShape>{borders}</outerShape>{steps(0, 1)}'
+                f'</leadingEdgeDevice></leadingEdgeDevices></controlSurfaces>')
+        path = tmp_path / f"{name}.xml"
+        path.write_text(re.sub(r"<controlSurfaces>.*?</controlSurfaces>", slat, text, count=1, flags=re.S))
+        built = airshape("build", str(path))
+        assert re.search(r"control_surface +Slat +valid solid", built.stdout), built.stdout
+        return float(re.search(r"Slat +valid solid, volume ([0-9.e-]+)", built.stdout).group(1)), built.stderr
+
+    straight, _ = slat_volume("", "", "straight")
+    both, _ = slat_volume(hollow, hollow, "both")
+    mixed, warnings = slat_volume(hollow, "", "mixed")
+    assert both < mixed < straight, (both, mixed, straight)
+    fuzzy = [line for line in warnings.splitlines() if "fuzzy tolerance" in line]
+    assert len(fuzzy) == 1 and "leadingEdgeDevice[1]/outerShape: cut out of its wing" in fuzzy[0], warnings
+
+
 def test_a_device_outside_its_wing_is_one_line(tmp_path):
     with open(WITH_DEVICES) as original:
         text = original.read()

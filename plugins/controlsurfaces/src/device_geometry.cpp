@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepLib.hxx>
@@ -301,6 +303,26 @@ std::optional<NamedShape> DeviceGeometry::fromWingSkins() const {
                          {device_.uid + "/", cutterFaceName(device_)}, 1e-8 * borders.size);
 }
 
+namespace {
+
+/// The Boolean common of a wing and a device's cutter, with OCCT's fuzzy tolerance `fuzzy`
+/// (none at 0). Most of the time goes into intersecting the cutter's faces and edges with the
+/// wing's (docs/performance.md): the pairs are intersected on every core.
+std::unique_ptr<BRepAlgoAPI_Common> commonOf(const TopoDS_Shape& wing, const TopoDS_Shape& cutter, double fuzzy) {
+  auto common = std::make_unique<BRepAlgoAPI_Common>();
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(wing);
+  tools.Append(cutter);
+  common->SetArguments(arguments);
+  common->SetTools(tools);
+  common->SetRunParallel(true);
+  if (fuzzy > 0.0) common->SetFuzzyValue(fuzzy);
+  common->Build();
+  return common;
+}
+
+}  // namespace
+
 NamedShape DeviceGeometry::atRest() const {
   if (std::optional<NamedShape> direct = fromWingSkins()) return std::move(*direct);
   const NamedShape cut = cutter();
@@ -309,22 +331,29 @@ NamedShape DeviceGeometry::atRest() const {
   NamedShape wingFaces{wing.shape, {}};
   for (const auto& [name, face] : wing.faces)
     wingFaces.faces.emplace_back(device_.uid + "/" + deviceFaceName(name), face);
-  // Most of the time goes into intersecting the cutter's faces and edges with the wing's
-  // (docs/performance.md): the pairs are intersected on every core.
-  BRepAlgoAPI_Common common;
-  TopTools_ListOfShape arguments, tools;
-  arguments.Append(wing.shape);
-  tools.Append(cut.shape);
-  common.SetArguments(arguments);
-  common.SetTools(tools);
-  common.SetRunParallel(true);
-  common.Build();
-  if (!common.IsDone() || common.HasErrors())
+  // OCCT's Boolean may leave faces it cannot place and make no solid (a slat's hollow back
+  // lofted against a straight one, its outer border near the tip, on the example airliner): tried
+  // again with its fuzzy tolerance, a millionth and then a hundred-thousandth of the device's
+  // size, with a warning.
+  std::unique_ptr<BRepAlgoAPI_Common> common = commonOf(wing.shape, cut.shape, 0.0);
+  for (const double share : {1e-6, 1e-5}) {
+    if (!common->IsDone() || common->HasErrors()) break;
+    if (TopExp_Explorer(common->Shape(), TopAbs_SOLID).More()) break;
+    const double fuzzy = share * outlines().size;
+    auto retried = commonOf(wing.shape, cut.shape, fuzzy);
+    if (!retried->IsDone() || retried->HasErrors() || !TopExp_Explorer(retried->Shape(), TopAbs_SOLID).More()) continue;
+    std::ostringstream text;
+    text << "cut out of its wing with the Boolean's fuzzy tolerance of " << std::setprecision(2) << fuzzy
+         << " m: without it the cut made no solid (faces meeting at a glancing angle)";
+    configuration_.warnAboutGeometry({Problem::Severity::Warning, device_.xpath + "/outerShape", text.str()});
+    common = std::move(retried);
+  }
+  if (!common->IsDone() || common->HasErrors())
     throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
-  if (!TopExp_Explorer(common.Shape(), TopAbs_SOLID).More())
+  if (!TopExp_Explorer(common->Shape(), TopAbs_SOLID).More())
     throw Error(ErrorCode::InvalidModel, "the device's outline cuts nothing out of its wing", {},
                 device_.xpath + "/outerShape");
-  NamedShape shape = namedBooleanResult(common, {&wingFaces, &cut});
+  NamedShape shape = namedBooleanResult(*common, {&wingFaces, &cut});
   // Where a border lies in a cap of the wing, the Boolean leaves edges with curves on their
   // faces only; measures and exports need them in space too.
   BRepLib::BuildCurves3d(shape.shape);
