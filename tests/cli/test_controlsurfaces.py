@@ -503,6 +503,24 @@ def test_a_device_outside_its_wing_is_one_line(tmp_path):
     assert answer["error"].endswith("spoiler[1]/outerShape: the device's outline cuts nothing out of its wing")
 
 
+def test_borders_that_cross_inside_the_wing_are_one_line(tmp_path):
+    # The flap's outer border from (eta 0.5, xsi 0.7) to (eta 0.1, xsi 1) crosses its inner border
+    # (eta 0.2 from xsi 0.7 to 1) at eta 0.2, xsi 0.925.
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    start = text.index('<trailingEdgeDevice uID="Flap">')
+    outer = text.index("<outerBorder>", start)
+    end = text.index("</outerBorder>", outer)
+    crossing = ("<outerBorder><etaLE><eta>0.5</eta></etaLE><etaTE><eta>0.1</eta></etaTE><xsiLE><xsi>0.7</xsi></xsiLE>")
+    path = tmp_path / "crossing.xml"
+    path.write_text(text[:outer] + crossing + text[end:])
+    built = airshape("build", str(path))
+    assert built.returncode == 1
+    assert re.search(r"Flap +FAILED: \S+trailingEdgeDevice\[1\]/outerShape: the inner and the outer border cross inside "
+                     r"the wing \(at component segment eta 0.2, xsi 0.925\)", built.stdout), built.stdout
+    assert re.search(r"Slat +valid solid", built.stdout), "the other devices build"
+
+
 def test_a_step_value_that_is_not_finite_is_one_line_naming_it(tmp_path):
     with open(WITH_DEVICES) as original:
         text = original.read()

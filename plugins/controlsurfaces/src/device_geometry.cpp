@@ -1,6 +1,7 @@
 #include "device_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <memory>
@@ -19,6 +20,8 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Lin.hxx>
+#include <gp_Pnt2d.hxx>
+#include <gp_Vec2d.hxx>
 
 #include "airshape/configuration.h"
 #include "airshape/error.h"
@@ -205,8 +208,29 @@ NamedShape DeviceGeometry::cutter() const {
                                                     [&] { return std::make_shared<const NamedShape>(ruledCutter()); });
 }
 
+void DeviceGeometry::checkBordersApart() const {
+  // Each border's chord from its leading- to its trailing-edge point, as (eta, xsi).
+  const auto chordOf = [&](const BorderDefinition& border) {
+    return std::array<gp_Pnt2d, 2>{gp_Pnt2d(componentSegmentEta(border.etaLE, border.xpath + "/etaLE"), border.xsiLE),
+                                   gp_Pnt2d(componentSegmentEta(border.etaTE, border.xpath + "/etaTE"), border.xsiTE)};
+  };
+  const auto [a, b] = chordOf(device_.innerBorder);
+  const auto [c, d] = chordOf(device_.outerBorder);
+  const auto side = [](const gp_Pnt2d& from, const gp_Pnt2d& to, const gp_Pnt2d& p) {
+    return gp_Vec2d(from, to).Crossed(gp_Vec2d(from, p));
+  };
+  const double sideC = side(a, b, c), sideD = side(a, b, d), sideA = side(c, d, a), sideB = side(c, d, b);
+  if (!(sideC * sideD < 0.0 && sideA * sideB < 0.0)) return;  // touching at an end is a pointed device
+  const gp_Pnt2d crossing = a.Translated(sideA / (sideA - sideB) * gp_Vec2d(a, b));
+  std::ostringstream text;
+  text << "the inner and the outer border cross inside the wing (at component segment eta " << std::setprecision(4)
+       << crossing.X() << ", xsi " << crossing.Y() << "): the device between them would fold through itself";
+  throw Error(ErrorCode::InvalidModel, text.str(), {}, device_.xpath + "/outerShape");
+}
+
 DeviceGeometry::Outlines DeviceGeometry::outlines() const {
   return *configuration_.cache().obtain<Outlines>("device-outlines:" + device_.uid, [&] {
+    checkBordersApart();
     const BorderPlane innerPlane = borderPlaneOf(device_.innerBorder), outerPlane = borderPlaneOf(device_.outerBorder);
     const double size = innerPlane.chord + outerPlane.chord + innerPlane.origin.Distance(outerPlane.origin);
     LineCrossings wing(wing_.cleanSolid(configuration_, device_.wingUid));

@@ -68,6 +68,9 @@ class DeviceGeometry {
     double size = 0.0;
   };
   Outlines outlines() const;
+  /// Throws Error naming the outer shape where the borders' chords cross inside the wing (in
+  /// component segment eta and xsi): the device between them would fold through itself.
+  void checkBordersApart() const;
   /// The cutter, built.
   NamedShape ruledCutter() const;
   /// The device at rest made from the wing's skins without a Boolean operation
