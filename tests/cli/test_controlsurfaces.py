@@ -503,6 +503,42 @@ def test_a_device_outside_its_wing_is_one_line(tmp_path):
     assert answer["error"].endswith("spoiler[1]/outerShape: the device's outline cuts nothing out of its wing")
 
 
+@pytest.mark.parametrize("etas,xsis", [((0.3, 0.6), (0.65, 1.0)), ((0.3, 0.6), (0.0, 0.3)), ((0.0, 0.3), (0.5, 0.65))])
+def test_a_spoiler_at_the_wings_edges_and_root_is_the_upper_half_there(tmp_path, etas, xsis):
+    # A spoiler reaching the trailing edge (the line there touches the wing in one point), one
+    # from the leading edge, and one at the root (its border in the root's cap): the upper half
+    # of the wing between its xsi over its span, in closed form.
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    start = text.index('<spoiler uID="Spoiler">')
+    end = text.index("</outerShape>", start)
+    shape = text[start:end]
+    values = {"<eta>0.3</eta>": etas[0], "<eta>0.6</eta>": etas[1], "<xsi>0.5</xsi>": xsis[0], "<xsi>0.65</xsi>": xsis[1]}
+    shape = re.sub("|".join(values), lambda m: re.sub(r">.*<", f">{values[m.group(0)]}<", m.group(0)), shape)
+    path = tmp_path / "spoiler.xml"
+    path.write_text(text[:start] + shape + text[end:])
+    answer = json.loads(airshape("query", str(path), stdin=json.dumps({"op": "component_volume", "uid": "Spoiler"}) +
+                                 "\n").stdout)
+    span = 5.0 * (etas[1] - etas[0])
+    assert answer["ok"] == pytest.approx(span * (section_area_aft(xsis[0]) - section_area_aft(xsis[1])) / 2, rel=1e-5)
+
+
+def test_a_spoiler_from_a_dihedral_wings_root_to_its_trailing_edge_is_a_valid_solid(tmp_path):
+    # The example airliner's wing has dihedral: the spoiler's inner border plane (at eta 0) leans
+    # out through the root's cap above the chord, where its line meets the wing on the chord
+    # line; the wire was closed at no height above it and no solid joined the borders.
+    with open(os.path.join(SOURCE, "examples", "generic-airliner.xml")) as original:
+        text = re.sub(r"<wingFuelTanks>.*?</wingFuelTanks>", "", original.read(), flags=re.S)
+    borders = "".join(f"<{tag}><etaLE><eta>{eta}</eta></etaLE><xsiLE><xsi>0.8</xsi></xsiLE><xsiTE><xsi>1.0</xsi></xsiTE>"
+                      f"</{tag}>" for tag, eta in (("innerBorder", 0.0), ("outerBorder", 0.2)))
+    spoiler = (f'<controlSurfaces><spoilers><spoiler uID="Spoiler"><name>s</name><parentUID>Wing_CS</parentUID>'
+               f'<outerShape>{borders}</outerShape>{steps(0, 1)}</spoiler></spoilers></controlSurfaces>')
+    path = tmp_path / "root-spoiler.xml"
+    path.write_text(re.sub(r"<controlSurfaces>.*?</controlSurfaces>", spoiler, text, count=1, flags=re.S))
+    built = airshape("build", str(path))
+    assert re.search(r"control_surface +Spoiler +valid solid", built.stdout), built.stdout
+
+
 def test_borders_that_cross_inside_the_wing_are_one_line(tmp_path):
     # The flap's outer border from (eta 0.5, xsi 0.7) to (eta 0.1, xsi 1) crosses its inner border
     # (eta 0.2 from xsi 0.7 to 1) at eta 0.2, xsi 0.925.

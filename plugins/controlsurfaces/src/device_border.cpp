@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <vector>
 
 #include <BRepBuilderAPI_GTransform.hxx>
@@ -35,6 +37,16 @@ BorderDefinition withMissing(BorderDefinition border, const char* element) {
 /// beyond the device, so that the ruled solid between two borders surely leaves the wing.
 constexpr double kReach = 5.0;
 
+/// The least height (in chords of the border) the wire closes at above and below the chord
+/// line: where the border's line meets the wing on the chord line (a spoiler at a root whose
+/// plane leans out through the root's cap, a cut at the trailing edge), kReach times the
+/// skins' height would be none.
+constexpr double kLeastHeight = 0.1;
+
+double closingHeight(const BorderPlane& plane, double reach, double skinHeight) {
+  return std::max(std::abs(reach) * skinHeight, kLeastHeight * plane.chord);
+}
+
 /// Where a line across the wing section meets a skin: the point and the skin's direction
 /// there, both in the border plane's coordinates.
 struct SkinCrossing {
@@ -53,12 +65,41 @@ gp_Vec2d inPlane(const BorderPlane& plane, const gp_Vec& v) { return {v.Dot(plan
 /// of the chord counted from the trailing-edge point (1 is the leading-edge point).
 std::pair<SkinCrossing, SkinCrossing> skinCrossings(const BorderDefinition& border, const BorderPlane& plane,
                                                     LineCrossings& wing, double xsi) {
-  const gp_Pnt start = plane.at((1.0 - xsi) * plane.chord, 0.0);
-  const std::vector<LineCrossing> hits = wing.of(gp_Lin(start, gp_Dir(plane.y)), 1e-9 * plane.chord);
-  if (hits.size() < 2)
-    throw Error(ErrorCode::InvalidModel,
-                "the border does not cross both skins of the wing at xsi " + std::to_string(xsi) + " of its chord", {},
-                border.xpath);
+  // A border in the wing's root or tip lies in its cap: the line there runs within that face,
+  // which it does not cross.
+  const auto hitsAt = [&](double share) {
+    std::vector<LineCrossing> hits =
+        wing.of(gp_Lin(plane.at((1.0 - share) * plane.chord, 0.0), gp_Dir(plane.y)), 1e-9 * plane.chord);
+    hits.erase(
+        std::remove_if(hits.begin(), hits.end(),
+                       [&](const LineCrossing& hit) { return std::abs(hit.normal.Normalized().Dot(plane.y)) < 1e-9; }),
+        hits.end());
+    return hits;
+  };
+  std::vector<LineCrossing> hits = hitsAt(xsi);
+  // At an end of the chord on the wing's own edge (a spoiler reaching the trailing edge, a
+  // panel from the leading edge) the line touches the wing in one point or runs along a blunt
+  // trailing edge: the crossings a millionth of the chord inside stand for the edge (up to a
+  // ten-thousandth where the skins meet in a cusp). Where the chord runs a little off the
+  // section's own (its ends at different segment etas), the line there passes beside the thin
+  // nose: the end itself, on the wing's edge, is both crossings, where the skins meet.
+  const bool atChordEnd = xsi <= 0.0 || xsi >= 1.0;
+  for (const double inside : {1e-6, 1e-5, 1e-4})
+    if (hits.size() < 2 && atChordEnd) hits = hitsAt(xsi <= 0.0 ? inside : 1.0 - inside);
+  if (hits.size() < 2 && atChordEnd) {
+    const gp_Pnt end = plane.at((1.0 - xsi) * plane.chord, 0.0);
+    const double near = 1e-7 * plane.chord;
+    if (nearestToLine(wing.shape(), gp_Lin(end, gp_Dir(plane.y)), near).Distance(end) <= 2.0 * near) {
+      const SkinCrossing edge{inPlane(plane, end), gp_Vec2d(xsi >= 1.0 ? 1.0 : -1.0, 0.0)};
+      return {edge, edge};
+    }
+  }
+  if (hits.size() < 2) {
+    std::ostringstream text;
+    text << "the border's line across the wing at " << std::setprecision(4) << 1.0 - xsi
+         << " of its chord (from its leading edge) does not cross both skins of the wing";
+    throw Error(ErrorCode::InvalidModel, text.str(), {}, border.xpath);
+  }
   auto crossing = [&](const LineCrossing& hit) {
     return SkinCrossing{inPlane(plane, hit.point), inPlane(plane, plane.z.Crossed(hit.normal))};
   };
@@ -76,7 +117,7 @@ BorderOutline acrossOutline(const BorderPlane& plane, const gp_Pnt2d& lower, con
   if (outline.upOut.Y() < 0) outline.upOut.Reverse();
   if (outline.downOut.Y() > 0) outline.downOut.Reverse();
   outline.reach = reach;
-  outline.height = std::abs(reach) * std::max(std::abs(lower.Y()), std::abs(upper.Y()));
+  outline.height = closingHeight(plane, reach, std::max(std::abs(lower.Y()), std::abs(upper.Y())));
   return outline;
 }
 
@@ -130,7 +171,7 @@ BorderOutline shapedOutline(const BorderDefinition& border, const BorderPlane& p
   if (outline.upOut.Y() < 0) outline.upOut.Reverse();
   if (outline.downOut.Y() > 0) outline.downOut.Reverse();
   outline.reach = reach;
-  outline.height = std::abs(reach) * std::max(std::abs(lower.point.Y()), std::abs(upper.point.Y()));
+  outline.height = closingHeight(plane, reach, std::max(std::abs(lower.point.Y()), std::abs(upper.point.Y())));
   return outline;
 }
 
@@ -146,7 +187,8 @@ BorderOutline panelOutline(const BorderDefinition& border, const BorderPlane& pl
   outline.upper = lowerSide(frontLower, frontUpper);
   outline.lower = lowerSide(backLower, backUpper);
   outline.upOut = outline.downOut = gp_Vec2d(0.0, 1.0);
-  outline.height = kReach * std::max(std::abs(frontUpper.point.Y()), std::abs(backUpper.point.Y()));
+  outline.height =
+      closingHeight(plane, kReach, std::max(std::abs(frontUpper.point.Y()), std::abs(backUpper.point.Y())));
   return outline;
 }
 
