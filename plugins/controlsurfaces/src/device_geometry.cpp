@@ -1,7 +1,6 @@
 #include "device_geometry.h"
 
 #include <algorithm>
-#include <BRepTools.hxx>
 #include <array>
 #include <cmath>
 #include <iomanip>
@@ -248,7 +247,6 @@ NamedShape DeviceGeometry::ruledCutter() const {
   wires.insert(wires.end(), outline.between.rbegin(), outline.between.rend());
   wires.push_back(outline.inner);
   const geometry::RuledSections loft = geometry::ruledThroughSections(wires);
-  for (std::size_t i = 0; i < wires.size(); ++i) BRepTools::Write(wires[i], ("/tmp/fz/dbg_wire" + std::to_string(i) + ".brep").c_str());
   if (loft.solid.IsNull())
     throw Error(ErrorCode::InvalidModel, "no solid joins the device's inner and outer border", {},
                 device_.xpath + "/outerShape");
