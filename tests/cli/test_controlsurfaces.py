@@ -459,19 +459,31 @@ def test_devices_on_a_blended_wing_body_of_many_sections_are_valid_solids(tmp_pa
         assert re.search(rf"control_surface +{uid} +valid solid", built.stdout), built.stdout
 
 
-def test_a_slat_whose_boolean_cut_made_no_solid_is_cut_with_a_fuzzy_tolerance(tmp_path):
-    # The example airliner with one slat: a hollow back at eta 0.795, a straight back at 0.997
-    # (near the tip), their figures as a generator wrote them (rounded, the exact Boolean
-    # succeeds). OCCT's exact Boolean left faces it could not place and made no solid; with its
-    # fuzzy tolerance it cuts a valid solid, between the slat with two straight backs and the one
-    # with two hollow ones, and says so in one warning naming the device.
+# Two slats of a generator on the example airliner: a hollow back at the inner border, a straight
+# back at the outer one, their figures as written (rounded, the exact Boolean succeeds).
+SLATS = {
+    "no solid": ((0.7948988431668046, 0.25401747542327247, 0.765937739088508, 0.5917854534663782),
+                 (0.996922652492971, 0.20161098797951943), "left faces it could not place and made no solid"),
+    "flawed solid": ((0.23018927943563355, 0.10043895259306589, 0.4969488736638346, 0.36322918552907835),
+                     (0.5138875299380804, 0.11399368115195978), "made a flawed solid"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(SLATS))
+def test_a_slat_whose_exact_boolean_cut_failed_is_cut_with_a_fuzzy_tolerance(tmp_path, case):
+    # OCCT's exact Boolean left faces it could not place and made no solid (the outer border near
+    # the tip), or made a solid with a self-intersecting wire; with its fuzzy tolerance it cuts a
+    # valid solid, between the slat with two straight backs and the one with two hollow ones,
+    # and says so in one warning naming the device and what the exact cut did.
+    (inner_eta, inner_xsi, height, middle), (outer_eta, outer_xsi), what = SLATS[case]
     with open(os.path.join(SOURCE, "examples", "generic-airliner.xml")) as original:
         text = re.sub(r"<wingFuelTanks>.*?</wingFuelTanks>", "", original.read(), flags=re.S)
-    hollow = "<innerShape><relHeightTE>0.765937739088508</relHeightTE><xsiTE>0.5917854534663782</xsiTE></innerShape>"
+    hollow = f"<innerShape><relHeightTE>{height}</relHeightTE><xsiTE>{middle}</xsiTE></innerShape>"
 
     def slat_volume(inner, outer, name):
-        borders = (f"<innerBorder><etaLE><eta>0.7948988431668046</eta></etaLE><xsiTE><xsi>0.25401747542327247</xsi></xsiTE>{inner}</innerBorder>"
-                   f"<outerBorder><etaLE><eta>0.996922652492971</eta></etaLE><xsiTE><xsi>0.20161098797951943</xsi></xsiTE>{outer}</outerBorder>")
+        borders = (f"<innerBorder><etaLE><eta>{inner_eta}</eta></etaLE><xsiTE><xsi>{inner_xsi}</xsi></xsiTE>{inner}"
+                   f"</innerBorder><outerBorder><etaLE><eta>{outer_eta}</eta></etaLE><xsiTE><xsi>{outer_xsi}</xsi>"
+                   f"</xsiTE>{outer}</outerBorder>")
         slat = (f'<controlSurfaces><leadingEdgeDevices><leadingEdgeDevice uID="Slat"><name>s</name>'
                 f'<parentUID>Wing_CS</parentUID><outerShape>{borders}</outerShape>{steps(0, 1)}'
                 f'</leadingEdgeDevice></leadingEdgeDevices></controlSurfaces>')
@@ -487,6 +499,7 @@ def test_a_slat_whose_boolean_cut_made_no_solid_is_cut_with_a_fuzzy_tolerance(tm
     assert both < mixed < straight, (both, mixed, straight)
     fuzzy = [line for line in warnings.splitlines() if "fuzzy tolerance" in line]
     assert len(fuzzy) == 1 and "leadingEdgeDevice[1]/outerShape: cut out of its wing" in fuzzy[0], warnings
+    assert fuzzy[0].endswith("without it OCCT's Boolean " + what), fuzzy[0]
 
 
 def test_a_device_outside_its_wing_is_one_line(tmp_path):

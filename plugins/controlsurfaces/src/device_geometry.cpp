@@ -5,9 +5,12 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -345,6 +348,15 @@ std::unique_ptr<BRepAlgoAPI_Common> commonOf(const TopoDS_Shape& wing, const Top
   return common;
 }
 
+/// What is wrong with a Boolean common's result, in words: no solid, a flawed one (as OCCT
+/// checks shapes), or a failure; nothing when it is a valid solid.
+std::optional<std::string> flawOf(BRepAlgoAPI_Common& common) {
+  if (!common.IsDone() || common.HasErrors()) return "failed";
+  if (!TopExp_Explorer(common.Shape(), TopAbs_SOLID).More()) return "left faces it could not place and made no solid";
+  if (!BRepCheck_Analyzer(common.Shape()).IsValid()) return "made a flawed solid";
+  return std::nullopt;
+}
+
 }  // namespace
 
 NamedShape DeviceGeometry::atRest() const {
@@ -355,22 +367,23 @@ NamedShape DeviceGeometry::atRest() const {
   NamedShape wingFaces{wing.shape, {}};
   for (const auto& [name, face] : wing.faces)
     wingFaces.faces.emplace_back(device_.uid + "/" + deviceFaceName(name), face);
-  // OCCT's Boolean may leave faces it cannot place and make no solid (a slat's hollow back
-  // lofted against a straight one, its outer border near the tip, on the example airliner): tried
-  // again with its fuzzy tolerance, a millionth and then a hundred-thousandth of the device's
-  // size, with a warning.
+  // OCCT's exact Boolean may leave faces it cannot place and make no solid, or make a flawed one
+  // (a slat's hollow back lofted against a straight one on the example airliner): tried again
+  // with its fuzzy tolerance, a millionth and then a hundred-thousandth of the device's size,
+  // with a warning; where neither does better, the exact result stands.
   std::unique_ptr<BRepAlgoAPI_Common> common = commonOf(wing.shape, cut.shape, 0.0);
-  for (const double share : {1e-6, 1e-5}) {
-    if (!common->IsDone() || common->HasErrors()) break;
-    if (TopExp_Explorer(common->Shape(), TopAbs_SOLID).More()) break;
-    const double fuzzy = share * outlines().size;
-    auto retried = commonOf(wing.shape, cut.shape, fuzzy);
-    if (!retried->IsDone() || retried->HasErrors() || !TopExp_Explorer(retried->Shape(), TopAbs_SOLID).More()) continue;
-    std::ostringstream text;
-    text << "cut out of its wing with the Boolean's fuzzy tolerance of " << std::setprecision(2) << fuzzy
-         << " m: without it the cut made no solid (faces meeting at a glancing angle)";
-    configuration_.warnAboutGeometry({Problem::Severity::Warning, device_.xpath + "/outerShape", text.str()});
-    common = std::move(retried);
+  if (const std::optional<std::string> flaw = flawOf(*common)) {
+    for (const double share : {1e-6, 1e-5}) {
+      const double fuzzy = share * outlines().size;
+      std::unique_ptr<BRepAlgoAPI_Common> retried = commonOf(wing.shape, cut.shape, fuzzy);
+      if (flawOf(*retried)) continue;
+      std::ostringstream text;
+      text << "cut out of its wing with the Boolean's fuzzy tolerance of " << std::setprecision(2) << fuzzy
+           << " m: without it OCCT's Boolean " << *flaw;
+      configuration_.warnAboutGeometry({Problem::Severity::Warning, device_.xpath + "/outerShape", text.str()});
+      common = std::move(retried);
+      break;
+    }
   }
   if (!common->IsDone() || common->HasErrors())
     throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
