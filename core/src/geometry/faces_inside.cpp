@@ -8,6 +8,7 @@
 #include <TopoDS.hxx>
 
 #include "airshape/error.h"
+#include "airshape/geometry/outer_wires_apart.h"
 
 namespace airshape::geometry {
 
@@ -35,7 +36,7 @@ std::vector<TopoDS_Face> facesInside(const TopoDS_Shape& faces, const TopoDS_Sha
   const auto common = commonWith(arguments, solid);
   std::vector<TopoDS_Face> inside;
   for (TopExp_Explorer face(common->Shape(), TopAbs_FACE); face.More(); face.Next())
-    inside.push_back(TopoDS::Face(face.Current()));
+    for (const TopoDS_Face& part : outerWiresApart(TopoDS::Face(face.Current()))) inside.push_back(part);
   return inside;
 }
 
@@ -47,7 +48,8 @@ std::vector<std::vector<TopoDS_Face>> facesInsideEach(const std::vector<TopoDS_F
   std::vector<std::vector<TopoDS_Face>> inside;
   for (const TopoDS_Face& face : faces) {
     std::vector<TopoDS_Face> parts;
-    for (const TopoDS_Shape& part : common->Modified(face)) parts.push_back(TopoDS::Face(part));
+    for (const TopoDS_Shape& part : common->Modified(face))
+      for (const TopoDS_Face& apart : outerWiresApart(TopoDS::Face(part))) parts.push_back(apart);
     if (parts.empty() && !common->IsDeleted(face)) parts.push_back(face);  // wholly inside, unchanged
     inside.push_back(parts);
   }

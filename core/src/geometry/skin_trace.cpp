@@ -102,10 +102,10 @@ std::vector<double> planeCrossings(const Handle(Geom_BSplineCurve) & curve, cons
       above = above || s >= 0.0;
     }
     if (!below || !above) continue;
-    constexpr int kSamples = 4;
+    constexpr int kStepsPerSpan = 4;
     double previousParameter = a, previousValue = valueAt(a);
-    for (int k = 1; k <= kSamples; ++k) {
-      const double parameter = a + (b - a) * k / kSamples;
+    for (int k = 1; k <= kStepsPerSpan; ++k) {
+      const double parameter = a + (b - a) * k / kStepsPerSpan;
       const double value = valueAt(parameter);
       if (previousValue == 0.0)
         roots.push_back(previousParameter);
