@@ -334,6 +334,32 @@ def test_structural_models_of_a_wing_and_its_flap_are_both_written_in_order(tmp_
     assert joined["duplicates"] == 0 and joined["junctions"] >= 2, joined
 
 
+def test_a_rib_that_misses_its_component_segment_is_left_out_of_its_set_with_a_warning(tmp_path):
+    # Three ribs from the leading edge (at y = 0.1, 2.3, 4.5) between spars at xi 0.2 and 0.6,
+    # turned 45 degrees so that they run inboard going aft: the first has passed the root
+    # before it reaches the front spar. The other two are built, each sqrt(2) times the
+    # chordwise rib between the spars.
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0, 0.6) +
+                 position("PosR1", 1, 0.6))
+    turned = "<ribRotationReference>globalY</ribRotationReference><z>45</z>"
+    spars = segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1")
+    one = 2 * 0.6 * ((0.6 ** 2 / 2 - 0.6 ** 3 / 3) - (0.2 ** 2 / 2 - 0.2 ** 3 / 3))
+    path = with_spars(tmp_path, positions, spars,
+                      ribs("Ribs", 0.02, 0.9, 3, rotation=turned, reference="leadingEdge", rib_start="Front"))
+    built = airshape("build", str(path))
+    assert "ribsDefinition[1]/ribsPositioning: Ribs/rib 1 does not cross its component segment; left out, the set's " \
+        "other ribs are built" in built.stderr, built.stderr
+    assert "rib 2" not in built.stderr and "rib 3" not in built.stderr
+    assert built.returncode == 0 and "Ribs" in built.stdout and "valid faces" in built.stdout.split("Ribs", 1)[1]
+    area, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"}))
+    assert area == pytest.approx(2 * math.sqrt(2) * one, rel=1e-9)
+    # Turned so far that none crosses, the set is one error line.
+    path = with_spars(tmp_path, positions, spars, ribs("Ribs", 0.01, 0.02, 2, rotation=turned, reference="leadingEdge",
+                                                       rib_start="Front"))
+    answer, = ask(path, {"op": "component_surface_area", "uid": "Ribs"})
+    assert answer["error"].endswith("ribsPositioning: none of its 2 ribs crosses its component segment"), answer
+
+
 def test_rib_errors_name_the_cpacs_path(tmp_path):
     positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
     path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -168,9 +169,22 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
   } catch (const Error&) {
     throw Error(ErrorCode::InvalidModel, std::string("the ribs cannot be cut out of ") + frame_.hostName(), {}, where);
   }
+  // A rib of a set that does not cross (a rib at the root turned so that it runs inboard of it)
+  // is left out with a warning; the set's other ribs are built. A set none of whose ribs
+  // crosses is an error.
+  std::vector<std::string> missing;
   for (std::size_t i = 0; i < ribs.size(); ++i)
-    if (ribs[i].empty())
-      throw Error(ErrorCode::InvalidModel, names[i] + " does not cross " + frame_.hostName(), {}, where);
+    if (ribs[i].empty()) missing.push_back(names[i]);
+  if (missing.size() == ribs.size()) {
+    if (ribs.size() == 1)
+      throw Error(ErrorCode::InvalidModel, names[0] + " does not cross " + frame_.hostName(), {}, where);
+    throw Error(ErrorCode::InvalidModel,
+                "none of its " + std::to_string(ribs.size()) + " ribs crosses " + frame_.hostName(), {}, where);
+  }
+  for (const std::string& name : missing)
+    configuration_.warnAboutGeometry(
+        {Problem::Severity::Warning, where,
+         name + " does not cross " + frame_.hostName() + "; left out, the set's other ribs are built"});
   return ribs;
 }
 
