@@ -359,6 +359,28 @@ std::optional<std::string> flawOf(BRepAlgoAPI_Common& common) {
 
 }  // namespace
 
+std::unique_ptr<BRepAlgoAPI_Common> DeviceGeometry::cutOutOf(const TopoDS_Shape& wing,
+                                                             const TopoDS_Shape& cutter) const {
+  // OCCT's exact Boolean may leave faces it cannot place and make no solid, or make a flawed one
+  // (a slat's hollow back lofted against a straight one on the example airliner): tried again
+  // with its fuzzy tolerance, a millionth and then a hundred-thousandth of the device's size,
+  // with a warning; where neither does better, the exact result stands.
+  std::unique_ptr<BRepAlgoAPI_Common> common = commonOf(wing, cutter, 0.0);
+  const std::optional<std::string> flaw = flawOf(*common);
+  if (!flaw) return common;
+  for (const double share : {1e-6, 1e-5}) {
+    const double fuzzy = share * outlines().size;
+    std::unique_ptr<BRepAlgoAPI_Common> retried = commonOf(wing, cutter, fuzzy);
+    if (flawOf(*retried)) continue;
+    std::ostringstream text;
+    text << "cut out of its wing with the Boolean's fuzzy tolerance of " << std::setprecision(2) << fuzzy
+         << " m: without it OCCT's Boolean " << *flaw;
+    configuration_.warnAboutGeometry({Problem::Severity::Warning, device_.xpath + "/outerShape", text.str()});
+    return retried;
+  }
+  return common;
+}
+
 NamedShape DeviceGeometry::atRest() const {
   if (std::optional<NamedShape> direct = fromWingSkins()) return std::move(*direct);
   const NamedShape cut = cutter();
@@ -367,24 +389,7 @@ NamedShape DeviceGeometry::atRest() const {
   NamedShape wingFaces{wing.shape, {}};
   for (const auto& [name, face] : wing.faces)
     wingFaces.faces.emplace_back(device_.uid + "/" + deviceFaceName(name), face);
-  // OCCT's exact Boolean may leave faces it cannot place and make no solid, or make a flawed one
-  // (a slat's hollow back lofted against a straight one on the example airliner): tried again
-  // with its fuzzy tolerance, a millionth and then a hundred-thousandth of the device's size,
-  // with a warning; where neither does better, the exact result stands.
-  std::unique_ptr<BRepAlgoAPI_Common> common = commonOf(wing.shape, cut.shape, 0.0);
-  if (const std::optional<std::string> flaw = flawOf(*common)) {
-    for (const double share : {1e-6, 1e-5}) {
-      const double fuzzy = share * outlines().size;
-      std::unique_ptr<BRepAlgoAPI_Common> retried = commonOf(wing.shape, cut.shape, fuzzy);
-      if (flawOf(*retried)) continue;
-      std::ostringstream text;
-      text << "cut out of its wing with the Boolean's fuzzy tolerance of " << std::setprecision(2) << fuzzy
-           << " m: without it OCCT's Boolean " << *flaw;
-      configuration_.warnAboutGeometry({Problem::Severity::Warning, device_.xpath + "/outerShape", text.str()});
-      common = std::move(retried);
-      break;
-    }
-  }
+  const std::unique_ptr<BRepAlgoAPI_Common> common = cutOutOf(wing.shape, cut.shape);
   if (!common->IsDone() || common->HasErrors())
     throw Error(ErrorCode::InvalidModel, "the device cannot be cut out of its wing", {}, device_.xpath);
   if (!TopExp_Explorer(common->Shape(), TopAbs_SOLID).More())

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <TopoDS_Shape.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Trsf.hxx>
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -73,6 +75,9 @@ class DeviceGeometry {
   void checkBordersApart() const;
   /// The cutter, built.
   NamedShape ruledCutter() const;
+  /// The Boolean common of the wing and the cutter: exact, or, where that fails or is flawed,
+  /// with OCCT's fuzzy tolerance and a warning.
+  std::unique_ptr<BRepAlgoAPI_Common> cutOutOf(const TopoDS_Shape& wing, const TopoDS_Shape& cutter) const;
   /// The device at rest made from the wing's skins without a Boolean operation
   /// (device_from_skins.h), where its borders are straight outlines; nothing elsewhere.
   std::optional<NamedShape> fromWingSkins() const;
