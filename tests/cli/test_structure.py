@@ -360,6 +360,22 @@ def test_a_rib_that_misses_its_component_segment_is_left_out_of_its_set_with_a_w
     assert answer["error"].endswith("ribsPositioning: none of its 2 ribs crosses its component segment"), answer
 
 
+def test_a_rib_before_its_spar_begins_is_left_out_of_its_set_with_a_warning(tmp_path):
+    # The rear spar begins at eta 0.4 (y = 2): of the three chordwise ribs at y = 0.5, 2.5 and
+    # 4.5 between the spars, the first does not meet it; the other two are built.
+    positions = (position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2) + position("PosR0", 0.4, 0.6) +
+                 position("PosR1", 1, 0.6))
+    path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1") + segment("Rear", "PosR0", "PosR1"),
+                      ribs("Ribs", 0.1, 0.9, 3))
+    built = airshape("build", str(path))
+    assert "Ribs/rib 1: a rib does not meet spar 'Rear'; left out, the set's other ribs are built" in built.stderr, \
+        built.stderr
+    assert built.returncode == 0, built.stdout
+    area, = (a["ok"] for a in ask(path, {"op": "component_surface_area", "uid": "Ribs"}))
+    one = 2 * 0.6 * ((0.6 ** 2 / 2 - 0.6 ** 3 / 3) - (0.2 ** 2 / 2 - 0.2 ** 3 / 3))
+    assert area == pytest.approx(2 * one, rel=1e-10)
+
+
 def test_rib_errors_name_the_cpacs_path(tmp_path):
     positions = position("PosF0", 0, 0.2) + position("PosF1", 1, 0.2)
     path = with_spars(tmp_path, positions, segment("Front", "PosF0", "PosF1"),

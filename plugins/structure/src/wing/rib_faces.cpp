@@ -91,14 +91,30 @@ class RibSet {
   }
 
   NamedShape build() const {
-    // All ribs cut at once: one Boolean operation for those the skins do not give directly.
+    // All ribs cut at once: one Boolean operation for those the skins do not give directly. A
+    // rib whose outline cannot be drawn (it does not meet a spar it is bounded by: the spar
+    // ends before it) is left out with a warning, the others built; where no rib's can be
+    // drawn, the first one's error is the set's.
     std::vector<RibOutline> outlines;
     std::vector<std::string> names;
-    for (const RibPlacement& rib : placements()) {
-      names.push_back(ribs_.uid + "/rib " + std::to_string(names.size() + 1));
-      outlines.push_back(cutter_.outline(rib.point, rib.direction, rib.up, positioning_.ribStart, positioning_.ribEnd,
-                                         names.back(), xpath()));
+    std::vector<std::pair<std::string, Error>> undrawn;
+    const std::vector<RibPlacement> placed = placements();
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+      const RibPlacement& rib = placed[i];
+      const std::string name = ribs_.uid + "/rib " + std::to_string(i + 1);
+      try {
+        outlines.push_back(cutter_.outline(rib.point, rib.direction, rib.up, positioning_.ribStart, positioning_.ribEnd,
+                                           name, xpath()));
+        names.push_back(name);
+      } catch (const Error& error) {
+        undrawn.emplace_back(name, error);
+      }
     }
+    if (outlines.empty()) throw undrawn.front().second;
+    for (const auto& [name, error] : undrawn)
+      cutter_.configuration().warnAboutGeometry(
+          {Problem::Severity::Warning, error.cpacsPath().empty() ? xpath() : error.cpacsPath(),
+           name + ": " + error.message() + "; left out, the set's other ribs are built"});
     const std::vector<std::vector<TopoDS_Face>> cut = cutter_.cutAll(outlines, names, xpath());
     NamedFaces ribs;
     for (std::size_t i = 0; i < cut.size(); ++i) ribs.add(names[i], cut[i]);
