@@ -110,7 +110,7 @@ class RibSet {
         undrawn.emplace_back(name, error);
       }
     }
-    if (outlines.empty()) throw undrawn.front().second;
+    if (outlines.empty() && !undrawn.empty()) throw undrawn.front().second;
     for (const auto& [name, error] : undrawn)
       cutter_.configuration().warnAboutGeometry(
           {Problem::Severity::Warning, error.cpacsPath().empty() ? xpath() : error.cpacsPath(),
