@@ -363,6 +363,36 @@ def test_a_slat_without_a_shape_is_the_nose_ahead_of_a_straight_cut(tmp_path, up
     assert box["min"][:2] == pytest.approx([1.0, 1.0], abs=1e-6) and box["max"][:2] == pytest.approx([1.3, 4.0], abs=1e-6)
 
 
+def built_volume(path, uid):
+    """`airshape build` of a file: the device's volume, asserting it is a valid solid, and the
+    command's warnings."""
+    built = airshape("build", str(path))
+    found = re.search(rf"control_surface +{uid} +valid solid, volume ([0-9.e-]+)", built.stdout)
+    assert found, built.stdout
+    return float(found.group(1)), built.stderr
+
+
+def flap_with_outer_border(tmp_path, border, name):
+    """The test wing with its flap's outer border opened as `border` (up to its xsiLE)."""
+    with open(WITH_DEVICES) as original:
+        text = original.read()
+    outer = text.index("<outerBorder>", text.index('<trailingEdgeDevice uID="Flap">'))
+    end = text.index("</outerBorder>", outer)
+    path = tmp_path / f"{name}.xml"
+    path.write_text(text[:outer] + border + text[end:])
+    return path
+
+
+def airliner_with(tmp_path, control_surfaces, name):
+    """The example airliner (without its tanks) with its wing's devices replaced."""
+    with open(os.path.join(SOURCE, "examples", "generic-airliner.xml")) as original:
+        text = re.sub(r"<wingFuelTanks>.*?</wingFuelTanks>", "", original.read(), flags=re.S)
+    path = tmp_path / f"{name}.xml"
+    path.write_text(re.sub(r"<controlSurfaces>.*?</controlSurfaces>", f"<controlSurfaces>{control_surfaces}"
+                           "</controlSurfaces>", text, count=1, flags=re.S))
+    return path
+
+
 ROUNDED_NOSE = ("<leadingEdgeShape><relHeightLE>0.5</relHeightLE><xsiUpperSkin>0.9</xsiUpperSkin>"
                 "<xsiLowerSkin>0.9</xsiLowerSkin></leadingEdgeShape>")
 
@@ -384,9 +414,7 @@ def test_a_flap_with_one_rounded_border_lies_between_the_straight_and_the_rounde
             shape = shape[:at] + ROUNDED_NOSE + shape[at:]
         path = tmp_path / f"{name}.xml"
         path.write_text(text[:start] + shape + text[end:])
-        built = airshape("build", str(path))
-        assert re.search(r"control_surface +Flap +valid solid", built.stdout), built.stdout
-        return float(re.search(r"Flap +valid solid, volume ([0-9.e-]+)", built.stdout).group(1))
+        return built_volume(path, "Flap")[0]
 
     straight = flap_volume([], "straight")
     both = flap_volume(["innerBorder", "outerBorder"], "both")
@@ -399,19 +427,10 @@ def test_a_flap_whose_oblique_border_runs_inboard_is_the_wing_between_its_planes
     # The outer border from (eta 0.5, xsi 0.7) to (eta 0.3, xsi 1): its chord runs inboard. The
     # flap is the wing aft of x = 2.4 between y = 1 and the vertical plane through (2.4, 2.5) and
     # (3, 1.5): its span at x is 1.5 - (x - 2.4) / 0.6, its thickness 0.6 xi (1 - xi).
-    with open(WITH_DEVICES) as original:
-        text = original.read()
-    start = text.index('<trailingEdgeDevice uID="Flap">')
-    outer = text.index("<outerBorder>", start)
-    end = text.index("</outerBorder>", outer)
     oblique = ("<outerBorder><etaLE><eta>0.5</eta><referenceUID>RectCS</referenceUID></etaLE><etaTE><eta>0.3</eta>"
                "<referenceUID>RectCS</referenceUID></etaTE><xsiLE><xsi>0.7</xsi><referenceUID>RectCS</referenceUID>"
                "</xsiLE>")
-    path = tmp_path / "oblique.xml"
-    path.write_text(text[:outer] + oblique + text[end:])
-    built = airshape("build", str(path))
-    assert re.search(r"control_surface +Flap +valid solid", built.stdout), built.stdout
-    volume = float(re.search(r"Flap +valid solid, volume ([0-9.e-]+)", built.stdout).group(1))
+    volume, _ = built_volume(flap_with_outer_border(tmp_path, oblique, "oblique"), "Flap")
 
     def integrand(x):
         xi = (x - 1.0) / 2.0
@@ -476,22 +495,15 @@ def test_a_slat_whose_exact_boolean_cut_failed_is_cut_with_a_fuzzy_tolerance(tmp
     # valid solid, between the slat with two straight backs and the one with two hollow ones,
     # and says so in one warning naming the device and what the exact cut did.
     (inner_eta, inner_xsi, height, middle), (outer_eta, outer_xsi), what = SLATS[case]
-    with open(os.path.join(SOURCE, "examples", "generic-airliner.xml")) as original:
-        text = re.sub(r"<wingFuelTanks>.*?</wingFuelTanks>", "", original.read(), flags=re.S)
     hollow = f"<innerShape><relHeightTE>{height}</relHeightTE><xsiTE>{middle}</xsiTE></innerShape>"
 
     def slat_volume(inner, outer, name):
         borders = (f"<innerBorder><etaLE><eta>{inner_eta}</eta></etaLE><xsiTE><xsi>{inner_xsi}</xsi></xsiTE>{inner}"
                    f"</innerBorder><outerBorder><etaLE><eta>{outer_eta}</eta></etaLE><xsiTE><xsi>{outer_xsi}</xsi>"
                    f"</xsiTE>{outer}</outerBorder>")
-        slat = (f'<controlSurfaces><leadingEdgeDevices><leadingEdgeDevice uID="Slat"><name>s</name>'
-                f'<parentUID>Wing_CS</parentUID><outerShape>{borders}</outerShape>{steps(0, 1)}'
-                f'</leadingEdgeDevice></leadingEdgeDevices></controlSurfaces>')
-        path = tmp_path / f"{name}.xml"
-        path.write_text(re.sub(r"<controlSurfaces>.*?</controlSurfaces>", slat, text, count=1, flags=re.S))
-        built = airshape("build", str(path))
-        assert re.search(r"control_surface +Slat +valid solid", built.stdout), built.stdout
-        return float(re.search(r"Slat +valid solid, volume ([0-9.e-]+)", built.stdout).group(1)), built.stderr
+        slat = (f'<leadingEdgeDevices><leadingEdgeDevice uID="Slat"><name>s</name><parentUID>Wing_CS</parentUID>'
+                f'<outerShape>{borders}</outerShape>{steps(0, 1)}</leadingEdgeDevice></leadingEdgeDevices>')
+        return built_volume(airliner_with(tmp_path, slat, name), "Slat")
 
     straight, _ = slat_volume("", "", "straight")
     both, _ = slat_volume(hollow, hollow, "both")
@@ -540,30 +552,18 @@ def test_a_spoiler_from_a_dihedral_wings_root_to_its_trailing_edge_is_a_valid_so
     # The example airliner's wing has dihedral: the spoiler's inner border plane (at eta 0) leans
     # out through the root's cap above the chord, where its line meets the wing on the chord
     # line; the wire was closed at no height above it and no solid joined the borders.
-    with open(os.path.join(SOURCE, "examples", "generic-airliner.xml")) as original:
-        text = re.sub(r"<wingFuelTanks>.*?</wingFuelTanks>", "", original.read(), flags=re.S)
     borders = "".join(f"<{tag}><etaLE><eta>{eta}</eta></etaLE><xsiLE><xsi>0.8</xsi></xsiLE><xsiTE><xsi>1.0</xsi></xsiTE>"
                       f"</{tag}>" for tag, eta in (("innerBorder", 0.0), ("outerBorder", 0.2)))
-    spoiler = (f'<controlSurfaces><spoilers><spoiler uID="Spoiler"><name>s</name><parentUID>Wing_CS</parentUID>'
-               f'<outerShape>{borders}</outerShape>{steps(0, 1)}</spoiler></spoilers></controlSurfaces>')
-    path = tmp_path / "root-spoiler.xml"
-    path.write_text(re.sub(r"<controlSurfaces>.*?</controlSurfaces>", spoiler, text, count=1, flags=re.S))
-    built = airshape("build", str(path))
-    assert re.search(r"control_surface +Spoiler +valid solid", built.stdout), built.stdout
+    spoiler = (f'<spoilers><spoiler uID="Spoiler"><name>s</name><parentUID>Wing_CS</parentUID>'
+               f'<outerShape>{borders}</outerShape>{steps(0, 1)}</spoiler></spoilers>')
+    built_volume(airliner_with(tmp_path, spoiler, "root-spoiler"), "Spoiler")
 
 
 def test_borders_that_cross_inside_the_wing_are_one_line(tmp_path):
     # The flap's outer border from (eta 0.5, xsi 0.7) to (eta 0.1, xsi 1) crosses its inner border
     # (eta 0.2 from xsi 0.7 to 1) at eta 0.2, xsi 0.925.
-    with open(WITH_DEVICES) as original:
-        text = original.read()
-    start = text.index('<trailingEdgeDevice uID="Flap">')
-    outer = text.index("<outerBorder>", start)
-    end = text.index("</outerBorder>", outer)
     crossing = ("<outerBorder><etaLE><eta>0.5</eta></etaLE><etaTE><eta>0.1</eta></etaTE><xsiLE><xsi>0.7</xsi></xsiLE>")
-    path = tmp_path / "crossing.xml"
-    path.write_text(text[:outer] + crossing + text[end:])
-    built = airshape("build", str(path))
+    built = airshape("build", str(flap_with_outer_border(tmp_path, crossing, "crossing")))
     assert built.returncode == 1
     assert re.search(r"Flap +FAILED: \S+trailingEdgeDevice\[1\]/outerShape: the inner and the outer border cross inside "
                      r"the wing \(at component segment eta 0.2, xsi 0.925\)", built.stdout), built.stdout
