@@ -181,11 +181,13 @@ std::vector<std::vector<TopoDS_Face>> RibCutter::cutAll(const std::vector<RibOut
     throw Error(ErrorCode::InvalidModel,
                 "none of its " + std::to_string(ribs.size()) + " ribs crosses " + frame_.hostName(), {}, where);
   }
-  for (const std::string& name : missing)
-    configuration_.warnAboutGeometry(
-        {Problem::Severity::Warning, where,
-         name + " does not cross " + frame_.hostName() + "; left out, the set's other ribs are built"});
+  for (const std::string& name : missing) warnLeftOut(where, name + " does not cross " + frame_.hostName());
   return ribs;
+}
+
+void RibCutter::warnLeftOut(const std::string& where, const std::string& why) const {
+  configuration_.warnAboutGeometry(
+      {Problem::Severity::Warning, where, why + "; left out, the set's other ribs are built"});
 }
 
 std::optional<TopoDS_Face> RibCutter::sectionOf(const RibOutline& outline, const TopoDS_Shape& upper,

@@ -73,6 +73,10 @@ class RibCutter {
   std::vector<std::vector<TopoDS_Face>> cutAll(const std::vector<RibOutline>& outlines,
                                                const std::vector<std::string>& names, const std::string& where) const;
 
+  /// Warns at `where` that a rib of a set is left out (`why`: which rib and why), the set's
+  /// other ribs built.
+  void warnLeftOut(const std::string& where, const std::string& why) const;
+
   const StructureFrame& frame() const { return frame_; }
   const Configuration& configuration() const { return configuration_; }
 

@@ -112,9 +112,7 @@ class RibSet {
     }
     if (outlines.empty() && !undrawn.empty()) throw undrawn.front().second;
     for (const auto& [name, error] : undrawn)
-      cutter_.configuration().warnAboutGeometry(
-          {Problem::Severity::Warning, error.cpacsPath().empty() ? xpath() : error.cpacsPath(),
-           name + ": " + error.message() + "; left out, the set's other ribs are built"});
+      cutter_.warnLeftOut(error.cpacsPath().empty() ? xpath() : error.cpacsPath(), name + ": " + error.message());
     const std::vector<std::vector<TopoDS_Face>> cut = cutter_.cutAll(outlines, names, xpath());
     NamedFaces ribs;
     for (std::size_t i = 0; i < cut.size(); ++i) ribs.add(names[i], cut[i]);
