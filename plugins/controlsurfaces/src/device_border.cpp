@@ -61,22 +61,24 @@ gp_Pnt2d inPlane(const BorderPlane& plane, const gp_Pnt& p) {
 
 gp_Vec2d inPlane(const BorderPlane& plane, const gp_Vec& v) { return {v.Dot(plane.x), v.Dot(plane.y)}; }
 
+/// The crossings of the line normal to the chord at `share` of it (counted from the
+/// trailing-edge point) with the wing. A border in the wing's root or tip lies in its cap: the
+/// line there runs within that face, which it does not cross.
+std::vector<LineCrossing> crossingsAcross(const BorderPlane& plane, LineCrossings& wing, double share) {
+  std::vector<LineCrossing> hits =
+      wing.of(gp_Lin(plane.at((1.0 - share) * plane.chord, 0.0), gp_Dir(plane.y)), 1e-9 * plane.chord);
+  hits.erase(
+      std::remove_if(hits.begin(), hits.end(),
+                     [&](const LineCrossing& hit) { return std::abs(hit.normal.Normalized().Dot(plane.y)) < 1e-9; }),
+      hits.end());
+  return hits;
+}
+
 /// The lower and the upper skin crossing of the line normal to the chord at `xsi`, a share
 /// of the chord counted from the trailing-edge point (1 is the leading-edge point).
 std::pair<SkinCrossing, SkinCrossing> skinCrossings(const BorderDefinition& border, const BorderPlane& plane,
                                                     LineCrossings& wing, double xsi) {
-  // A border in the wing's root or tip lies in its cap: the line there runs within that face,
-  // which it does not cross.
-  const auto hitsAt = [&](double share) {
-    std::vector<LineCrossing> hits =
-        wing.of(gp_Lin(plane.at((1.0 - share) * plane.chord, 0.0), gp_Dir(plane.y)), 1e-9 * plane.chord);
-    hits.erase(
-        std::remove_if(hits.begin(), hits.end(),
-                       [&](const LineCrossing& hit) { return std::abs(hit.normal.Normalized().Dot(plane.y)) < 1e-9; }),
-        hits.end());
-    return hits;
-  };
-  std::vector<LineCrossing> hits = hitsAt(xsi);
+  std::vector<LineCrossing> hits = crossingsAcross(plane, wing, xsi);
   // At an end of the chord on the wing's own edge (a spoiler reaching the trailing edge, a
   // panel from the leading edge) the line touches the wing in one point or runs along a blunt
   // trailing edge: the crossings a millionth of the chord inside stand for the edge (up to a
@@ -85,7 +87,7 @@ std::pair<SkinCrossing, SkinCrossing> skinCrossings(const BorderDefinition& bord
   // nose: the end itself, on the wing's edge, is both crossings, where the skins meet.
   const bool atChordEnd = xsi <= 0.0 || xsi >= 1.0;
   for (const double inside : {1e-6, 1e-5, 1e-4})
-    if (hits.size() < 2 && atChordEnd) hits = hitsAt(xsi <= 0.0 ? inside : 1.0 - inside);
+    if (hits.size() < 2 && atChordEnd) hits = crossingsAcross(plane, wing, xsi <= 0.0 ? inside : 1.0 - inside);
   if (hits.size() < 2 && atChordEnd) {
     const gp_Pnt end = plane.at((1.0 - xsi) * plane.chord, 0.0);
     const double near = 1e-7 * plane.chord;
