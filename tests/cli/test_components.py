@@ -119,6 +119,4 @@ def test_errors_name_what_is_wrong():
 
 def test_component_conformance_does_not_regress():
     passed, output = conformance_passed("cases-components.json")
-    # 1 of 1471 does not pass: a guided fuselage's section (docs/conformance.md). This floor
-    # guards what works.
-    assert passed >= 1470, output[-3000:]
+    assert passed >= 1471 and output.strip().endswith(" 0 failed"), output[-3000:]  # every case
