@@ -43,6 +43,18 @@ TEST(ChebyshevApproximation, ASmoothCurveIsSplitUntilItIsCloseEnough) {
   }
 }
 
+TEST(ChebyshevApproximation, EachCoordinateIsJudgedOnItsOwn) {
+  // T_5 in y and z with coefficient a: each coordinate's tail is a, their vector's a·√2.
+  const double tolerance = 1e-6, a = 0.8 * tolerance;
+  const auto t5 = [a](double t) { return a * (16 * std::pow(t, 5) - 20 * std::pow(t, 3) + 5 * t); };
+  const auto curve =
+      approximateByChebyshevPieces([&](double t) { return gp_Pnt(t, t5(t), t5(t)); }, -1.0, 1.0, {3, tolerance, 10});
+  EXPECT_EQ(curve->NbKnots(), 2);  // one piece: 0.8 of the tolerance in y and in z
+  const auto wider = approximateByChebyshevPieces([&](double t) { return gp_Pnt(t, 1.3 * t5(t), 0.0); }, -1.0, 1.0,
+                                                  {3, tolerance, 10});
+  EXPECT_GT(wider->NbKnots(), 2);  // 1.04 of it in y alone
+}
+
 TEST(ChebyshevApproximation, TheDepthLimitStopsSplitting) {
   const auto kinked = [](double t) { return gp_Pnt(t, std::abs(t - 0.3), 0.0); };
   const auto curve = approximateByChebyshevPieces(kinked, 0.0, 1.0, {3, 1e-12, 4});

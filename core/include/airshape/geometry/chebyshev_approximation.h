@@ -10,8 +10,9 @@ namespace airshape::geometry {
 /// How closely, and how finely at most, a function is turned into a curve.
 struct ChebyshevSettings {
   int degree = 3;
-  /// Largest accepted estimate of the error on a piece (the norm of the sums of the
-  /// Chebyshev coefficients beyond `degree`, four more of them computed for the estimate).
+  /// Largest accepted estimate of the error on a piece (per coordinate, the sum of the
+  /// Chebyshev coefficients beyond `degree`, four more of them computed for the estimate;
+  /// the largest of the three).
   double tolerance = 1e-5;
   /// The whole range is depth 1; a piece at this depth is accepted whatever its error.
   int maxDepth = 10;
