@@ -104,6 +104,28 @@ def test_standard_profiles_in_closed_form(tmp_path):
     assert abs(abs(corner_free[1]) + abs(corner_free[2]) - 0.5) < 1e-6, corner_free
 
 
+def test_a_superellipse_follows_its_sharp_tip(tmp_path):
+    """A superellipse whose upper exponent m is 0.5 has a sharp tip at the top, where the
+    curve's parameter runs like the square root of the distance: near it the approximation
+    stays within 1e-5 of the width of the exact curve |2y|^0.5 + (2z)^2 = 1 (it was 1e-4)."""
+    shape = ("<standardProfile><superEllipse><lowerHeightFraction>0.5</lowerHeightFraction><mUpper>0.5</mUpper>"
+             "<nUpper>2</nUpper><mLower>2</mLower><nLower>2</nLower></superEllipse></standardProfile>")
+    path = tmp_path / "star.xml"
+    path.write_text(HEADER + fuselage("S", "Star", 4.0) + "</fuselages></model></aircraft><profiles><fuselageProfiles>"
+                    f'<fuselageProfile uID="Star"><name>p</name>{shape}</fuselageProfile>'
+                    "</fuselageProfiles></profiles></vehicles></cpacs>")
+    zetas = [2e-3 * (i / 100) ** 2 for i in range(101)]
+    points = ask(path, *({"op": "fuselage_point", "fuselage": "S", "segment": 1, "eta": 0.5, "zeta": z} for z in zetas))
+
+    def exact(t):  # the curve at angle parameter t near the top
+        return 0.5 * math.sin(t), 0.5 * (1 - abs(math.sin(t)) ** 0.5) ** 0.5
+
+    curve = [exact(0.03 * (i / 30000) ** 2) for i in range(30001)]
+    for zeta, point in zip(zetas, points):
+        distance = min(math.hypot(point[1] - y, point[2] - z) for y, z in curve)
+        assert distance < 1e-5, (zeta, point, distance)
+
+
 def test_rounded_corners_follow_their_circles(tmp_path):
     """Points around the rectangle's upper right corner (radius 0.1, centre (0.4, 0.2)) lie
     on its circle within 2.7e-4 of the radius, never inside it, and their angle grows with
