@@ -11,12 +11,10 @@
 
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAdaptor_Curve.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array1OfPnt.hxx>
 
 #include "airshape/error.h"
 #include "airshape/geometry/brep_building.h"
+#include "airshape/geometry/bspline_basis.h"
 #include "airshape/geometry/bspline_curve.h"
 #include "airshape/geometry/chebyshev_approximation.h"
 #include "airshape/geometry/curve_concatenation.h"
@@ -346,18 +344,6 @@ std::string numberText(double value) {
   return text.str();
 }
 
-/// One cubic span from p0 to p3 with inner poles p1 and p2, over [first, last].
-Handle(Geom_BSplineCurve)
-    cubicSpan(const gp_Pnt& p0, const gp_Pnt& p1, const gp_Pnt& p2, const gp_Pnt& p3, double first, double last) {
-  TColgp_Array1OfPnt poles(1, 4);
-  poles(1) = p0, poles(2) = p1, poles(3) = p2, poles(4) = p3;
-  TColStd_Array1OfReal knots(1, 2);
-  knots(1) = first, knots(2) = last;
-  TColStd_Array1OfInteger multiplicities(1, 2);
-  multiplicities(1) = multiplicities(2) = 4;
-  return new Geom_BSplineCurve(poles, knots, multiplicities, 3);
-}
-
 /// The rectangle of width 1 and height heightToWidthRatio with rounded corners, from the
 /// top centre towards +y; zeta is the share of the length travelled.
 ///
@@ -393,24 +379,27 @@ FuselageProfile rectangle(const schema::RectangleProfileType& shape) {
                                          {{0, 0.5, -h + c}, down}, {{0, 0.5 - c, -h}, left}, {{0, -0.5 + c, -h}, left},
                                          {{0, -0.5, -h + c}, up},  {{0, -0.5, h - c}, up},   {{0, -0.5 + c, h}, right},
                                          {{0, 0, h}, right}};
-  double total = 0.0;
+  // Each piece between two stations as its four poles: a straight piece's evenly spaced, an
+  // arc's inner ones kappa·c along the tangents. Pieces of no length (c = 0, c = h) are left out.
+  std::vector<std::vector<gp_Pnt>> spans;
   std::vector<double> lengths;
+  double total = 0.0;
   for (std::size_t i = 0; i + 1 < stations.size(); ++i) {
+    const gp_Pnt &a = stations[i].point, &b = stations[i + 1].point;
     const bool arc = stations[i].along.Dot(stations[i + 1].along) < 0.5;
-    lengths.push_back(arc ? arcLength : stations[i].point.Distance(stations[i + 1].point));
-    total += lengths.back();
+    const double length = arc ? arcLength : a.Distance(b);
+    if (length <= 1e-12) continue;
+    const gp_Vec inA = arc ? stations[i].along * (kappa * c) : gp_Vec(a, b) / 3.0;
+    const gp_Vec inB = arc ? stations[i + 1].along * (kappa * c) : gp_Vec(a, b) / 3.0;
+    spans.push_back({a, a.Translated(inA), b.Translated(-inB), b});
+    lengths.push_back(length);
+    total += length;
   }
   std::vector<Handle(Geom_BSplineCurve)> pieces;
   double start = 0.0;
-  for (std::size_t i = 0; i + 1 < stations.size(); ++i) {
-    const double end = start + lengths[i] / total;
-    if (lengths[i] > 1e-12) {
-      const gp_Pnt &a = stations[i].point, &b = stations[i + 1].point;
-      const bool arc = stations[i].along.Dot(stations[i + 1].along) < 0.5;
-      const gp_Vec inA = arc ? stations[i].along * (kappa * c) : gp_Vec(a, b) / 3.0;
-      const gp_Vec inB = arc ? stations[i + 1].along * (kappa * c) : gp_Vec(a, b) / 3.0;
-      pieces.push_back(cubicSpan(a, a.Translated(inA), b.Translated(-inB), b, start, end));
-    }
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const double end = i + 1 == spans.size() ? 1.0 : start + lengths[i] / total;
+    pieces.push_back(geometry::makeCurve(geometry::uniformKnots(start, end, 4, 3), geometry::toMatrix(spans[i])));
     start = end;
   }
   FuselageProfile profile;
